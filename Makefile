@@ -1,0 +1,50 @@
+# Top-level entry points. `make demo` and `make test` work on a fresh Debian 12
+# machine with only git and make: they install what is missing first.
+BUILD_DIR ?= build
+JOBS ?= 2
+DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
+                nlohmann-json3-dev googletest libgtest-dev libgmock-dev
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps build demo test check-format format clean
+
+all: build
+
+deps:
+	@missing=""; \
+	for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' \
+	    || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
+	fi
+
+$(BUILD_DIR)/CMakeCache.txt:
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD_DIR)/CMakeCache.txt
+	cmake --build $(BUILD_DIR) -j$(JOBS)
+
+demo: build
+	@echo "== mbc run examples/bolt_circle.nc (toolpath, DPRNT, variables) =="
+	$(BUILD_DIR)/mbc run examples/bolt_circle.nc --toolpath $(BUILD_DIR)/demo.toolpath.jsonl \
+	  --vars-out $(BUILD_DIR)/demo.vars.json
+	@echo "== toolpath ($(BUILD_DIR)/demo.toolpath.jsonl) =="
+	@cat $(BUILD_DIR)/demo.toolpath.jsonl
+	@echo "== variables ($(BUILD_DIR)/demo.vars.json) =="
+	@cat $(BUILD_DIR)/demo.vars.json; echo
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+check-format:
+	clang-format --dry-run -Werror $$(git ls-files '*.cpp' '*.h')
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+clean:
+	rm -rf $(BUILD_DIR)
