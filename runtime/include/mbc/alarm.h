@@ -1,0 +1,28 @@
+// Alarm identifiers generated from alarms.def, and their printed form
+// ("PS0112", "3001", "MBC0001").
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace mbc {
+
+enum class AlarmId : std::uint16_t {
+  None,
+#define ALARM(Id, Prefix, Number, Message) Id,
+#include <mbc/alarms.def>
+};
+
+struct AlarmInfo {
+  const char* prefix;
+  int number;
+  const char* message;
+};
+
+/// The table row of an alarm id (AlarmId::None has an empty row).
+const AlarmInfo& alarmInfo(AlarmId id);
+
+/// "PS0112" for program alarms, "3000+n" for macro alarms, "MBC0001" for ours.
+std::string alarmCode(AlarmId id, int macroNumber);
+
+} // namespace mbc

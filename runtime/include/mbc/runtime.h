@@ -1,0 +1,240 @@
+/* The C ABI of the mbc runtime: one library that every engine calls (the
+ * reference interpreter, the IR evaluator, JIT and AOT code). It owns the
+ * machine: variables and system variables, call frames, modal state, the
+ * motion sink, DPRNT/BPRNT output and alarms. No globals: every call takes the
+ * context, so contexts are independent.
+ *
+ * Every fallible call returns an mbrt_status: 0 to go on, otherwise the alarm
+ * that stops the run. The context keeps the alarm, its message and the block
+ * (file:line) it happened in; mbrt_alarm_report formats it.
+ */
+#ifndef MBC_RUNTIME_H
+#define MBC_RUNTIME_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct mbrt_ctx mbrt_ctx;
+
+/* A variable's value: an IEEE double, or vacant (a reserved NaN, see
+ * mbc/value.h). */
+typedef double mbrt_num;
+
+/* 0 = success; otherwise an alarm id (mbc/alarms.def order, 1-based). */
+typedef int mbrt_status;
+
+#define MBRT_MAX_AXES 8
+
+/* ---- Context -------------------------------------------------------------
+ */
+
+/* A context for the machine described by a profile (JSON text, see
+ * docs/machine-profile.md); NULL selects the built-in 3-axis metric vertical
+ * mill. On a bad profile returns NULL and writes the reason to err. */
+mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size);
+mbrt_ctx* mbrt_create_from_file(const char* path, char* err, size_t err_size);
+void mbrt_destroy(mbrt_ctx* ctx);
+
+/* ---- Sinks ---------------------------------------------------------------
+ */
+
+enum mbrt_motion_kind {
+  MBRT_MOTION_RAPID = 0,
+  MBRT_MOTION_LINEAR = 1,
+  MBRT_MOTION_CW = 2,
+  MBRT_MOTION_CCW = 3
+};
+
+/* One executed motion. Coordinates are in the active workpiece coordinate
+ * system, in input units (mm or inch), already rounded to the least input
+ * increment. */
+typedef struct mbrt_motion {
+  int kind;                  /* mbrt_motion_kind */
+  int axis_count;            /* machine axes, in profile order */
+  const char* axis_names;    /* one letter per axis, e.g. "XYZ" */
+  double end[MBRT_MAX_AXES]; /* end point of every axis */
+  double feed;               /* F (not for rapids) */
+  int plane;                 /* 17, 18 or 19: the arc plane */
+  char center_axes[2];       /* the two plane axes, e.g. 'X','Y' */
+  double center[2];          /* absolute arc centre (arcs only) */
+  int decimals;              /* digits of the least input increment (3, 4) */
+  const char* file;          /* source of the block */
+  int line;
+  const char* program; /* "O1000", "<NAME>" or "MAIN" */
+} mbrt_motion;
+
+typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);
+typedef void (*mbrt_text_fn)(void* user, const char* data, size_t size);
+
+void mbrt_set_motion_sink(mbrt_ctx* ctx, mbrt_motion_fn fn, void* user);
+/* DPRNT/BPRNT bytes. */
+void mbrt_set_print_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* Operator messages (#3006, M00/M01 notes), one line each with '\n'. */
+void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* --trace lines ("file:line: text\n"); fn NULL switches tracing off. */
+void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* Blocks a run may execute before alarm MBC0002 (0 = the default limit). */
+void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
+
+/* ---- Profile settings engines need --------------------------------------
+ */
+
+/* A parameter of the machine profile (3401, 3410, 6001 or 6004; 0 for any
+ * other number). Engines read 6004 bit 0 (NAT) for ASIN/ATAN. */
+double mbrt_parameter(const mbrt_ctx* ctx, int number);
+/* 1 when the optional block skip switch is on: blocks starting with '/' are
+ * skipped by the engine. */
+int mbrt_block_skip(const mbrt_ctx* ctx);
+
+/* ---- Execution bookkeeping ----------------------------------------------
+ */
+
+/* Starts a run of the named main program at call level 0. */
+void mbrt_start(mbrt_ctx* ctx, const char* main_program);
+/* Called by an engine at the start of every executed block: counts it,
+ * enforces the execution limit and remembers the location for alarms. The
+ * runtime keeps the file pointer (it is passed on in mbrt_motion), so it must
+ * stay valid until the run ends. */
+mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line);
+int mbrt_tracing(const mbrt_ctx* ctx);
+/* Writes "file:line: text" for the current block to the trace sink. */
+void mbrt_trace(mbrt_ctx* ctx, const char* text);
+
+enum mbrt_end_kind {
+  MBRT_END_PROGRAM = 0, /* end of the main program's text or '%' */
+  MBRT_END_M02_M30 = 1, /* counts a part (#3901) */
+  MBRT_END_MAIN_M99 = 2 /* M99 in the main program (a control would loop) */
+};
+
+/* Normal end of the run: records how it ended and flushes the sinks. */
+void mbrt_finish(mbrt_ctx* ctx, int end_kind);
+
+/* ---- Variables -----------------------------------------------------------
+ */
+
+/* #[number]: the number is rounded half away from zero, then range-checked
+ * (PS0115). Reads give vacant for unset variables. */
+mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out);
+/* #[number] = value. comment is the block's (MESSAGE) text for #3000/#3006
+ * (may be NULL). Read-only variables give PS0116. */
+mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
+                           const char* comment);
+/* ADP[#number]: a local set from a macro argument written without decimal
+ * point gets its decimal point back (X10 -> 0.010 -> 10.0). */
+mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
+/* The current frame's #1..#33 (index 0 = #1). A write through the pointer
+ * keeps the local's ADP flag; mbrt_write_var clears it. */
+mbrt_num* mbrt_locals(mbrt_ctx* ctx);
+/* A common variable (#100..#999) without side effects: 1 and *out when the
+ * number is a common variable of this machine, else 0. */
+int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out);
+
+/* ---- Words, NC blocks and calls ------------------------------------------
+ */
+
+enum mbrt_word_kind {
+  MBRT_WORD_INT_LITERAL = 0, /* "X10": least-increment units on axes */
+  MBRT_WORD_DEC_LITERAL = 1, /* "X10." */
+  MBRT_WORD_VALUE = 2        /* a variable or [expression]: a real value */
+};
+
+/* One evaluated address word. A word whose value was a bare vacant variable
+ * is not passed at all (spec §2.3a). */
+typedef struct mbrt_word {
+  char letter;
+  unsigned char kind; /* mbrt_word_kind */
+  double value;
+} mbrt_word;
+
+/* The least input increment of an address (0.001 for metric axes, 1 for
+ * integer addresses): ROUND written directly in an address rounds to it. */
+double mbrt_address_increment(const mbrt_ctx* ctx, char letter);
+
+enum mbrt_flow_kind {
+  MBRT_FLOW_NEXT = 0,     /* go on with the next block */
+  MBRT_FLOW_CALL_SUB = 1, /* M98 P program L repeat */
+  MBRT_FLOW_RETURN = 2,   /* M99 [P seq] */
+  MBRT_FLOW_END = 3       /* M02 / M30 */
+};
+
+typedef struct mbrt_flow {
+  int kind;        /* mbrt_flow_kind */
+  int program;     /* M98: program number */
+  long repeat;     /* M98: repeat count (L, or the legacy high digits of P) */
+  int has_seq;     /* M99 P given */
+  double seq;      /* M99 P: sequence number to resume at in the caller */
+  int counts_part; /* M02/M30 */
+} mbrt_flow;
+
+/* Executes an NC block (modal G codes, motion, F S T M H D words) and tells
+ * the engine what control transfer it asks for. */
+mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
+                          mbrt_flow* flow);
+
+/* G65/G66 call: a new local level whose #1..#33 are set from the argument
+ * words (specification I and II, spec §5.2-5.4). P and L are not passed.
+ * Checks macro and total nesting (PS0122, PS0077). */
+mbrt_status mbrt_call_macro(mbrt_ctx* ctx, const char* program,
+                            const mbrt_word* args, size_t count);
+/* `mbc run --arg`: sets the main program's #1..#33 from argument words with
+ * the G65 mapping, without a new call level. Call after mbrt_start. */
+mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
+                               size_t count);
+/* M98 call: same local level. Checks nesting (PS0077). */
+mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program);
+/* M99: leaves the innermost call, restoring the caller's locals for G65. */
+void mbrt_return(mbrt_ctx* ctx);
+/* 0 in the main program. */
+int mbrt_call_depth(const mbrt_ctx* ctx);
+
+/* ---- Output statements ---------------------------------------------------
+ */
+
+/* One DPRNT/BPRNT item: text (with '*' already kept as written; the runtime
+ * prints it as a space) or a value with its [c d] format. */
+typedef struct mbrt_print_item {
+  const char* text; /* non-NULL: literal text */
+  mbrt_num value;
+  int int_digits;  /* c (DPRNT only) */
+  int frac_digits; /* d */
+} mbrt_print_item;
+
+mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
+                       size_t count);
+mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
+                       size_t count);
+mbrt_status mbrt_popen(mbrt_ctx* ctx);
+mbrt_status mbrt_pclos(mbrt_ctx* ctx);
+
+/* ---- Alarms and results --------------------------------------------------
+ */
+
+/* Raises an alarm found by the engine (division by zero, GOTO target...).
+ * detail (may be NULL) is appended to the message. Returns the id. The first
+ * alarm of a run is the one kept and reported. */
+mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail);
+/* The pending alarm id, or 0. */
+int mbrt_alarm(const mbrt_ctx* ctx);
+/* "file:line: alarm PS0112: ZERO DIVIDE" plus one "  in O9100 called from
+ * file:line" line per call level, innermost first, each line ending in '\n'
+ * (empty when no alarm is pending); returns the length (snprintf-style). */
+size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size);
+
+typedef struct mbrt_stats {
+  uint64_t blocks;
+  uint64_t moves;
+  uint64_t optional_stops; /* M00/M01 met (the run went on) */
+  int main_m99;            /* the run ended by M99 in the main program */
+} mbrt_stats;
+
+void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MBC_RUNTIME_H */

@@ -1,0 +1,13 @@
+// How a variable number may be used on the default machine: the frontend's
+// compile-time write checks use it; the runtime applies the same classes
+// (with the machine profile's sizes) at run time.
+#pragma once
+
+namespace mbc {
+
+enum class VarAccess { Missing, ReadOnly, WriteOnly, ReadWrite };
+
+/// The access class of #n on the built-in default machine (spec §2, §6).
+VarAccess variableAccess(int n);
+
+} // namespace mbc

@@ -1,0 +1,176 @@
+// Calls: G65 macro calls with their argument mapping (specification I and
+// II, spec §5.2-5.4), M98 subprogram calls, returns and the nesting limits
+// (PS0122, PS0077).
+#include <fmt/format.h>
+
+#include "context.h"
+
+namespace mbc::rt {
+
+namespace {
+
+/// Specification I: the local each letter sets, 0 for letters that cannot
+/// be arguments.
+constexpr std::array<int, 26> kArgumentLocal = {
+    1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13, // A..M
+    0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, // N..Z
+};
+constexpr int kMaxIjkSets = 10;
+
+/// Tracks the I/J/K sets of specification II: a letter that does not follow
+/// I -> J -> K order within the current set starts the next one.
+struct IjkSets {
+  int set = 0;
+  int last = -1;
+
+  /// The local for I (0), J (1) or K (2); 0 beyond ten sets.
+  int next(int member) {
+    if (set == 0 || member <= last) {
+      ++set;
+    }
+    last = member;
+    return set > kMaxIjkSets ? 0 : 4 + 3 * (set - 1) + member;
+  }
+};
+
+bool scalesLiteral(const mbrt_ctx& ctx, char letter) {
+  return ctx.axisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
+         letter == 'K' || letter == 'R' || letter == 'Q';
+}
+
+/// Which local an argument sets, or the alarm for a letter that is no
+/// argument.
+mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, IjkSets& sets,
+                          int* local) {
+  if (letter == 'G') {
+    return raise(ctx, AlarmId::GAsArgument);
+  }
+  if (letter == 'I' || letter == 'J' || letter == 'K') {
+    *local = sets.next(letter - 'I');
+    if (*local == 0) {
+      return raise(
+          ctx, AlarmId::MacroStatementFormat,
+          fmt::format("more than {} I, J, K argument sets", kMaxIjkSets));
+    }
+    return 0;
+  }
+  *local = letter >= 'A' && letter <= 'Z' ? kArgumentLocal[letter - 'A'] : 0;
+  if (*local == 0) {
+    return raise(ctx, AlarmId::MacroStatementFormat,
+                 fmt::format("{} cannot be a macro argument", letter));
+  }
+  return 0;
+}
+
+/// Fills a fresh level from the argument words; later words win.
+mbrt_status mapArguments(mbrt_ctx& ctx, const mbrt_word* args, size_t count,
+                         LocalLevel& level) {
+  IjkSets sets;
+  for (size_t i = 0; i < count; ++i) {
+    const mbrt_word& word = args[i];
+    int local = 0;
+    if (const mbrt_status status =
+            argumentLocal(ctx, word.letter, sets, &local)) {
+      return status;
+    }
+    const std::uint64_t bit = std::uint64_t{1} << (local - 1);
+    // X10 passes 0.010 mm (spec §5.4); ADP gives the 10 back.
+    if (word.kind == MBRT_WORD_INT_LITERAL && scalesLiteral(ctx, word.letter) &&
+        !ctx.profile.decimalPointInput()) {
+      level.values[local - 1] = word.value / ctx.scale();
+      level.adpMask |= bit;
+    } else {
+      level.values[local - 1] = word.value;
+      level.adpMask &= ~bit;
+    }
+  }
+  return 0;
+}
+
+/// PS0077 when one more call would exceed the total nesting limit.
+mbrt_status checkTotalNesting(mbrt_ctx& ctx) {
+  if (static_cast<int>(ctx.calls.size()) + 1 > ctx.profile.totalNesting) {
+    return raise(
+        ctx, AlarmId::TooManySubMacroNesting,
+        fmt::format("more than {} nested calls", ctx.profile.totalNesting));
+  }
+  return 0;
+}
+
+void pushCall(mbrt_ctx& ctx, const char* program, bool macro) {
+  CallRecord& call = ctx.calls.emplace_back();
+  call.program = program != nullptr ? program : "";
+  call.programNumber = parseProgramNumber(program);
+  call.macro = macro;
+  call.file = ctx.file;
+  call.line = ctx.line;
+}
+
+} // namespace
+
+} // namespace mbc::rt
+
+using namespace mbc;
+using namespace mbc::rt;
+
+mbrt_status mbrt_call_macro(mbrt_ctx* ctx, const char* program,
+                            const mbrt_word* args, size_t count) {
+  if (ctx->macroDepth + 1 > ctx->profile.macroNesting) {
+    return raise(*ctx, AlarmId::TooManyMacroNesting,
+                 fmt::format("more than {} nested macro calls",
+                             ctx->profile.macroNesting));
+  }
+  if (const mbrt_status status = checkTotalNesting(*ctx)) {
+    return status;
+  }
+  ctx->levels.emplace_back();
+  if (const mbrt_status status =
+          mapArguments(*ctx, args, count, ctx->levels.back())) {
+    ctx->levels.pop_back();
+    return status;
+  }
+  ++ctx->macroDepth;
+  pushCall(*ctx, program, true);
+  return 0;
+}
+
+mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program) {
+  if (ctx->subDepth + 1 > ctx->profile.subprogramNesting) {
+    return raise(*ctx, AlarmId::TooManySubMacroNesting,
+                 fmt::format("more than {} nested subprogram calls",
+                             ctx->profile.subprogramNesting));
+  }
+  if (const mbrt_status status = checkTotalNesting(*ctx)) {
+    return status;
+  }
+  ++ctx->subDepth;
+  pushCall(*ctx, program, false);
+  return 0;
+}
+
+void mbrt_return(mbrt_ctx* ctx) {
+  if (ctx->calls.empty()) {
+    return;
+  }
+  if (ctx->calls.back().macro) {
+    ctx->levels.pop_back();
+    --ctx->macroDepth;
+  } else {
+    --ctx->subDepth;
+  }
+  ctx->calls.pop_back();
+}
+
+int mbrt_call_depth(const mbrt_ctx* ctx) {
+  return static_cast<int>(ctx->calls.size());
+}
+
+mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
+                               size_t count) {
+  LocalLevel level;
+  if (const mbrt_status status = mapArguments(*ctx, args, count, level)) {
+    return status;
+  }
+  ctx->levels.front() = level;
+  return 0;
+}

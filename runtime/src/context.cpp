@@ -1,0 +1,317 @@
+// Context lifetime, sinks, run bookkeeping (blocks, limits, trace, finish,
+// statistics) and alarms with their report text: the parts of the C ABI that
+// are not about variables, calls, NC blocks or output.
+#include "context.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include "motion.h"
+
+namespace mbc::rt {
+
+namespace {
+
+void copyError(const std::string& message, char* err, size_t errSize) {
+  if (err != nullptr && errSize > 0) {
+    std::snprintf(err, errSize, "%s", message.c_str());
+  }
+}
+
+/// #3011/#3012 are fixed for the whole run. SOURCE_DATE_EPOCH makes them
+/// reproducible (UTC); otherwise they are the local date and time.
+void takeDateAndTime(mbrt_ctx& ctx) {
+  std::tm tm{};
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (epoch != nullptr && *epoch != '\0') {
+    const auto seconds =
+        static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
+    gmtime_r(&seconds, &tm);
+  } else {
+    const std::time_t now = std::time(nullptr);
+    localtime_r(&now, &tm);
+  }
+  ctx.date =
+      (tm.tm_year + 1900) * 10000.0 + (tm.tm_mon + 1) * 100.0 + tm.tm_mday;
+  ctx.timeOfDay = tm.tm_hour * 10000.0 + tm.tm_min * 100.0 + tm.tm_sec;
+}
+
+/// Machine data from the profile: offsets to counts, commons, axes.
+void loadProfile(mbrt_ctx& ctx) {
+  const Profile& profile = ctx.profile;
+  ctx.axisIndex.fill(-1);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    ctx.axisIndex[profile.axes[axis] - 'A'] = static_cast<std::int8_t>(axis);
+  }
+  ctx.modal.inch = profile.inch;
+  const double scale = ctx.scale();
+  ctx.workOffsets.assign(kWorkOffsetCount, AxisCounts{});
+  for (int index = 0; index < kWorkOffsetCount; ++index) {
+    for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
+      ctx.workOffsets[index][axis] = static_cast<Counts>(
+          roundToCounts(profile.workOffsets[index][axis], scale));
+    }
+  }
+  ctx.toolOffsets = profile.toolOffsets;
+  ctx.commons.fill(vacant());
+  for (const auto& [number, value] : profile.variables) {
+    ctx.commons[number] = value;
+  }
+  ctx.partsCount = profile.partsCount;
+  ctx.partsRequired = profile.partsRequired;
+  // Call levels never outgrow this, so pushing one does not allocate.
+  ctx.levels.reserve(profile.macroNesting + 2);
+  ctx.calls.reserve(profile.totalNesting + 2);
+}
+
+/// The power-on state of a run: modal codes, position, locals and counters.
+/// Machine data (commons, offsets, part counters) carries over.
+void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
+  ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
+  ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
+  ctx.calls.clear();
+  ctx.macroDepth = 0;
+  ctx.subDepth = 0;
+  ctx.levels.assign(1, LocalLevel{});
+  ctx.machine = AxisCounts{};
+  switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
+  const bool inch = ctx.modal.inch;
+  ctx.modal = ModalState{};
+  ctx.modal.inch = inch;
+  ctx.file = nullptr;
+  ctx.line = 0;
+  ctx.blocks = 0;
+  ctx.moves = 0;
+  ctx.optionalStops = 0;
+  ctx.mainM99 = false;
+  ctx.clockMs = 0.0;
+  ctx.alarm = PendingAlarm{};
+  takeDateAndTime(ctx);
+}
+
+std::string alarmMessage(const PendingAlarm& alarm) {
+  if (alarm.id == AlarmId::MacroAlarm) {
+    return alarm.detail;
+  }
+  std::string message = alarmInfo(alarm.id).message;
+  if (!alarm.detail.empty()) {
+    message += ": " + alarm.detail;
+  }
+  return message;
+}
+
+std::string location(const std::string& file, int line) {
+  return file.empty() ? "" : fmt::format("{}:{}: ", file, line);
+}
+
+} // namespace
+
+mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
+                  int macroNumber) {
+  PendingAlarm& alarm = ctx.alarm;
+  if (alarm.id != AlarmId::None || id == AlarmId::None) {
+    return static_cast<mbrt_status>(id);
+  }
+  alarm.id = id;
+  alarm.macroNumber = macroNumber;
+  alarm.detail = detail;
+  alarm.file = ctx.file != nullptr ? ctx.file : "";
+  alarm.line = ctx.line;
+  alarm.stack.clear();
+  for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
+    alarm.stack.push_back(CallSite{
+        call->program, call->file != nullptr ? call->file : "", call->line});
+  }
+  return static_cast<mbrt_status>(id);
+}
+
+void sendMessage(mbrt_ctx& ctx, std::string_view text) {
+  if (ctx.messageSink.fn == nullptr) {
+    return;
+  }
+  const std::string line =
+      location(ctx.file != nullptr ? ctx.file : "", ctx.line) +
+      fmt::format("message: {}\n", text);
+  ctx.messageSink.fn(ctx.messageSink.user, line.data(), line.size());
+}
+
+int parseProgramNumber(const char* name) {
+  if (name == nullptr || name[0] != 'O' || name[1] == '\0') {
+    return 0;
+  }
+  int number = 0;
+  for (const char* digit = name + 1; *digit != '\0'; ++digit) {
+    if (*digit < '0' || *digit > '9' || number > 99'999'999) {
+      return 0;
+    }
+    number = number * 10 + (*digit - '0');
+  }
+  return number;
+}
+
+} // namespace mbc::rt
+
+using namespace mbc;
+using namespace mbc::rt;
+
+mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
+  try {
+    std::string error;
+    auto profile = profile_json != nullptr
+                       ? parseProfile(profile_json, error)
+                       : std::optional<Profile>(defaultProfile());
+    if (!profile) {
+      copyError(error, err, err_size);
+      return nullptr;
+    }
+    auto* ctx = new mbrt_ctx;
+    ctx->profile = std::move(*profile);
+    loadProfile(*ctx);
+    resetRun(*ctx, "MAIN");
+    return ctx;
+  } catch (const std::exception& e) {
+    copyError(std::string("cannot create the runtime: ") + e.what(), err,
+              err_size);
+    return nullptr;
+  }
+}
+
+mbrt_ctx* mbrt_create_from_file(const char* path, char* err, size_t err_size) {
+  std::ifstream in(path != nullptr ? path : "", std::ios::binary);
+  if (!in) {
+    copyError(fmt::format("cannot read machine profile {}: {}",
+                          path != nullptr ? path : "(null)",
+                          std::strerror(errno)),
+              err, err_size);
+    return nullptr;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return mbrt_create(text.str().c_str(), err, err_size);
+}
+
+void mbrt_destroy(mbrt_ctx* ctx) {
+  delete ctx;
+}
+
+void mbrt_set_motion_sink(mbrt_ctx* ctx, mbrt_motion_fn fn, void* user) {
+  ctx->motionSink = {fn, user};
+}
+
+void mbrt_set_print_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
+  ctx->printSink = {fn, user};
+}
+
+void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
+  ctx->messageSink = {fn, user};
+}
+
+void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
+  ctx->traceSink = {fn, user};
+}
+
+void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
+  ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
+}
+
+double mbrt_parameter(const mbrt_ctx* ctx, int number) {
+  const Profile& profile = ctx->profile;
+  switch (number) {
+    case 3401:
+      return profile.param3401;
+    case 3410:
+      return profile.param3410;
+    case 6001:
+      return profile.param6001;
+    case 6004:
+      return profile.param6004;
+    default:
+      return 0.0;
+  }
+}
+
+int mbrt_block_skip(const mbrt_ctx* ctx) {
+  return ctx->profile.blockSkip;
+}
+
+void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
+  resetRun(*ctx, main_program);
+}
+
+mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
+  ctx->file = file;
+  ctx->line = line;
+  if (++ctx->blocks > ctx->maxBlocks) {
+    return raise(*ctx, AlarmId::ExecutionLimit,
+                 fmt::format("more than {} blocks executed (--max-blocks)",
+                             ctx->maxBlocks));
+  }
+  return 0;
+}
+
+int mbrt_tracing(const mbrt_ctx* ctx) {
+  return ctx->traceSink.fn != nullptr;
+}
+
+void mbrt_trace(mbrt_ctx* ctx, const char* text) {
+  if (ctx->traceSink.fn == nullptr) {
+    return;
+  }
+  const std::string line =
+      location(ctx->file != nullptr ? ctx->file : "", ctx->line) +
+      (text != nullptr ? text : "") + "\n";
+  ctx->traceSink.fn(ctx->traceSink.user, line.data(), line.size());
+}
+
+void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
+  if (end_kind == MBRT_END_M02_M30) {
+    ctx->partsCount += 1.0;
+  } else if (end_kind == MBRT_END_MAIN_M99) {
+    ctx->mainM99 = true;
+  }
+}
+
+mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail) {
+  const auto id = static_cast<AlarmId>(alarm_id);
+  return raise(*ctx, id, detail != nullptr ? detail : "");
+}
+
+int mbrt_alarm(const mbrt_ctx* ctx) {
+  return static_cast<int>(ctx->alarm.id);
+}
+
+size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
+  const PendingAlarm& alarm = ctx->alarm;
+  std::string report;
+  if (alarm.id != AlarmId::None) {
+    const std::string message = alarmMessage(alarm);
+    report = fmt::format("{}alarm {}{}{}\n", location(alarm.file, alarm.line),
+                         alarmCode(alarm.id, alarm.macroNumber),
+                         message.empty() ? "" : ": ", message);
+    for (const CallSite& site : alarm.stack) {
+      report += fmt::format("  in {} called from {}:{}\n", site.program,
+                            site.file, site.line);
+    }
+  }
+  if (buf != nullptr && size > 0) {
+    const size_t n = std::min(report.size(), size - 1);
+    std::memcpy(buf, report.data(), n);
+    buf[n] = '\0';
+  }
+  return report.size();
+}
+
+void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
+  out->blocks = ctx->blocks;
+  out->moves = ctx->moves;
+  out->optional_stops = ctx->optionalStops;
+  out->main_m99 = ctx->mainM99;
+}

@@ -1,0 +1,189 @@
+// The private state behind the C ABI handle mbrt_ctx: profile data,
+// variables, call levels, modal state, positions, sinks and the pending
+// alarm, plus the helpers the runtime's source files share.
+#pragma once
+
+#include <mbc/alarm.h>
+#include <mbc/runtime.h>
+#include <mbc/value.h>
+
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "profile.h"
+
+namespace mbc::rt {
+
+inline constexpr int kLocalCount = 33;
+inline constexpr int kCommonEnd = 1000; // commons are #100..#999
+inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
+
+/// Positions and offsets are kept as whole counts of the least input
+/// increment, so that output is exact and G91 moves do not drift.
+using Counts = std::int64_t;
+using AxisCounts = std::array<Counts, MBRT_MAX_AXES>;
+
+/// One macro call level's #1..#33. Bit i of adpMask: #(i+1) was set from an
+/// argument written without decimal point (ADP gives the literal back).
+struct LocalLevel {
+  LocalLevel() { values.fill(vacant()); }
+
+  std::array<Num, kLocalCount> values{};
+  std::uint64_t adpMask = 0;
+};
+
+/// One active call (G65 or M98): nesting checks, #4115 and the call stack of
+/// alarm reports.
+struct CallRecord {
+  std::string program;
+  int programNumber = 0;
+  bool macro = false;
+  const char* file = nullptr; // the calling block
+  int line = 0;
+};
+
+struct CallSite {
+  std::string program;
+  std::string file;
+  int line = 0;
+};
+
+struct PendingAlarm {
+  AlarmId id = AlarmId::None;
+  int macroNumber = 0;
+  std::string detail; // for macro alarms: the message
+  std::string file;
+  int line = 0;
+  std::vector<CallSite> stack; // innermost first
+};
+
+/// Modal G codes (#4001..) and the last value of each address (#4101..).
+struct ModalState {
+  int motion = 0; // 0 1 2 3
+  int plane = 17;
+  bool incremental = false;
+  bool inch = false;
+  bool returnToR = false;             // G99
+  int workOffset = kFirstG54Offset;   // index into workOffsets
+  double feed = 0.0;                  // modal F
+  std::array<double, 30> lastWords{}; // #4101..#4130 by index
+};
+
+template <class Fn> struct Sink {
+  Fn fn = nullptr;
+  void* user = nullptr;
+};
+
+} // namespace mbc::rt
+
+struct mbrt_ctx {
+  // Machine data from the profile.
+  mbc::rt::Profile profile;
+  std::array<std::int8_t, 26> axisIndex{}; // 'A'..'Z' -> axis or -1
+
+  // Variables.
+  std::vector<mbc::rt::LocalLevel> levels; // back() is the current level
+  std::array<mbc::Num, mbc::rt::kCommonEnd> commons{};
+  std::array<mbc::Num, 16> outputSignals{}; // #1100..#1115
+  std::array<mbc::Num, 2> outputWords{};    // #1132, #1133
+  std::vector<mbc::rt::ToolOffset> toolOffsets;
+  std::vector<mbc::rt::AxisCounts> workOffsets;
+  double clockMs = 0.0;
+  double clockHours = 0.0;
+  double singleBlockBits = 0.0; // #3003
+  double feedHoldBits = 0.0;    // #3004
+  double settingBits = 0.0;     // #3005
+  double partsCount = 0.0;      // #3901
+  double partsRequired = 0.0;   // #3902
+  double date = 0.0;            // #3011
+  double timeOfDay = 0.0;       // #3012
+
+  // Calls.
+  std::vector<mbc::rt::CallRecord> calls;
+  int macroDepth = 0;
+  int subDepth = 0;
+  std::string mainProgram;
+  int mainProgramNumber = 0;
+
+  // Machine state.
+  mbc::rt::ModalState modal;
+  mbc::rt::AxisCounts machine{}; // machine position, the primary one
+
+  // The run.
+  const char* file = nullptr; // block being executed
+  int line = 0;
+  std::uint64_t blocks = 0;
+  std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks;
+  std::uint64_t moves = 0;
+  std::uint64_t optionalStops = 0;
+  bool mainM99 = false;
+  mbc::rt::PendingAlarm alarm;
+  std::string scratch; // reused output buffer
+
+  mbc::rt::Sink<mbrt_motion_fn> motionSink;
+  mbc::rt::Sink<mbrt_text_fn> printSink;
+  mbc::rt::Sink<mbrt_text_fn> messageSink;
+  mbc::rt::Sink<mbrt_text_fn> traceSink;
+
+  int axisCount() const { return static_cast<int>(profile.axes.size()); }
+
+  int axisOf(char letter) const {
+    return letter >= 'A' && letter <= 'Z' ? axisIndex[letter - 'A'] : -1;
+  }
+
+  /// Counts per input unit: 1000 (0.001 mm) or 10000 (0.0001 inch).
+  double scale() const { return modal.inch ? 10000.0 : 1000.0; }
+
+  int decimals() const { return modal.inch ? 4 : 3; }
+
+  mbc::rt::LocalLevel& locals() { return levels.back(); }
+
+  const char* programName() const {
+    return calls.empty() ? mainProgram.c_str() : calls.back().program.c_str();
+  }
+
+  int programNumber() const {
+    return calls.empty() ? mainProgramNumber : calls.back().programNumber;
+  }
+};
+
+namespace mbc::rt {
+
+/// Records an alarm with the current block and call stack; the first alarm
+/// of a run is kept. Returns the id as an mbrt_status.
+mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail = {},
+                  int macroNumber = 0);
+
+/// Sends "file:line: message: text\n" to the message sink.
+void sendMessage(mbrt_ctx& ctx, std::string_view text);
+
+/// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
+int parseProgramNumber(const char* name);
+
+/// Rounds `value` (input units) half away from zero to counts of the least
+/// increment. A decimal tie such as 2.0005 lands a few ulps off .5 after the
+/// multiplication; it is taken as the tie the program wrote.
+inline double roundToCounts(double value, double scale) {
+  const double x = std::fabs(value * scale);
+  double whole = std::floor(x);
+  if (x - whole >= 0.5 - 8 * DBL_EPSILON * x) {
+    whole += 1.0;
+  }
+  return value < 0 ? -whole : whole;
+}
+
+/// FANUC addresses take at most nine digits (PS0003 beyond).
+inline bool fitsAddress(double counts) {
+  return std::fabs(counts) <= 999'999'999.0;
+}
+
+inline double countsToUnits(Counts counts, double scale) {
+  return static_cast<double>(counts) / scale;
+}
+
+} // namespace mbc::rt

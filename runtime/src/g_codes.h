@@ -1,0 +1,20 @@
+// The G codes of a FANUC 0i-MF (M series) with their names, so that a G code
+// mbc does not execute yet is told apart from one FANUC does not have.
+#pragma once
+
+#include <string>
+
+namespace mbc::rt {
+
+struct GCodeInfo {
+  int tenths; // G54.1 -> 541
+  const char* name;
+};
+
+/// The FANUC G code with this number in tenths, or nullptr if there is none.
+const GCodeInfo* findGCode(int tenths);
+
+/// "G28", "G54.1", "G7.5": the code as a program writes it.
+std::string gCodeText(int tenths);
+
+} // namespace mbc::rt

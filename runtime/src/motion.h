@@ -1,0 +1,28 @@
+// The motion of NC blocks: linear and circular geometry, positions in
+// machine and workpiece coordinates, the simulated clock and the motion sink.
+#pragma once
+
+#include "context.h"
+
+namespace mbc::rt {
+
+/// The words of one block that define its motion, in counts.
+struct MotionWords {
+  std::uint32_t axisMask = 0;   // bit a: axis a was written
+  AxisCounts axis{};            // as written (absolute or incremental)
+  std::uint32_t centerMask = 0; // bit 0: I, 1: J, 2: K
+  std::array<Counts, 3> center{};
+  bool hasR = false;
+  Counts r = 0;
+};
+
+/// An axis's position in the active workpiece coordinate system.
+Counts workCounts(const mbrt_ctx& ctx, int axis);
+
+/// G20/G21: re-expresses the position and the work offsets in the new unit.
+void switchUnits(mbrt_ctx& ctx, bool inch);
+
+/// Moves in the modal motion mode (G00..G03) to the block's end point.
+mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words);
+
+} // namespace mbc::rt

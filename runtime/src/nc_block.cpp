@@ -1,0 +1,330 @@
+// NC blocks (spec §1.5, §5.8, Part A): address values to counts or
+// integers, modal G codes, the last-value words of #4101.., motion, and the
+// flow the M codes ask for (M98, M99, M02/M30, M00/M01).
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include "g_codes.h"
+#include "motion.h"
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr int kMaxMCodes = 3;
+
+/// #4101 + index for the addresses the control remembers.
+int lastWordIndex(char letter) {
+  switch (letter) {
+    case 'B':
+      return 1;
+    case 'D':
+      return 6;
+    case 'E':
+      return 7;
+    case 'F':
+      return 8;
+    case 'H':
+      return 10;
+    case 'M':
+      return 12;
+    case 'N':
+      return 13;
+    case 'S':
+      return 18;
+    case 'T':
+      return 19;
+    default:
+      return -1;
+  }
+}
+
+constexpr int kLastPIndex = 29; // #4130: G54.1 P
+
+/// The words of one block after conversion.
+struct Block {
+  MotionWords motion;
+  bool hasP = false;
+  bool hasL = false;
+  double p = 0.0;
+  double l = 0.0;
+  int mCount = 0;
+  std::array<int, kMaxMCodes> m{};
+};
+
+bool isArcCenterLetter(char letter) {
+  return letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
+}
+
+/// An axis or arc word in counts: a literal without decimal point already is
+/// counts (unless 3401#0), everything else is rounded to the increment.
+mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
+  const double value = numeric(word.value);
+  const double counts =
+      word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput()
+          ? value
+          : roundToCounts(value, ctx.scale());
+  if (!fitsAddress(counts)) {
+    return raise(ctx, AlarmId::TooManyDigits,
+                 fmt::format("{}{}", word.letter, value));
+  }
+  *out = static_cast<Counts>(counts);
+  return 0;
+}
+
+mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, const Block& block) {
+  const double p = block.hasP ? block.p : 1.0;
+  if (p < 1.0 || p > kG541Count) {
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("G54.1 P{}: P must be 1 to {}", p, kG541Count));
+  }
+  next.workOffset = kFirstG541Offset + static_cast<int>(p) - 1;
+  next.lastWords[kLastPIndex] = p;
+  return 0;
+}
+
+/// One G code into `next`; codes of one group overwrite each other, so the
+/// last one of a block wins.
+mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
+                       const Block& block) {
+  switch (tenths) {
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+      next.motion = tenths / 10;
+      return 0;
+    case 170:
+    case 180:
+    case 190:
+      next.plane = tenths / 10;
+      return 0;
+    case 200:
+    case 210:
+      next.inch = tenths == 200;
+      return 0;
+    case 900:
+    case 910:
+      next.incremental = tenths == 910;
+      return 0;
+    case 980:
+    case 990:
+      next.returnToR = tenths == 990;
+      return 0;
+    case 540:
+    case 550:
+    case 560:
+    case 570:
+    case 580:
+    case 590:
+      next.workOffset = kFirstG54Offset + (tenths - 540) / 10;
+      return 0;
+    case 541:
+      return selectG541(ctx, next, block);
+    // The one state mbc keeps these groups in (#4001.. reads them).
+    case 150: // G15
+    case 400: // G40
+    case 490: // G49
+    case 500: // G50
+    case 501: // G50.1
+    case 640: // G64
+    case 670: // G67
+    case 690: // G69
+    case 800: // G80
+    case 940: // G94
+    case 970: // G97
+      return 0;
+    default:
+      break;
+  }
+  if (const GCodeInfo* code = findGCode(tenths)) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("{} ({})", gCodeText(tenths), code->name));
+  }
+  return raise(ctx, AlarmId::ImproperGCode, gCodeText(tenths));
+}
+
+/// G codes take effect before every other word of the block: G20/G21 change
+/// how the block's own coordinates read.
+mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                        const Block& block) {
+  ModalState next = ctx.modal;
+  for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter != 'G') {
+      continue;
+    }
+    const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
+    if (tenths < 0.0 || tenths > 9999.0) {
+      return raise(ctx, AlarmId::ImproperGCode,
+                   fmt::format("G{}", numeric(words[i].value)));
+    }
+    if (const mbrt_status status =
+            applyGCode(ctx, next, static_cast<int>(tenths), block)) {
+      return status;
+    }
+  }
+  const bool inch = next.inch;
+  next.inch = ctx.modal.inch;
+  ctx.modal = next;
+  switchUnits(ctx, inch);
+  return 0;
+}
+
+mbrt_status readMCode(mbrt_ctx& ctx, double value, Block& block) {
+  if (block.mCount == kMaxMCodes) {
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("more than {} M codes in one block", kMaxMCodes));
+  }
+  block.m[block.mCount++] = static_cast<int>(value);
+  return 0;
+}
+
+/// Every word but G, P and L, in program order.
+mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
+  const char letter = word.letter;
+  if (const int axis = ctx.axisOf(letter); axis >= 0) {
+    block.motion.axisMask |= std::uint32_t{1} << axis;
+    return toCounts(ctx, word, &block.motion.axis[axis]);
+  }
+  if (letter == 'R') {
+    block.motion.hasR = true;
+    return toCounts(ctx, word, &block.motion.r);
+  }
+  if (isArcCenterLetter(letter)) {
+    const int index = letter - 'I';
+    block.motion.centerMask |= std::uint32_t{1} << index;
+    return toCounts(ctx, word, &block.motion.center[index]);
+  }
+  if (letter == 'F') {
+    ctx.modal.feed = numeric(word.value);
+    ctx.modal.lastWords[lastWordIndex('F')] = ctx.modal.feed;
+    return 0;
+  }
+  if (letter == 'Q') {
+    return 0; // only canned cycles use it, and they alarm as unsupported
+  }
+  const int index = lastWordIndex(letter);
+  if (index < 0) {
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("{} is not an address of this machine", letter));
+  }
+  const double value = roundHalfAway(numeric(word.value));
+  ctx.modal.lastWords[index] = value;
+  return letter == 'M' ? readMCode(ctx, value, block) : 0;
+}
+
+/// M98 P L: with no L and more than four digits, the high digits of P are
+/// the repeat count (spec §5.8).
+mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
+  if (!block.hasP) {
+    return raise(ctx, AlarmId::ProgramNotFound, "M98 without P");
+  }
+  double program = block.p;
+  double repeat = block.hasL ? block.l : 1.0;
+  if (!block.hasL && program > 9999.0) {
+    repeat = std::floor(program / 10000.0);
+    program = std::fmod(program, 10000.0);
+  }
+  if (repeat < 1.0) {
+    return 0; // L0: no call
+  }
+  flow->kind = MBRT_FLOW_CALL_SUB;
+  flow->program = static_cast<int>(program);
+  flow->repeat = static_cast<long>(repeat);
+  return 0;
+}
+
+mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
+  for (int i = 0; i < block.mCount; ++i) {
+    switch (block.m[i]) {
+      case 0:
+      case 1:
+        ++ctx.optionalStops;
+        sendMessage(ctx, block.m[i] == 0
+                             ? "M00 program stop (the run goes on)"
+                             : "M01 optional stop (the run goes on)");
+        break;
+      case 2:
+      case 30:
+        flow->kind = MBRT_FLOW_END;
+        flow->counts_part = 1;
+        break;
+      case 98:
+        if (const mbrt_status status = callSubprogram(ctx, block, flow)) {
+          return status;
+        }
+        break;
+      case 99:
+        flow->kind = MBRT_FLOW_RETURN;
+        flow->has_seq = block.hasP;
+        flow->seq = block.p;
+        break;
+      default:
+        break;
+    }
+  }
+  return 0;
+}
+
+mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                         mbrt_flow* flow) {
+  Block block;
+  for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter == 'P' || words[i].letter == 'L') {
+      const double value = roundHalfAway(numeric(words[i].value));
+      (words[i].letter == 'P' ? block.hasP : block.hasL) = true;
+      (words[i].letter == 'P' ? block.p : block.l) = value;
+    }
+  }
+  if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
+    return status;
+  }
+  for (size_t i = 0; i < count; ++i) {
+    const char letter = words[i].letter;
+    if (letter == 'G' || letter == 'P' || letter == 'L') {
+      continue;
+    }
+    if (const mbrt_status status = readWord(ctx, words[i], block)) {
+      return status;
+    }
+  }
+  const MotionWords& motion = block.motion;
+  const bool arcMode = ctx.modal.motion >= 2;
+  // An arc block may leave out the end point: a full circle (I J K) or, with
+  // R, no motion at all.
+  if (motion.axisMask != 0 ||
+      (arcMode && (motion.centerMask != 0 || motion.hasR))) {
+    if (const mbrt_status status = executeMotion(ctx, motion)) {
+      return status;
+    }
+  }
+  return decideFlow(ctx, block, flow);
+}
+
+} // namespace
+
+} // namespace mbc::rt
+
+using namespace mbc::rt;
+
+mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
+                          mbrt_flow* flow) {
+  *flow = mbrt_flow{};
+  const mbrt_status status = executeBlock(*ctx, words, count, flow);
+  if (status != 0) {
+    *flow = mbrt_flow{};
+  }
+  return status;
+}
+
+double mbrt_address_increment(const mbrt_ctx* ctx, char letter) {
+  if (letter == 'G') {
+    return 0.1;
+  }
+  if (ctx->axisOf(letter) >= 0 || isArcCenterLetter(letter) || letter == 'Q' ||
+      letter == 'F') {
+    return 1.0 / ctx->scale();
+  }
+  return 1.0;
+}

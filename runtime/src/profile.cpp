@@ -1,0 +1,306 @@
+// Machine profile parsing (docs/machine-profile.md). Every key is optional;
+// unknown keys and wrong types are errors that name the key, so that a typo
+// in a profile never silently selects a default.
+#include "profile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace mbc::rt {
+
+namespace {
+
+using nlohmann::json;
+
+struct ProfileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(const std::string& key, const std::string& what) {
+  throw ProfileError("machine profile: \"" + key + "\" " + what);
+}
+
+std::string child(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+const json& object(const json& value, const std::string& path) {
+  if (!value.is_object()) {
+    fail(path, "must be an object");
+  }
+  return value;
+}
+
+double number(const json& value, const std::string& path) {
+  if (!value.is_number()) {
+    fail(path, "must be a number");
+  }
+  return value.get<double>();
+}
+
+int integer(const json& value, const std::string& path, int low, int high) {
+  const double x = number(value, path);
+  if (x != std::floor(x) || x < low || x > high) {
+    fail(path, "must be a whole number from " + std::to_string(low) + " to " +
+                   std::to_string(high));
+  }
+  return static_cast<int>(x);
+}
+
+bool boolean(const json& value, const std::string& path) {
+  if (!value.is_boolean()) {
+    fail(path, "must be true or false");
+  }
+  return value.get<bool>();
+}
+
+/// A decimal key such as "3401" or "7"; nullopt when it is not one.
+std::optional<int> keyNumber(std::string_view key) {
+  int n = 0;
+  const auto [end, ec] =
+      std::from_chars(key.data(), key.data() + key.size(), n);
+  if (ec != std::errc() || end != key.data() + key.size()) {
+    return std::nullopt;
+  }
+  return n;
+}
+
+[[noreturn]] void unknownKey(const std::string& path) {
+  throw ProfileError("machine profile: unknown key \"" + path + "\"");
+}
+
+void parseAxes(const json& value, Profile& profile) {
+  const std::string what = "must be an array of 1 to 8 distinct axis "
+                           "letters from XYZABCUVW";
+  if (!value.is_array() || value.empty() || value.size() > MBRT_MAX_AXES) {
+    fail("axes", what);
+  }
+  std::string axes;
+  for (const json& axis : value) {
+    if (!axis.is_string() || axis.get<std::string>().size() != 1) {
+      fail("axes", what);
+    }
+    const char letter = axis.get<std::string>()[0];
+    if (kAxisLetters.find(letter) == std::string_view::npos ||
+        axes.find(letter) != std::string::npos) {
+      fail("axes", what);
+    }
+    axes += letter;
+  }
+  profile.axes = axes;
+}
+
+void parseUnits(const json& value, Profile& profile) {
+  if (value == "metric" || value == "inch") {
+    profile.inch = value == "inch";
+    return;
+  }
+  fail("units", "must be \"metric\" or \"inch\"");
+}
+
+void parseParameters(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "parameters").items()) {
+    const std::string path = child("parameters", key);
+    const auto n = keyNumber(key);
+    if (n == 3401) {
+      profile.param3401 = integer(item, path, 0, 255);
+    } else if (n == 6001) {
+      profile.param6001 = integer(item, path, 0, 255);
+    } else if (n == 6004) {
+      profile.param6004 = integer(item, path, 0, 255);
+    } else if (n == 3410) {
+      profile.param3410 = number(item, path);
+      if (profile.param3410 < 0.0) {
+        fail(path, "must not be negative");
+      }
+    } else {
+      unknownKey(path);
+    }
+  }
+}
+
+void parseToolOffset(const json& value, const std::string& path,
+                     ToolOffset& offset) {
+  for (const auto& [key, item] : object(value, path).items()) {
+    const std::string itemPath = child(path, key);
+    if (key == "h_geometry") {
+      offset.hGeometry = number(item, itemPath);
+    } else if (key == "h_wear") {
+      offset.hWear = number(item, itemPath);
+    } else if (key == "d_geometry") {
+      offset.dGeometry = number(item, itemPath);
+    } else if (key == "d_wear") {
+      offset.dWear = number(item, itemPath);
+    } else {
+      unknownKey(itemPath);
+    }
+  }
+}
+
+void parseToolOffsets(const json& value, Profile& profile) {
+  const json& offsets = object(value, "tool_offsets");
+  if (offsets.contains("count")) {
+    profile.toolOffsetCount =
+        integer(offsets["count"], "tool_offsets.count", 1, kMaxToolOffsets);
+  }
+  profile.toolOffsets.assign(profile.toolOffsetCount + 1, ToolOffset{});
+  for (const auto& [key, item] : offsets.items()) {
+    if (key == "count") {
+      continue;
+    }
+    const std::string path = child("tool_offsets", key);
+    const auto n = keyNumber(key);
+    if (!n || *n < 1 || *n > profile.toolOffsetCount) {
+      unknownKey(path);
+    }
+    parseToolOffset(item, path, profile.toolOffsets[*n]);
+  }
+}
+
+/// "EXT", "G54".."G59", "G54.1P1".."G54.1P300" -> index in workOffsets.
+std::optional<int> workOffsetIndex(std::string_view key) {
+  if (key == "EXT") {
+    return kExternalOffset;
+  }
+  if (key.size() == 3 && key.substr(0, 2) == "G5" && key[2] >= '4' &&
+      key[2] <= '9') {
+    return kFirstG54Offset + (key[2] - '4');
+  }
+  constexpr std::string_view prefix = "G54.1P";
+  if (key.substr(0, prefix.size()) == prefix) {
+    const auto p = keyNumber(key.substr(prefix.size()));
+    if (p && *p >= 1 && *p <= kG541Count) {
+      return kFirstG541Offset + *p - 1;
+    }
+  }
+  return std::nullopt;
+}
+
+void parseWorkOffsets(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "work_offsets").items()) {
+    const std::string path = child("work_offsets", key);
+    const auto index = workOffsetIndex(key);
+    if (!index) {
+      unknownKey(path);
+    }
+    if (!item.is_array() || item.size() > profile.axes.size()) {
+      fail(path, "must be an array of at most one number per axis");
+    }
+    AxisValues& offset = profile.workOffsets[*index];
+    for (std::size_t axis = 0; axis < item.size(); ++axis) {
+      offset[axis] = number(item[axis], path);
+      // Offsets become counts of the increment: nine digits at most.
+      if (!(std::fabs(offset[axis]) < 100000.0)) {
+        fail(path, "values must be between -99999.9999 and 99999.9999");
+      }
+    }
+  }
+}
+
+void parseVariables(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "variables").items()) {
+    const std::string path = child("variables", key);
+    const auto n = keyNumber(key);
+    if (!n || *n < 500 || *n > 999) {
+      unknownKey(path);
+    }
+    profile.variables.emplace_back(*n, number(item, path));
+  }
+}
+
+void parseLimits(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "limits").items()) {
+    const std::string path = child("limits", key);
+    if (key == "macro_nesting") {
+      profile.macroNesting = integer(item, path, 0, 100);
+    } else if (key == "subprogram_nesting") {
+      profile.subprogramNesting = integer(item, path, 0, 100);
+    } else if (key == "total_nesting") {
+      profile.totalNesting = integer(item, path, 0, 200);
+    } else {
+      unknownKey(path);
+    }
+  }
+}
+
+void parseParts(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "parts").items()) {
+    const std::string path = child("parts", key);
+    if (key == "count") {
+      profile.partsCount = number(item, path);
+    } else if (key == "required") {
+      profile.partsRequired = number(item, path);
+    } else {
+      unknownKey(path);
+    }
+  }
+}
+
+Profile parseTopLevel(const json& root) {
+  if (!root.is_object()) {
+    throw ProfileError("machine profile: the top level must be an object");
+  }
+  Profile profile = defaultProfile();
+  // Axes first: work offsets are checked against the axis count.
+  if (root.contains("axes")) {
+    parseAxes(root["axes"], profile);
+  }
+  if (root.contains("tool_offsets")) {
+    parseToolOffsets(root["tool_offsets"], profile);
+  }
+  for (const auto& [key, item] : root.items()) {
+    if (key == "axes" || key == "tool_offsets") {
+      continue;
+    }
+    if (key == "units") {
+      parseUnits(item, profile);
+    } else if (key == "rapid_rate") {
+      profile.rapidRate = number(item, key);
+      if (profile.rapidRate <= 0.0) {
+        fail(key, "must be positive");
+      }
+    } else if (key == "parameters") {
+      parseParameters(item, profile);
+    } else if (key == "work_offsets") {
+      parseWorkOffsets(item, profile);
+    } else if (key == "variables") {
+      parseVariables(item, profile);
+    } else if (key == "extended_common") {
+      profile.extendedCommon = boolean(item, key);
+    } else if (key == "limits") {
+      parseLimits(item, profile);
+    } else if (key == "parts") {
+      parseParts(item, profile);
+    } else if (key == "block_skip") {
+      profile.blockSkip = boolean(item, key);
+    } else {
+      unknownKey(key);
+    }
+  }
+  return profile;
+}
+
+} // namespace
+
+Profile defaultProfile() {
+  Profile profile;
+  profile.toolOffsets.assign(profile.toolOffsetCount + 1, ToolOffset{});
+  profile.workOffsets.assign(kWorkOffsetCount, AxisValues{});
+  return profile;
+}
+
+std::optional<Profile> parseProfile(std::string_view text, std::string& error) {
+  try {
+    return parseTopLevel(json::parse(text));
+  } catch (const ProfileError& e) {
+    error = e.what();
+  } catch (const json::exception& e) {
+    error = std::string("machine profile: invalid JSON: ") + e.what();
+  }
+  return std::nullopt;
+}
+
+} // namespace mbc::rt

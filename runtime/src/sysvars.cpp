@@ -1,0 +1,373 @@
+// The system variable table: one row per range of numbers with its reader
+// and, when writable, its writer (spec §6, Part A). Readers get the index of
+// the number within its range.
+#include "sysvars.h"
+
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string_view>
+
+#include "motion.h"
+
+namespace mbc::rt {
+
+namespace {
+
+using Reader = mbrt_status (*)(mbrt_ctx& ctx, int index, Num* out);
+using Writer = mbrt_status (*)(mbrt_ctx& ctx, int index, Num value,
+                               const char* comment);
+
+struct SysVarRange {
+  long first;
+  long last;
+  Reader read;
+  Writer write; // nullptr: read-only (PS0116)
+};
+
+/// Offsets are 20 numbers apart per coordinate system, one per axis.
+constexpr int kOffsetStride = 20;
+
+mbrt_status readZero(mbrt_ctx&, int, Num* out) {
+  *out = 0.0;
+  return 0;
+}
+
+mbrt_status readOutputSignal(mbrt_ctx& ctx, int index, Num* out) {
+  *out = ctx.outputSignals[index];
+  return 0;
+}
+
+mbrt_status writeOutputSignal(mbrt_ctx& ctx, int index, Num value,
+                              const char*) {
+  ctx.outputSignals[index] = numeric(value);
+  return 0;
+}
+
+mbrt_status readOutputWord(mbrt_ctx& ctx, int index, Num* out) {
+  *out = ctx.outputWords[index];
+  return 0;
+}
+
+mbrt_status writeOutputWord(mbrt_ctx& ctx, int index, Num value, const char*) {
+  ctx.outputWords[index] = numeric(value);
+  return 0;
+}
+
+/// Tool offset number index + 1; beyond the profile's count is PS0115.
+template <double ToolOffset::*Field>
+mbrt_status readToolOffset(mbrt_ctx& ctx, int index, Num* out) {
+  if (index + 1 > ctx.profile.toolOffsetCount) {
+    return raise(ctx, AlarmId::VariableOutOfRange,
+                 fmt::format("tool offset {} (the machine has {})", index + 1,
+                             ctx.profile.toolOffsetCount));
+  }
+  *out = ctx.toolOffsets[index + 1].*Field;
+  return 0;
+}
+
+template <double ToolOffset::*Field>
+mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
+  Num ignored;
+  if (const mbrt_status status = readToolOffset<Field>(ctx, index, &ignored)) {
+    return status;
+  }
+  ctx.toolOffsets[index + 1].*Field = numeric(value);
+  return 0;
+}
+
+/// The control shows at most 26 characters of an alarm or message text.
+std::string messageText(const char* comment) {
+  std::string_view text = comment != nullptr ? comment : "";
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text[0]))) {
+    text.remove_prefix(1);
+  }
+  while (!text.empty() &&
+         std::isspace(static_cast<unsigned char>(text.back()))) {
+    text.remove_suffix(1);
+  }
+  return std::string(text.substr(0, 26));
+}
+
+mbrt_status writeMacroAlarm(mbrt_ctx& ctx, int, Num value,
+                            const char* comment) {
+  const double n = roundHalfAway(numeric(value));
+  if (n < 0.0 || n > 999.0) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("#3000 = {} (0 to 999)", n));
+  }
+  return raise(ctx, AlarmId::MacroAlarm, messageText(comment),
+               3000 + static_cast<int>(n));
+}
+
+mbrt_status writeMessage(mbrt_ctx& ctx, int, Num, const char* comment) {
+  sendMessage(ctx, messageText(comment));
+  return 0;
+}
+
+mbrt_status readClockMs(mbrt_ctx& ctx, int, Num* out) {
+  *out = std::floor(ctx.clockMs);
+  return 0;
+}
+
+mbrt_status writeClockMs(mbrt_ctx& ctx, int, Num value, const char*) {
+  ctx.clockMs = numeric(value);
+  return 0;
+}
+
+mbrt_status readClockHours(mbrt_ctx& ctx, int, Num* out) {
+  *out = ctx.clockHours;
+  return 0;
+}
+
+mbrt_status writeClockHours(mbrt_ctx& ctx, int, Num value, const char*) {
+  ctx.clockHours = numeric(value);
+  return 0;
+}
+
+/// A plain read/write number of the context.
+template <double mbrt_ctx::*Field>
+mbrt_status readField(mbrt_ctx& ctx, int, Num* out) {
+  *out = ctx.*Field;
+  return 0;
+}
+
+template <double mbrt_ctx::*Field>
+mbrt_status writeField(mbrt_ctx& ctx, int, Num value, const char*) {
+  ctx.*Field = numeric(value);
+  return 0;
+}
+
+/// #3003 and #3004 hold bit patterns 0..Max.
+template <double mbrt_ctx::*Field, int Max>
+mbrt_status writeBits(mbrt_ctx& ctx, int, Num value, const char*) {
+  const double bits = roundHalfAway(numeric(value));
+  if (bits < 0.0 || bits > Max) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("{} (0 to {})", bits, Max));
+  }
+  ctx.*Field = bits;
+  return 0;
+}
+
+mbrt_status readMainProgram(mbrt_ctx& ctx, int, Num* out) {
+  *out = ctx.mainProgramNumber;
+  return 0;
+}
+
+/// #4001+g: the G code of modal group g (spec §6.4); groups mbc keeps in one
+/// fixed state read their only code.
+double modalGroupValue(const mbrt_ctx& ctx, int group) {
+  const ModalState& modal = ctx.modal;
+  switch (group) {
+    case 1:
+      return modal.motion;
+    case 2:
+      return modal.plane;
+    case 3:
+      return modal.incremental ? 91 : 90;
+    case 5:
+      return 94;
+    case 6:
+      return modal.inch ? 20 : 21;
+    case 7:
+      return 40;
+    case 8:
+      return 49;
+    case 9:
+      return 80;
+    case 10:
+      return modal.returnToR ? 99 : 98;
+    case 11:
+      return 50;
+    case 12:
+      return 67;
+    case 13:
+      return 97;
+    case 14:
+      return modal.workOffset < kFirstG541Offset ? 53 + modal.workOffset : 54.1;
+    case 15:
+      return 64;
+    case 16:
+      return 69;
+    case 17:
+      return 15;
+    case 18:
+      return 50.1;
+    default:
+      return 0;
+  }
+}
+
+mbrt_status readModalGroup(mbrt_ctx& ctx, int index, Num* out) {
+  *out = modalGroupValue(ctx, index + 1);
+  return 0;
+}
+
+/// #4101..#4130: the last value of each address; #4115 is the program.
+mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
+  constexpr int kProgramIndex = 14;
+  *out =
+      index == kProgramIndex ? ctx.programNumber() : ctx.modal.lastWords[index];
+  return 0;
+}
+
+mbrt_status readWorkPosition(mbrt_ctx& ctx, int axis, Num* out) {
+  *out = axis < ctx.axisCount()
+             ? countsToUnits(workCounts(ctx, axis), ctx.scale())
+             : 0.0;
+  return 0;
+}
+
+mbrt_status readMachinePosition(mbrt_ctx& ctx, int axis, Num* out) {
+  *out = axis < ctx.axisCount() ? countsToUnits(ctx.machine[axis], ctx.scale())
+                                : 0.0;
+  return 0;
+}
+
+/// Axes beyond the machine's read 0 and ignore writes, so that programs
+/// written for a machine with more axes still run.
+mbrt_status readOffset(mbrt_ctx& ctx, int offset, int axis, Num* out) {
+  *out = axis < ctx.axisCount()
+             ? countsToUnits(ctx.workOffsets[offset][axis], ctx.scale())
+             : 0.0;
+  return 0;
+}
+
+mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
+  if (axis >= ctx.axisCount()) {
+    return 0;
+  }
+  const double counts = roundToCounts(numeric(value), ctx.scale());
+  if (!fitsAddress(counts)) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("work offset {}", numeric(value)));
+  }
+  // The machine position stays; the workpiece position follows the offset.
+  ctx.workOffsets[offset][axis] = static_cast<Counts>(counts);
+  return 0;
+}
+
+/// #5201..#5340: external offset, then G54..G59.
+mbrt_status readG54Offset(mbrt_ctx& ctx, int index, Num* out) {
+  return readOffset(ctx, index / kOffsetStride, index % kOffsetStride, out);
+}
+
+mbrt_status writeG54Offset(mbrt_ctx& ctx, int index, Num value, const char*) {
+  return writeOffset(ctx, index / kOffsetStride, index % kOffsetStride, value);
+}
+
+/// #7001.. and #14001..: G54.1 P1.. (#14001.. has only 8 axes per set).
+template <int AxesPerSet>
+mbrt_status readG541Offset(mbrt_ctx& ctx, int index, Num* out) {
+  const int axis = index % kOffsetStride;
+  if (axis >= AxesPerSet) {
+    return raise(ctx, AlarmId::VariableOutOfRange, "no such axis");
+  }
+  return readOffset(ctx, kFirstG541Offset + index / kOffsetStride, axis, out);
+}
+
+template <int AxesPerSet>
+mbrt_status writeG541Offset(mbrt_ctx& ctx, int index, Num value, const char*) {
+  const int axis = index % kOffsetStride;
+  if (axis >= AxesPerSet) {
+    return raise(ctx, AlarmId::VariableOutOfRange, "no such axis");
+  }
+  return writeOffset(ctx, kFirstG541Offset + index / kOffsetStride, axis,
+                     value);
+}
+
+constexpr std::array kSystemVariables = {
+    SysVarRange{1000, 1015, readZero, nullptr}, // input signals
+    SysVarRange{1032, 1032, readZero, nullptr},
+    SysVarRange{1100, 1115, readOutputSignal, writeOutputSignal},
+    SysVarRange{1132, 1133, readOutputWord, writeOutputWord},
+    SysVarRange{2001, 2200, readToolOffset<&ToolOffset::hWear>,
+                writeToolOffset<&ToolOffset::hWear>},
+    SysVarRange{2201, 2400, readToolOffset<&ToolOffset::hGeometry>,
+                writeToolOffset<&ToolOffset::hGeometry>},
+    SysVarRange{3000, 3000, readZero, writeMacroAlarm},
+    SysVarRange{3001, 3001, readClockMs, writeClockMs},
+    SysVarRange{3002, 3002, readClockHours, writeClockHours},
+    SysVarRange{3003, 3003, readField<&mbrt_ctx::singleBlockBits>,
+                writeBits<&mbrt_ctx::singleBlockBits, 3>},
+    SysVarRange{3004, 3004, readField<&mbrt_ctx::feedHoldBits>,
+                writeBits<&mbrt_ctx::feedHoldBits, 7>},
+    SysVarRange{3005, 3005, readField<&mbrt_ctx::settingBits>,
+                writeField<&mbrt_ctx::settingBits>},
+    SysVarRange{3006, 3006, readZero, writeMessage},
+    SysVarRange{3007, 3007, readZero, nullptr}, // mirror image: none
+    SysVarRange{3011, 3011, readField<&mbrt_ctx::date>, nullptr},
+    SysVarRange{3012, 3012, readField<&mbrt_ctx::timeOfDay>, nullptr},
+    SysVarRange{3901, 3901, readField<&mbrt_ctx::partsCount>,
+                writeField<&mbrt_ctx::partsCount>},
+    SysVarRange{3902, 3902, readField<&mbrt_ctx::partsRequired>,
+                writeField<&mbrt_ctx::partsRequired>},
+    SysVarRange{4000, 4000, readMainProgram, nullptr},
+    // Execution is sequential (Part A), so the "executing block" variables
+    // #4201.. and #4301.. read the same as #4001.. and #4101...
+    SysVarRange{4001, 4030, readModalGroup, nullptr},
+    SysVarRange{4101, 4130, readLastWord, nullptr},
+    SysVarRange{4201, 4230, readModalGroup, nullptr},
+    SysVarRange{4301, 4330, readLastWord, nullptr},
+    // Without tool compensation the block end point is the workpiece
+    // position.
+    SysVarRange{5001, 5020, readWorkPosition, nullptr},
+    SysVarRange{5021, 5040, readMachinePosition, nullptr},
+    SysVarRange{5041, 5060, readWorkPosition, nullptr},
+    SysVarRange{5061, 5120, readZero, nullptr}, // skip, tool length, servo
+    SysVarRange{5201, 5340, readG54Offset, writeG54Offset},
+    SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
+                writeG541Offset<kOffsetStride>},
+    SysVarRange{10001, 10999, readToolOffset<&ToolOffset::hWear>,
+                writeToolOffset<&ToolOffset::hWear>},
+    SysVarRange{11001, 11999, readToolOffset<&ToolOffset::hGeometry>,
+                writeToolOffset<&ToolOffset::hGeometry>},
+    SysVarRange{12001, 12999, readToolOffset<&ToolOffset::dWear>,
+                writeToolOffset<&ToolOffset::dWear>},
+    SysVarRange{13001, 13999, readToolOffset<&ToolOffset::dGeometry>,
+                writeToolOffset<&ToolOffset::dGeometry>},
+    SysVarRange{14001, 19988, readG541Offset<MBRT_MAX_AXES>,
+                writeG541Offset<MBRT_MAX_AXES>},
+};
+
+const SysVarRange* findSystemVariable(long n) {
+  const auto it =
+      std::upper_bound(kSystemVariables.begin(), kSystemVariables.end(), n,
+                       [](long number, const SysVarRange& range) {
+                         return number < range.first;
+                       });
+  if (it == kSystemVariables.begin()) {
+    return nullptr;
+  }
+  const SysVarRange& range = *std::prev(it);
+  return n <= range.last ? &range : nullptr;
+}
+
+} // namespace
+
+mbrt_status readSystemVariable(mbrt_ctx& ctx, long n, Num* out) {
+  const SysVarRange* range = findSystemVariable(n);
+  if (range == nullptr) {
+    return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  }
+  return range->read(ctx, static_cast<int>(n - range->first), out);
+}
+
+mbrt_status writeSystemVariable(mbrt_ctx& ctx, long n, Num value,
+                                const char* comment) {
+  const SysVarRange* range = findSystemVariable(n);
+  if (range == nullptr) {
+    return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  }
+  if (range->write == nullptr) {
+    return raise(ctx, AlarmId::WriteProtectedVariable, fmt::format("#{}", n));
+  }
+  return range->write(ctx, static_cast<int>(n - range->first), value, comment);
+}
+
+} // namespace mbc::rt

@@ -1,0 +1,116 @@
+// #n dispatch of the C ABI (spec §2.1, §2.2): #0, the current level's
+// locals and the common variables are handled here on the hot path; every
+// number from #1000 up goes to the system variable table (sysvars.cpp).
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include "context.h"
+#include "sysvars.h"
+
+using namespace mbc;
+using namespace mbc::rt;
+
+namespace {
+
+/// #[number] rounds half away from zero (spec §2.2). Numbers beyond any
+/// variable become -1, which fails every range check.
+long variableNumber(double number) {
+  const double value = numeric(number);
+  if (!(std::fabs(value) < 1e9)) {
+    return -1;
+  }
+  const auto whole = static_cast<long>(value);
+  if (static_cast<double>(whole) == value) {
+    return whole; // the usual case: no rounding needed
+  }
+  return static_cast<long>(roundHalfAway(value));
+}
+
+bool isLocal(long n) {
+  return n >= 1 && n <= kLocalCount;
+}
+
+bool isCommon(const mbrt_ctx& ctx, long n) {
+  if (n >= 100 && n <= 199) {
+    return true;
+  }
+  if (n >= 500 && n <= 999) {
+    return true;
+  }
+  return ctx.profile.extendedCommon && n >= 200 && n <= 499;
+}
+
+mbrt_status outOfRange(mbrt_ctx& ctx, long n) {
+  return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+} // namespace
+
+mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out) {
+  const long n = variableNumber(number);
+  if (isLocal(n)) {
+    *out = ctx->locals().values[n - 1];
+    return 0;
+  }
+  if (isCommon(*ctx, n)) {
+    *out = ctx->commons[n];
+    return 0;
+  }
+  if (n == 0) {
+    *out = vacant();
+    return 0;
+  }
+  if (n >= 1000) {
+    return readSystemVariable(*ctx, n, out);
+  }
+  return outOfRange(*ctx, n);
+}
+
+mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
+                           const char* comment) {
+  const long n = variableNumber(number);
+  if (isLocal(n)) {
+    LocalLevel& level = ctx->locals();
+    level.values[n - 1] = value;
+    level.adpMask &= ~(std::uint64_t{1} << (n - 1));
+    return 0;
+  }
+  if (isCommon(*ctx, n)) {
+    ctx->commons[n] = value;
+    return 0;
+  }
+  if (n == 0) {
+    return raise(*ctx, AlarmId::WriteProtectedVariable, "#0");
+  }
+  if (n >= 1000) {
+    return writeSystemVariable(*ctx, n, value, comment);
+  }
+  return outOfRange(*ctx, n);
+}
+
+mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
+  const long n = variableNumber(number);
+  if (isLocal(n)) {
+    const LocalLevel& level = ctx->locals();
+    const Num value = level.values[n - 1];
+    const bool fromLiteral = (level.adpMask >> (n - 1)) & 1;
+    // The argument was literal / scale with an integer literal, so this
+    // gives the literal back exactly.
+    *out = fromLiteral ? roundHalfAway(value * ctx->scale()) : value;
+    return 0;
+  }
+  return mbrt_read_var(ctx, number, out);
+}
+
+mbrt_num* mbrt_locals(mbrt_ctx* ctx) {
+  return ctx->locals().values.data();
+}
+
+int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {
+  if (!isCommon(*ctx, number)) {
+    return 0;
+  }
+  *out = ctx->commons[number];
+  return 1;
+}

@@ -1,0 +1,324 @@
+// NC blocks through the C ABI: address conversion, linear moves, units,
+// modal information, work offsets, unsupported G codes and the flow asked
+// for by M codes.
+#include "runtime_test_support.h"
+
+namespace mbc::test {
+namespace {
+
+TEST(RuntimeNcBlock, AbsoluteAndIncrementalMoves) {
+  Machine m;
+  ASSERT_EQ(m.block("G90 G00 X10. Y-1.25", 7), 0);
+  ASSERT_EQ(m.block("G91 G01 X2.5 Z-1. F200", 8), 0);
+  ASSERT_EQ(m.block("X-0.001", 9), 0);
+  ASSERT_EQ(m.json().size(), 3u);
+  EXPECT_EQ(m.json()[0],
+            "{\"motion\":\"rapid\",\"x\":10,\"y\":-1.25,\"z\":0,\"line\":7,"
+            "\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.json()[1],
+            "{\"motion\":\"linear\",\"x\":12.5,\"y\":-1.25,\"z\":-1,\"f\":200,"
+            "\"line\":8,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.motions()[2].end[0], 12.499);
+  mbrt_stats stats{};
+  mbrt_get_stats(m.ctx(), &stats);
+  EXPECT_EQ(stats.moves, 3u);
+  EXPECT_EQ(stats.blocks, 3u);
+}
+
+TEST(RuntimeNcBlock, LiteralsWithoutDecimalPointAreIncrements) {
+  Machine m;
+  ASSERT_EQ(m.block("G01 X10 Y10. F100"), 0);
+  EXPECT_EQ(m.motions()[0].end[0], 0.010);
+  EXPECT_EQ(m.motions()[0].end[1], 10.0);
+  Machine dpi(R"({"parameters": {"3401": 1}})");
+  ASSERT_EQ(dpi.block("G01 X10 F100"), 0);
+  EXPECT_EQ(dpi.motions()[0].end[0], 10.0);
+}
+
+TEST(RuntimeNcBlock, ValuesRoundHalfAwayToTheIncrement) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 X=1.2345 Y=-1.2345 Z=2.0005"), 0);
+  EXPECT_EQ(m.json()[0], "{\"motion\":\"rapid\",\"x\":1.235,\"y\":-1.235,"
+                         "\"z\":2.001,\"line\":1,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.read(5001), 1.235);
+  EXPECT_EQ(m.read(5002), -1.235);
+}
+
+TEST(RuntimeNcBlock, IncrementalMovesDoNotDrift) {
+  Machine m;
+  for (int i = 0; i < 1000; ++i) {
+    ASSERT_EQ(m.block("G91 G00 X=0.001"), 0);
+  }
+  EXPECT_EQ(m.read(5041), 1.0);
+}
+
+TEST(RuntimeNcBlock, InchUnits) {
+  Machine m(R"({"units": "inch"})");
+  ASSERT_EQ(m.block("G00 X1.23456 Y10"), 0);
+  EXPECT_EQ(m.motions()[0].decimals, 4);
+  EXPECT_EQ(m.motions()[0].end[0], 1.2346);
+  EXPECT_EQ(m.motions()[0].end[1], 0.001);
+  EXPECT_EQ(m.read(4006), 20.0);
+}
+
+TEST(RuntimeNcBlock, SwitchingUnitsConvertsThePosition) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 X25.4 Y-50.8"), 0);
+  ASSERT_EQ(m.block("G20"), 0);
+  EXPECT_EQ(m.read(4006), 20.0);
+  EXPECT_EQ(m.read(5041), 1.0);
+  EXPECT_EQ(m.read(5042), -2.0);
+  // The block's own words already read in the new unit.
+  ASSERT_EQ(m.block("G21 G91 X1."), 0);
+  EXPECT_EQ(m.read(5041), 26.4);
+}
+
+TEST(RuntimeNcBlock, FeedZeroAlarm) {
+  Machine m;
+  EXPECT_EQ(m.block("G01 X10.", 4), status(AlarmId::FeedZero));
+  EXPECT_EQ(m.report(), "test.nc:4: alarm PS0011: FEED ZERO (COMMAND FEED): "
+                        "G01 needs F greater than 0\n");
+  EXPECT_TRUE(m.motions().empty());
+  Machine rapid;
+  EXPECT_EQ(rapid.block("G00 X10."), 0);
+  EXPECT_EQ(rapid.block("G02 X0 R5. F0"), status(AlarmId::FeedZero));
+}
+
+TEST(RuntimeNcBlock, UnsupportedGCodes) {
+  Machine m;
+  EXPECT_EQ(m.block("G28 X0", 3), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
+                        "G28 (reference position return)\n");
+  for (const char* block :
+       {"G04 P100", "G41 D1", "G43 H1", "G81 Z-1. R1.", "G53 Z0",
+        "G68 X0 Y0 R45.", "G52 X0", "G16", "G92 X0", "G05.1 Q1", "G66 P9000"}) {
+    Machine u;
+    EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
+  }
+}
+
+TEST(RuntimeNcBlock, UnknownGCodes) {
+  Machine m;
+  EXPECT_EQ(m.block("G7.5", 2), status(AlarmId::ImproperGCode));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm PS0010: IMPROPER G-CODE: G7.5\n");
+  Machine n;
+  EXPECT_EQ(n.block("G100"), status(AlarmId::ImproperGCode));
+}
+
+TEST(RuntimeNcBlock, UnknownAddress) {
+  Machine m;
+  EXPECT_EQ(m.block("G00 A10."), status(AlarmId::ImproperNcAddress));
+  EXPECT_NE(m.report().find("A is not an address"), std::string::npos);
+  Machine four(R"({"axes": ["X", "Y", "Z", "A"]})");
+  EXPECT_EQ(four.block("G00 A10."), 0);
+  EXPECT_EQ(four.json()[0], "{\"motion\":\"rapid\",\"x\":0,\"y\":0,\"z\":0,"
+                            "\"a\":10,\"line\":1,\"prog\":\"O1000\"}\n");
+}
+
+TEST(RuntimeNcBlock, TooManyDigits) {
+  Machine m;
+  EXPECT_EQ(m.block("G00 X=1000000."), status(AlarmId::TooManyDigits));
+}
+
+TEST(RuntimeNcBlock, LastGCodeOfAGroupWins) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 G01 G91 G90 X1. F100"), 0);
+  EXPECT_EQ(m.motions()[0].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.read(4001), 1.0);
+  EXPECT_EQ(m.read(4003), 90.0);
+}
+
+TEST(RuntimeNcBlock, ModalInformation) {
+  Machine m;
+  EXPECT_EQ(m.read(4001), 0.0);
+  EXPECT_EQ(m.read(4002), 17.0);
+  EXPECT_EQ(m.read(4003), 90.0);
+  EXPECT_EQ(m.read(4005), 94.0);
+  EXPECT_EQ(m.read(4006), 21.0);
+  EXPECT_EQ(m.read(4007), 40.0);
+  EXPECT_EQ(m.read(4008), 49.0);
+  EXPECT_EQ(m.read(4009), 80.0);
+  EXPECT_EQ(m.read(4010), 98.0);
+  EXPECT_EQ(m.read(4012), 67.0);
+  EXPECT_EQ(m.read(4014), 54.0);
+  EXPECT_EQ(m.read(4018), 50.1);
+  EXPECT_EQ(m.read(4030), 0.0);
+  ASSERT_EQ(m.block("N20 G03 G18 G91 G99 G55 F150. S1200 T5 M3 H7 D8 B9 E4"),
+            0);
+  EXPECT_EQ(m.read(4001), 3.0);
+  EXPECT_EQ(m.read(4002), 18.0);
+  EXPECT_EQ(m.read(4003), 91.0);
+  EXPECT_EQ(m.read(4010), 99.0);
+  EXPECT_EQ(m.read(4014), 55.0);
+  EXPECT_EQ(m.read(4109), 150.0);
+  EXPECT_EQ(m.read(4119), 1200.0);
+  EXPECT_EQ(m.read(4120), 5.0);
+  EXPECT_EQ(m.read(4113), 3.0);
+  EXPECT_EQ(m.read(4111), 7.0);
+  EXPECT_EQ(m.read(4107), 8.0);
+  EXPECT_EQ(m.read(4102), 9.0);
+  EXPECT_EQ(m.read(4108), 4.0);
+  EXPECT_EQ(m.read(4114), 20.0);
+  EXPECT_EQ(m.read(4115), 1000.0);
+  EXPECT_EQ(m.read(4319), 1200.0);
+  EXPECT_EQ(m.read(4203), 91.0);
+}
+
+TEST(RuntimeNcBlock, IntegerAddressesRound) {
+  Machine m;
+  ASSERT_EQ(m.block("S=1000.5 M=3.4999999 T=-2.5"), 0);
+  EXPECT_EQ(m.read(4119), 1001.0);
+  EXPECT_EQ(m.read(4113), 3.0);
+  EXPECT_EQ(m.read(4120), -3.0);
+}
+
+TEST(RuntimeNcBlock, BlockEndAndPositions) {
+  Machine m;
+  ASSERT_EQ(m.block("G01 X10. Y20. Z-3. F100"), 0);
+  EXPECT_EQ(m.read(5001), 10.0);
+  EXPECT_EQ(m.read(5002), 20.0);
+  EXPECT_EQ(m.read(5003), -3.0);
+  EXPECT_EQ(m.read(5021), 10.0);
+  EXPECT_EQ(m.read(5043), -3.0);
+  EXPECT_EQ(m.read(5061), 0.0);
+  EXPECT_EQ(m.read(5081), 0.0);
+}
+
+TEST(RuntimeNcBlock, WorkOffsetSelection) {
+  Machine m(R"({"work_offsets": {"G55": [100, 0, -50], "EXT": [1, 2, 3]}})");
+  ASSERT_EQ(m.block("G90 G00 X10. Y10. Z0", 1), 0);
+  EXPECT_EQ(m.read(5021), 11.0); // machine = work + G54 (0) + EXT
+  ASSERT_EQ(m.block("G55", 2), 0);
+  // The machine stays where it is; its workpiece position changes.
+  EXPECT_EQ(m.read(5021), 11.0);
+  EXPECT_EQ(m.read(5041), -90.0);
+  EXPECT_EQ(m.read(5042), 10.0);
+  EXPECT_EQ(m.read(5043), 50.0);
+  ASSERT_EQ(m.block("G91 G00 X1.", 3), 0);
+  EXPECT_EQ(m.json()[1], "{\"motion\":\"rapid\",\"x\":-89,\"y\":10,\"z\":50,"
+                         "\"line\":3,\"prog\":\"O1000\"}\n");
+  ASSERT_EQ(m.block("G90 G00 X0 Y0 Z0", 4), 0);
+  EXPECT_EQ(m.read(5021), 101.0);
+  EXPECT_EQ(m.read(5022), 2.0);
+  EXPECT_EQ(m.read(5023), -47.0);
+}
+
+TEST(RuntimeNcBlock, WritingTheActiveOffsetMovesTheWorkpiecePosition) {
+  Machine m;
+  ASSERT_EQ(m.block("G55 G00 X10."), 0);
+  ASSERT_EQ(m.write(5241, 4.0), 0); // G55 X
+  EXPECT_EQ(m.read(5021), 10.0);
+  EXPECT_EQ(m.read(5041), 6.0);
+  ASSERT_EQ(m.write(5221, 4.0), 0); // G54 X: not active
+  EXPECT_EQ(m.read(5041), 6.0);
+}
+
+TEST(RuntimeNcBlock, AdditionalWorkOffsets) {
+  Machine m(R"({"work_offsets": {"G54.1P7": [5, 0, 0]}})");
+  ASSERT_EQ(m.block("G54.1 P7 G00 X1."), 0);
+  EXPECT_EQ(m.read(4014), 54.1);
+  EXPECT_EQ(m.read(4130), 7.0);
+  EXPECT_EQ(m.read(5021), 6.0);
+  ASSERT_EQ(m.block("G54.1"), 0); // no P: P1
+  EXPECT_EQ(m.read(4130), 1.0);
+  EXPECT_EQ(m.read(5041), 6.0);
+  Machine n;
+  EXPECT_EQ(n.block("G54.1 P301"), status(AlarmId::ImproperNcAddress));
+}
+
+TEST(RuntimeNcBlock, SubprogramCallFlow) {
+  Machine m;
+  ASSERT_EQ(m.block("M98 P1234 L3"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL_SUB);
+  EXPECT_EQ(m.flow().program, 1234);
+  EXPECT_EQ(m.flow().repeat, 3);
+  ASSERT_EQ(m.block("M98 P50010"), 0);
+  EXPECT_EQ(m.flow().program, 10);
+  EXPECT_EQ(m.flow().repeat, 5);
+  ASSERT_EQ(m.block("M98 P2000"), 0);
+  EXPECT_EQ(m.flow().program, 2000);
+  EXPECT_EQ(m.flow().repeat, 1);
+  ASSERT_EQ(m.block("M98 P50010 L2"), 0);
+  EXPECT_EQ(m.flow().program, 50010);
+  EXPECT_EQ(m.flow().repeat, 2);
+  ASSERT_EQ(m.block("M98 P2000 L0"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_NEXT);
+  EXPECT_EQ(m.block("M98", 6), status(AlarmId::ProgramNotFound));
+  EXPECT_EQ(m.report(),
+            "test.nc:6: alarm PS0076: PROGRAM NOT FOUND: M98 without P\n");
+}
+
+TEST(RuntimeNcBlock, ReturnAndEndFlow) {
+  Machine m;
+  ASSERT_EQ(m.block("M99"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_RETURN);
+  EXPECT_EQ(m.flow().has_seq, 0);
+  ASSERT_EQ(m.block("M99 P20"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_RETURN);
+  EXPECT_EQ(m.flow().has_seq, 1);
+  EXPECT_EQ(m.flow().seq, 20.0);
+  ASSERT_EQ(m.block("M30"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_END);
+  EXPECT_EQ(m.flow().counts_part, 1);
+  ASSERT_EQ(m.block("M02"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_END);
+  ASSERT_EQ(m.block("G00 X1. M05"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_NEXT);
+}
+
+TEST(RuntimeNcBlock, MotionComesBeforeTheFlow) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 X5. M30"), 0);
+  EXPECT_EQ(m.motions().size(), 1u);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_END);
+}
+
+TEST(RuntimeNcBlock, ProgramStopsGoOn) {
+  Machine m;
+  ASSERT_EQ(m.block("M00", 5), 0);
+  ASSERT_EQ(m.block("M01", 6), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_NEXT);
+  EXPECT_EQ(m.messages(),
+            "test.nc:5: message: M00 program stop (the run goes on)\n"
+            "test.nc:6: message: M01 optional stop (the run goes on)\n");
+  mbrt_stats stats{};
+  mbrt_get_stats(m.ctx(), &stats);
+  EXPECT_EQ(stats.optional_stops, 2u);
+}
+
+TEST(RuntimeNcBlock, AtMostThreeMCodes) {
+  Machine m;
+  EXPECT_EQ(m.block("M03 M08 M05"), 0);
+  EXPECT_EQ(m.block("M03 M08 M05 M09"), status(AlarmId::ImproperNcAddress));
+}
+
+TEST(RuntimeNcBlock, ProgramNameOfTheCurrentLevel) {
+  Machine m;
+  ASSERT_EQ(m.callMacro("O9100", ""), 0);
+  ASSERT_EQ(m.block("G00 X1."), 0);
+  EXPECT_STREQ(m.motions()[0].program, "O9100");
+  EXPECT_EQ(m.read(4115), 9100.0);
+}
+
+TEST(RuntimeNcBlock, ExecutionLimit) {
+  Machine m;
+  mbrt_set_max_blocks(m.ctx(), 2);
+  EXPECT_EQ(m.block("G00 X1.", 1), 0);
+  EXPECT_EQ(m.block("G00 X2.", 2), 0);
+  EXPECT_EQ(m.block("G00 X3.", 3), status(AlarmId::ExecutionLimit));
+  EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0002: EXECUTION LIMIT REACHED: "
+                        "more than 2 blocks executed (--max-blocks)\n");
+}
+
+TEST(RuntimeNcBlock, AddressIncrements) {
+  Machine m;
+  EXPECT_EQ(mbrt_address_increment(m.ctx(), 'X'), 0.001);
+  EXPECT_EQ(mbrt_address_increment(m.ctx(), 'R'), 0.001);
+  EXPECT_EQ(mbrt_address_increment(m.ctx(), 'S'), 1.0);
+  EXPECT_EQ(mbrt_address_increment(m.ctx(), 'G'), 0.1);
+  Machine inch(R"({"units": "inch"})");
+  EXPECT_EQ(mbrt_address_increment(inch.ctx(), 'Y'), 0.0001);
+}
+
+} // namespace
+} // namespace mbc::test

@@ -1,0 +1,95 @@
+// The toolpath JSON line format: key order, number formatting, escaping and
+// independence from the C locale.
+#include <mbc/toolpath_json.h>
+
+#include <gtest/gtest.h>
+
+#include <clocale>
+#include <string>
+
+namespace mbc {
+namespace {
+
+mbrt_motion linearMotion() {
+  mbrt_motion m{};
+  m.kind = MBRT_MOTION_LINEAR;
+  m.axis_count = 3;
+  m.axis_names = "XYZ";
+  m.end[0] = 10.0;
+  m.end[1] = -1.25;
+  m.end[2] = 0.0;
+  m.feed = 200.0;
+  m.plane = 17;
+  m.center_axes[0] = 'X';
+  m.center_axes[1] = 'Y';
+  m.decimals = 3;
+  m.file = "a.nc";
+  m.line = 7;
+  m.program = "O1000";
+  return m;
+}
+
+TEST(ToolpathJson, LinearExample) {
+  EXPECT_EQ(toolpathJsonLine(linearMotion()),
+            "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,\"f\":200,"
+            "\"line\":7,\"prog\":\"O1000\"}\n");
+}
+
+TEST(ToolpathJson, RapidHasNoFeed) {
+  mbrt_motion m = linearMotion();
+  m.kind = MBRT_MOTION_RAPID;
+  EXPECT_EQ(toolpathJsonLine(m),
+            "{\"motion\":\"rapid\",\"x\":10,\"y\":-1.25,\"z\":0,"
+            "\"line\":7,\"prog\":\"O1000\"}\n");
+}
+
+TEST(ToolpathJson, ArcCentreKeysFollowThePlane) {
+  mbrt_motion m = linearMotion();
+  m.kind = MBRT_MOTION_CW;
+  m.plane = 18;
+  m.center_axes[0] = 'Z';
+  m.center_axes[1] = 'X';
+  m.center[0] = 2.5;
+  m.center[1] = -0.0001; // rounds to -0.000: printed as 0
+  EXPECT_EQ(toolpathJsonLine(m),
+            "{\"motion\":\"cw\",\"x\":10,\"y\":-1.25,\"z\":0,\"f\":200,"
+            "\"cz\":2.5,\"cx\":0,\"line\":7,\"prog\":\"O1000\"}\n");
+  m.kind = MBRT_MOTION_CCW;
+  EXPECT_EQ(toolpathJsonLine(m).substr(0, 18), "{\"motion\":\"ccw\",\"x");
+}
+
+TEST(ToolpathJson, NumbersAreTrimmed) {
+  mbrt_motion m = linearMotion();
+  m.end[0] = -0.0;
+  m.end[1] = 1.23456789; // 4 decimals: 1.2346
+  m.end[2] = 100.0;
+  m.decimals = 4;
+  m.feed = 0.012;
+  EXPECT_EQ(toolpathJsonLine(m),
+            "{\"motion\":\"linear\",\"x\":0,\"y\":1.2346,\"z\":100,"
+            "\"f\":0.012,\"line\":7,\"prog\":\"O1000\"}\n");
+}
+
+TEST(ToolpathJson, ProgramNamesAreEscaped) {
+  mbrt_motion m = linearMotion();
+  m.axis_count = 1;
+  m.program = "<A\"B\\>";
+  EXPECT_EQ(toolpathJsonLine(m),
+            "{\"motion\":\"linear\",\"x\":10,\"f\":200,\"line\":7,"
+            "\"prog\":\"<A\\\"B\\\\>\"}\n");
+}
+
+TEST(ToolpathJson, IgnoresTheCLocale) {
+  const std::string saved = std::setlocale(LC_ALL, nullptr);
+  if (std::setlocale(LC_ALL, "de_DE.UTF-8") == nullptr &&
+      std::setlocale(LC_ALL, "fr_FR.UTF-8") == nullptr) {
+    GTEST_SKIP() << "no locale with a decimal comma installed";
+  }
+  const std::string line = toolpathJsonLine(linearMotion());
+  std::setlocale(LC_ALL, saved.c_str());
+  EXPECT_EQ(line, "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,"
+                  "\"f\":200,\"line\":7,\"prog\":\"O1000\"}\n");
+}
+
+} // namespace
+} // namespace mbc
