@@ -1,0 +1,226 @@
+// The diagnostic registry and the clang-style renderer.
+#include "frontend/diagnostics.h"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+
+namespace mbc {
+
+namespace {
+
+struct KindRow {
+  const char* name;
+  Severity severity;
+  const char* format;
+};
+
+constexpr std::array kKinds = {
+#define DIAG(Id, Sev, Text) KindRow{#Id, Severity::Sev, Text},
+#include "frontend/diagnostic_kinds.def"
+};
+
+const char* severityText(Severity s) {
+  switch (s) {
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
+  }
+  return "error";
+}
+
+bool isContinuation(unsigned char c) {
+  return (c & 0xC0) == 0x80;
+}
+
+// Length of the valid UTF-8 sequence at line[i], or 0.
+std::size_t utf8Length(std::string_view line, std::size_t i) {
+  auto b = static_cast<unsigned char>(line[i]);
+  std::size_t n = b >= 0xF0 && b <= 0xF4 ? 4
+                  : b >= 0xE0            ? 3
+                  : b >= 0xC2            ? 2
+                                         : 0;
+  if (n == 0 || i + n > line.size()) {
+    return 0;
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    if (!isContinuation(static_cast<unsigned char>(line[i + k]))) {
+      return 0;
+    }
+  }
+  return n;
+}
+
+// The source line as shown under a diagnostic: control bytes and invalid
+// UTF-8 escaped (a NUL must not cut the output), tabs as one space, and only
+// a window around the caret of a very long line. column[i] is the display
+// column of byte i (kHidden outside the window); column[size] ends the line.
+struct ShownLine {
+  static constexpr std::size_t kHidden = static_cast<std::size_t>(-1);
+  std::string text;
+  std::vector<std::size_t> column;
+};
+
+ShownLine showLine(std::string_view line, std::size_t focus) {
+  constexpr std::size_t kMaxShown = 160, kBefore = 70;
+  std::size_t first = 0, last = line.size();
+  if (line.size() > kMaxShown) {
+    first = focus > kBefore ? focus - kBefore : 0;
+    while (first > 0 &&
+           isContinuation(static_cast<unsigned char>(line[first]))) {
+      --first;
+    }
+    last = std::min(line.size(), first + kMaxShown);
+  }
+  ShownLine s;
+  s.column.assign(line.size() + 1, ShownLine::kHidden);
+  if (first > 0) {
+    s.text = "...";
+  }
+  std::size_t width = s.text.size();
+  for (std::size_t i = first; i < last;) {
+    auto b = static_cast<unsigned char>(line[i]);
+    s.column[i] = width;
+    if (b >= 0x80) {
+      if (std::size_t n = utf8Length(line, i)) {
+        s.text.append(line.substr(i, n));
+        for (std::size_t k = 1; k < n; ++k) {
+          s.column[i + k] = width;
+        }
+        i += n;
+        ++width;
+        continue;
+      }
+    }
+    if (b == '\t') {
+      s.text += ' ';
+      ++width;
+    } else if (b < 0x20 || b >= 0x7F) {
+      s.text += fmt::format("\\x{:02x}", b);
+      width += 4;
+    } else {
+      s.text += static_cast<char>(b);
+      ++width;
+    }
+    ++i;
+  }
+  s.column[last] = width;
+  if (last < line.size()) {
+    s.text += "...";
+  }
+  return s;
+}
+
+void renderOne(const SourceManager& sm, const Diagnostic& d, std::string& out) {
+  LineCol lc = sm.lineCol(d.range.begin);
+  out += fmt::format("{}:{}:{}: {}: {}\n", sm.name(d.range.begin.file), lc.line,
+                     lc.col, severityText(d.severity), d.message);
+  std::string_view line = sm.lineText(d.range.begin);
+  auto at = std::min(static_cast<std::size_t>(lc.col - 1), line.size());
+  ShownLine shown = showLine(line, at);
+  std::size_t caretCol = shown.column[at];
+  std::size_t endByte = std::min(line.size(), at + d.range.length);
+  std::size_t endCol = shown.column[endByte] == ShownLine::kHidden
+                           ? shown.text.size()
+                           : shown.column[endByte];
+  std::string marks = "^";
+  if (endCol > caretCol + 1) {
+    marks.append(endCol - caretCol - 1, '~');
+  }
+  out +=
+      fmt::format("{}\n{}{}\n", shown.text, std::string(caretCol, ' '), marks);
+  // All fix-its of the line go on one line under the caret, clang-style.
+  std::string fix;
+  for (const FixIt& f : d.fixIts) {
+    LineCol flc = sm.lineCol(f.range.begin);
+    auto fat = std::min(static_cast<std::size_t>(flc.col - 1), line.size());
+    if (flc.line != lc.line || shown.column[fat] == ShownLine::kHidden) {
+      continue;
+    }
+    std::size_t col = shown.column[fat];
+    if (fix.size() < col) {
+      fix.append(col - fix.size(), ' ');
+    }
+    fix.replace(col, std::min(f.replacement.size(), fix.size() - col),
+                f.replacement);
+  }
+  if (!fix.empty()) {
+    out += fix + "\n";
+  }
+  for (const Diagnostic& n : d.notes) {
+    renderOne(sm, n, out);
+  }
+}
+
+} // namespace
+
+Severity severityOf(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].severity;
+}
+
+const char* kindName(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].name;
+}
+
+const char* formatOf(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].format;
+}
+
+Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
+                                  std::string message) {
+  Severity sev = severityOf(kind);
+  if (sev == Severity::Error) {
+    if (errors_ >= kErrorLimit) {
+      // Past the limit nothing is stored; callers may still attach fix-its.
+      overflow_ = Diagnostic{kind, sev, range, {}, {}, {}};
+      return overflow_;
+    }
+    ++errors_;
+  } else if (sev == Severity::Warning) {
+    ++warnings_;
+  }
+  diags_.push_back(Diagnostic{kind, sev, range, std::move(message), {}, {}});
+  if (errors_ == kErrorLimit && sev == Severity::Error) {
+    diags_.push_back(Diagnostic{DiagKind::TooManyErrors,
+                                Severity::Error,
+                                range,
+                                formatOf(DiagKind::TooManyErrors),
+                                {},
+                                {}});
+    return diags_[diags_.size() - 2];
+  }
+  return diags_.back();
+}
+
+std::string renderDiagnostics(const DiagnosticEngine& engine) {
+  // Parsing and the semantic checks report in two passes; the reader wants
+  // file order.
+  std::vector<const Diagnostic*> sorted;
+  for (const Diagnostic& d : engine.diagnostics()) {
+    sorted.push_back(&d);
+  }
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const Diagnostic* a, const Diagnostic* b) {
+                     auto key = [](const Diagnostic* d) {
+                       return std::tuple(d->kind == DiagKind::TooManyErrors,
+                                         d->range.begin.file,
+                                         d->range.begin.offset);
+                     };
+                     return key(a) < key(b);
+                   });
+  std::string out;
+  for (const Diagnostic* dp : sorted) {
+    const Diagnostic& d = *dp;
+    if (d.kind == DiagKind::TooManyErrors) {
+      out += fmt::format("mbc: error: {}\n", d.message);
+      continue;
+    }
+    renderOne(engine.sources(), d, out);
+  }
+  return out;
+}
+
+} // namespace mbc

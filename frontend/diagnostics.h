@@ -1,0 +1,87 @@
+// Diagnostics: the engine collects messages by kind (diagnostic_kinds.def),
+// with notes and fix-its; the printer renders them clang-style.
+#pragma once
+
+#include "frontend/source.h"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+namespace mbc {
+
+enum class DiagKind {
+#define DIAG(Id, Severity, Text) Id,
+#include "frontend/diagnostic_kinds.def"
+};
+
+enum class Severity { Error, Warning, Note };
+
+struct FixIt {
+  SourceRange range; // text to replace (length 0: insert at range.begin)
+  std::string replacement;
+};
+
+struct Diagnostic {
+  DiagKind kind;
+  Severity severity;
+  SourceRange range;
+  std::string message;
+  std::vector<FixIt> fixIts;
+  std::vector<Diagnostic> notes;
+};
+
+Severity severityOf(DiagKind kind);
+const char* kindName(DiagKind kind);
+const char* formatOf(DiagKind kind);
+
+class DiagnosticEngine {
+public:
+  explicit DiagnosticEngine(const SourceManager& sources) : sources_(sources) {}
+
+  template <typename... Args>
+  Diagnostic& report(DiagKind kind, SourceRange range, const Args&... args) {
+    return add(kind, range,
+               fmt::vformat(formatOf(kind), fmt::make_format_args(args...)));
+  }
+
+  /// Attaches a note to the last diagnostic.
+  template <typename... Args>
+  void note(DiagKind kind, SourceRange range, const Args&... args) {
+    Diagnostic n{
+        kind,  Severity::Note,
+        range, fmt::vformat(formatOf(kind), fmt::make_format_args(args...)),
+        {},    {}};
+    if (!diags_.empty()) {
+      diags_.back().notes.push_back(std::move(n));
+    }
+  }
+
+  int errorCount() const { return errors_; }
+
+  int warningCount() const { return warnings_; }
+
+  bool tooManyErrors() const { return errors_ >= kErrorLimit; }
+
+  const std::vector<Diagnostic>& diagnostics() const { return diags_; }
+
+  const SourceManager& sources() const { return sources_; }
+
+  static constexpr int kErrorLimit = 50;
+
+private:
+  Diagnostic& add(DiagKind kind, SourceRange range, std::string message);
+
+  const SourceManager& sources_;
+  std::vector<Diagnostic> diags_;
+  Diagnostic overflow_{};
+  int errors_ = 0;
+  int warnings_ = 0;
+};
+
+/// clang-style text of every diagnostic: "file:line:col: error: message",
+/// the source line, a caret under the range, and fix-it lines.
+std::string renderDiagnostics(const DiagnosticEngine& engine);
+
+} // namespace mbc

@@ -1,0 +1,415 @@
+// The Macro B lexer (see lexer.h for the rules it follows).
+#include "frontend/lexer.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace mbc {
+
+namespace {
+
+struct WordRow {
+  std::string_view spelling;
+  bool isFunction;
+  Keyword keyword;
+  Builtin builtin;
+};
+
+constexpr WordRow kw(std::string_view s, Keyword k) {
+  return {s, false, k, Builtin::Sin};
+}
+
+constexpr WordRow fn(std::string_view s, Builtin b) {
+  return {s, true, Keyword::If, b};
+}
+
+// ATAN maps to the one-argument builtin; the parser turns the two-argument
+// forms into Atan2.
+constexpr std::array kWords = {
+    kw("IF", Keyword::If),       kw("GOTO", Keyword::Goto),
+    kw("THEN", Keyword::Then),   kw("WHILE", Keyword::While),
+    kw("DO", Keyword::Do),       kw("END", Keyword::End),
+    kw("EQ", Keyword::Eq),       kw("NE", Keyword::Ne),
+    kw("GT", Keyword::Gt),       kw("GE", Keyword::Ge),
+    kw("LT", Keyword::Lt),       kw("LE", Keyword::Le),
+    kw("AND", Keyword::And),     kw("OR", Keyword::Or),
+    kw("XOR", Keyword::Xor),     kw("MOD", Keyword::Mod),
+    kw("DPRNT", Keyword::Dprnt), kw("BPRNT", Keyword::Bprnt),
+    kw("POPEN", Keyword::Popen), kw("PCLOS", Keyword::Pclos),
+    fn("SIN", Builtin::Sin),     fn("COS", Builtin::Cos),
+    fn("TAN", Builtin::Tan),     fn("ASIN", Builtin::Asin),
+    fn("ACOS", Builtin::Acos),   fn("ATAN", Builtin::Atan),
+    fn("SQRT", Builtin::Sqrt),   fn("ABS", Builtin::Abs),
+    fn("ROUND", Builtin::Round), fn("FIX", Builtin::Fix),
+    fn("FUP", Builtin::Fup),     fn("LN", Builtin::Ln),
+    fn("EXP", Builtin::Exp),     fn("POW", Builtin::Pow),
+    fn("ADP", Builtin::Adp),     fn("BIN", Builtin::Bin),
+    fn("BCD", Builtin::Bcd),
+};
+
+bool isLetter(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+bool isBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+} // namespace
+
+const char* keywordName(Keyword k) {
+  for (const WordRow& w : kWords) {
+    if (!w.isFunction && w.keyword == k) {
+      return w.spelling.data();
+    }
+  }
+  return "?";
+}
+
+std::string describe(const Token& t) {
+  switch (t.kind) {
+    case Tok::EndOfBlock:
+      return "the end of the block";
+    case Tok::EndOfFile:
+      return "the end of the file";
+    case Tok::Percent:
+      return "'%'";
+    case Tok::Number:
+      return "number";
+    case Tok::Letter:
+      return "address " + t.text;
+    case Tok::ProgramName:
+      return "program name";
+    case Tok::Comment:
+      return "comment";
+    case Tok::Keyword:
+    case Tok::Function:
+      return "'" + t.text + "'";
+    case Tok::PrintText:
+      return "text";
+    case Tok::Invalid:
+      return "invalid character";
+    default:
+      return "'" + t.text + "'";
+  }
+}
+
+Lexer::Lexer(const SourceManager& sources, std::uint32_t file,
+             DiagnosticEngine& diags)
+    : sources_(sources), file_(file), diags_(diags), text_(sources.text(file)) {
+  findTextBounds();
+}
+
+// A file that opens with '%' has a leader before it and ends at the next '%';
+// a file that does not ends at its first '%' (spec §1.1).
+void Lexer::findTextBounds() {
+  auto size = static_cast<std::uint32_t>(text_.size());
+  std::uint32_t i = 0;
+  while (i < size && (isBlank(text_[i]) || text_[i] == '\n')) {
+    ++i;
+  }
+  pos_ = 0;
+  if (i < size && text_[i] == '%') {
+    pos_ = i + 1;
+    while (pos_ < size && text_[pos_] != '\n') {
+      ++pos_;
+    }
+  }
+  std::size_t close = text_.find('%', pos_);
+  end_ = close == std::string_view::npos ? size
+                                         : static_cast<std::uint32_t>(close);
+  if (close == std::string_view::npos) {
+    return;
+  }
+  for (std::uint32_t j = end_ + 1; j < size; ++j) {
+    char c = text_[j];
+    if (!isBlank(c) && c != '\n' && c != '%') {
+      diags_.report(DiagKind::TextAfterPercent, {{file_, end_}, 1});
+      break;
+    }
+  }
+}
+
+char Lexer::upperAt(std::uint32_t i) {
+  char c = text_[i];
+  if (c >= 'a' && c <= 'z') {
+    if (!warnedLowerCase_) {
+      warnedLowerCase_ = true;
+      diags_.report(DiagKind::LowerCase, {{file_, i}, 1});
+    }
+    return static_cast<char>(c - 'a' + 'A');
+  }
+  return c;
+}
+
+Token Lexer::make(Tok kind, std::uint32_t begin) {
+  Token t;
+  t.kind = kind;
+  t.range = {{file_, begin}, pos_ - begin};
+  t.text = std::string(text_.substr(begin, pos_ - begin));
+  return t;
+}
+
+// CR is ignored before LF; a CR that ends a line on its own (old Mac files)
+// ends the block like LF.
+bool Lexer::isLoneCr(std::uint32_t i) const {
+  return text_[i] == '\r' && (i + 1 >= end_ || text_[i + 1] != '\n');
+}
+
+void Lexer::skipSpaces() {
+  while (pos_ < end_ && isBlank(text_[pos_]) && !isLoneCr(pos_)) {
+    ++pos_;
+  }
+}
+
+void Lexer::skipBlock() {
+  while (pos_ < end_ && text_[pos_] != '\n' && !isLoneCr(pos_)) {
+    ++pos_;
+  }
+}
+
+Token Lexer::next() {
+  skipSpaces();
+  std::uint32_t begin = pos_;
+  if (pos_ >= end_) {
+    Token t;
+    t.kind = Tok::EndOfFile;
+    t.range = {{file_, end_}, 0};
+    return t;
+  }
+  char c = text_[pos_];
+  if (c == '\n' || isLoneCr(pos_)) {
+    ++pos_;
+    return make(Tok::EndOfBlock, begin);
+  }
+  if (c == ';') {
+    ++pos_;
+    Token t = make(Tok::EndOfBlock, begin);
+    skipBlock();
+    if (pos_ < end_) {
+      ++pos_;
+    }
+    return t;
+  }
+  if (isDigit(c) || c == '.') {
+    return lexNumber(begin);
+  }
+  if (isLetter(c)) {
+    return lexWord(begin);
+  }
+  if (c == '(') {
+    return lexComment(begin);
+  }
+  if (static_cast<unsigned char>(c) >= 0x80) {
+    return lexNonAscii(begin);
+  }
+  return lexSpecial(begin);
+}
+
+Token Lexer::lexSpecial(std::uint32_t begin) {
+  char c = text_[pos_++];
+  switch (c) {
+    case '#':
+      return make(Tok::Hash, begin);
+    case '[':
+      return make(Tok::LBracket, begin);
+    case ']':
+      return make(Tok::RBracket, begin);
+    case ',':
+      return make(Tok::Comma, begin);
+    case '+':
+      return make(Tok::Plus, begin);
+    case '-':
+      return make(Tok::Minus, begin);
+    case '*':
+      return make(Tok::Star, begin);
+    case '/':
+      return make(Tok::Slash, begin);
+    case '=':
+      return make(Tok::Equal, begin);
+    case '<': {
+      while (pos_ < end_ && text_[pos_] != '>' && text_[pos_] != '\n') {
+        ++pos_;
+      }
+      if (pos_ < end_ && text_[pos_] == '>') {
+        ++pos_;
+        Token t = make(Tok::ProgramName, begin);
+        for (char& ch : t.text) {
+          ch = (ch >= 'a' && ch <= 'z') ? static_cast<char>(ch - 32) : ch;
+        }
+        return t;
+      }
+      pos_ = begin + 1;
+      break;
+    }
+    default:
+      break;
+  }
+  Token t = make(Tok::Invalid, begin);
+  std::string shown =
+      (c >= 0x20 && c < 0x7f)
+          ? std::string(1, c)
+          : fmt::format("\\x{:02x}", static_cast<unsigned char>(c));
+  diags_.report(DiagKind::InvalidCharacter, t.range, shown);
+  return t;
+}
+
+// UTF-8 dashes come from word processors; they get a fix-it and are read as
+// '-' so that the rest of the block is still checked.
+Token Lexer::lexNonAscii(std::uint32_t begin) {
+  static constexpr std::array<std::string_view, 4> kDashes = {
+      "\xE2\x80\x93", "\xE2\x80\x94", "\xE2\x88\x92", "\xE2\x80\x92"};
+  for (std::string_view d : kDashes) {
+    if (text_.substr(begin, d.size()) == d) {
+      pos_ = begin + static_cast<std::uint32_t>(d.size());
+      Token t = make(Tok::Minus, begin);
+      diags_.report(DiagKind::UnicodeDash, t.range, std::string(d))
+          .fixIts.push_back({t.range, "-"});
+      return t;
+    }
+  }
+  ++pos_;
+  while (pos_ < end_ &&
+         (static_cast<unsigned char>(text_[pos_]) & 0xC0) == 0x80) {
+    ++pos_;
+  }
+  Token t = make(Tok::Invalid, begin);
+  diags_.report(DiagKind::InvalidCharacter, t.range, t.text);
+  return t;
+}
+
+Token Lexer::lexNumber(std::uint32_t begin) {
+  std::string digits;
+  bool dot = false;
+  std::uint32_t last = pos_;
+  while (pos_ < end_) {
+    char c = text_[pos_];
+    if (isDigit(c) || (c == '.' && !dot)) {
+      dot = dot || c == '.';
+      digits += c;
+      last = ++pos_;
+      continue;
+    }
+    // Spaces are ignored inside a number too ("X1 00." is X100.).
+    std::uint32_t look = pos_;
+    while (look < end_ && (text_[look] == ' ' || text_[look] == '\t')) {
+      ++look;
+    }
+    if (look > pos_ && look < end_ &&
+        (isDigit(text_[look]) || (text_[look] == '.' && !dot))) {
+      pos_ = look;
+      continue;
+    }
+    break;
+  }
+  pos_ = last;
+  Token t = make(Tok::Number, begin);
+  // "1.5E3" would read as 1.5 and an address E: say what is wrong instead.
+  if (pos_ + 1 < end_ && (text_[pos_] == 'E' || text_[pos_] == 'e') &&
+      (isDigit(text_[pos_ + 1]) ||
+       ((text_[pos_ + 1] == '-' || text_[pos_ + 1] == '+') && pos_ + 2 < end_ &&
+        isDigit(text_[pos_ + 2])))) {
+    diags_.report(DiagKind::ExponentNotation,
+                  {{file_, begin}, pos_ + 1 - begin});
+  }
+  t.hasDecimal = dot;
+  if (digits == ".") {
+    digits = "0";
+  }
+  double v = 0;
+  auto res = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (res.ec == std::errc::result_out_of_range || !std::isfinite(v) ||
+      v > 1e300) {
+    diags_.report(DiagKind::NumberTooLarge, t.range);
+    v = 0;
+  }
+  t.number = v;
+  return t;
+}
+
+Token Lexer::lexWord(std::uint32_t begin) {
+  std::string run;
+  for (std::uint32_t i = pos_; i < end_ && run.size() < 6 && isLetter(text_[i]);
+       ++i) {
+    run += upperAt(i);
+  }
+  const WordRow* best = nullptr;
+  for (const WordRow& w : kWords) {
+    if (run.starts_with(w.spelling) &&
+        (!best || w.spelling.size() > best->spelling.size())) {
+      best = &w;
+    }
+  }
+  if (!best) {
+    ++pos_;
+    Token t = make(Tok::Letter, begin);
+    t.text = std::string(1, run[0]);
+    return t;
+  }
+  pos_ += static_cast<std::uint32_t>(best->spelling.size());
+  Token t = make(best->isFunction ? Tok::Function : Tok::Keyword, begin);
+  t.text = std::string(best->spelling);
+  t.keyword = best->keyword;
+  t.builtin = best->builtin;
+  return t;
+}
+
+Token Lexer::lexComment(std::uint32_t begin) {
+  ++pos_;
+  while (pos_ < end_ && text_[pos_] != ')' && text_[pos_] != '\n') {
+    ++pos_;
+  }
+  if (pos_ < end_ && text_[pos_] == ')') {
+    ++pos_;
+    Token t = make(Tok::Comment, begin);
+    t.text = t.text.substr(1, t.text.size() - 2);
+    return t;
+  }
+  std::uint32_t stop = pos_;
+  while (stop > begin && isBlank(text_[stop - 1])) {
+    --stop;
+  }
+  Token t = make(Tok::Comment, begin);
+  t.text = std::string(text_.substr(begin + 1, stop - begin - 1));
+  diags_.report(DiagKind::UnterminatedComment, {{file_, begin}, 1})
+      .fixIts.push_back({{{file_, stop}, 0}, ")"});
+  return t;
+}
+
+Token Lexer::nextPrint() {
+  skipSpaces();
+  std::uint32_t begin = pos_;
+  std::string text;
+  while (pos_ < end_) {
+    char c = text_[pos_];
+    if (c == '#' || c == '[' || c == ']' || c == '\n' || c == ';' || c == '(' ||
+        static_cast<unsigned char>(c) >= 0x80 ||
+        static_cast<unsigned char>(c) < 0x20) {
+      if (isBlank(c)) {
+        ++pos_;
+        continue;
+      }
+      break;
+    }
+    // Spaces are not printed: the control ignores them; '*' prints a space.
+    if (c != ' ') {
+      text += upperAt(pos_);
+    }
+    ++pos_;
+  }
+  if (text.empty()) {
+    pos_ = begin;
+    return next();
+  }
+  Token t = make(Tok::PrintText, begin);
+  t.text = text;
+  return t;
+}
+
+} // namespace mbc

@@ -1,0 +1,247 @@
+// Programs and blocks: '%', O numbers and <NAME> headers, '/' block skip, N
+// sequence numbers, and the end-of-block resynchronisation after an error.
+#include "frontend/parser.h"
+
+#include <cmath>
+
+namespace mbc {
+
+void parseFile(const SourceManager& sources, std::uint32_t file,
+               DiagnosticEngine& diags, const ParseOptions& options,
+               Unit& unit) {
+  detail::Parser(sources, file, diags, options, unit).run();
+}
+
+namespace detail {
+
+Parser::Parser(const SourceManager& sources, std::uint32_t file,
+               DiagnosticEngine& diags, const ParseOptions& options, Unit& unit)
+    : sources_(sources), file_(file), diags_(diags), options_(options),
+      unit_(unit), lexer_(sources, file, diags) {
+}
+
+void Parser::advance() {
+  for (;;) {
+    if (!ahead_.empty()) {
+      tok_ = std::move(ahead_.front());
+      ahead_.pop_front();
+    } else {
+      tok_ = lexer_.next();
+    }
+    if (tok_.kind != Tok::Comment) {
+      return;
+    }
+    blockComments_.push_back(tok_);
+  }
+}
+
+const Token& Parser::peek() {
+  while (ahead_.empty() || ahead_.back().kind == Tok::Comment) {
+    Token t = lexer_.next();
+    if (t.kind == Tok::Comment) {
+      blockComments_.push_back(t);
+      continue;
+    }
+    ahead_.push_back(std::move(t));
+  }
+  return ahead_.back();
+}
+
+void Parser::fail() {
+  throw BlockError{};
+}
+
+// The lexer already reported an invalid character; saying "unexpected" about
+// it again would only repeat the same error.
+void Parser::unexpected(DiagKind kind) {
+  if (tok_.kind != Tok::Invalid) {
+    diags_.report(kind, tok_.range, describe(tok_));
+  }
+  fail();
+}
+
+void Parser::run() {
+  advance();
+  while (tok_.kind != Tok::EndOfFile && !diags_.tooManyErrors()) {
+    parseBlock();
+  }
+}
+
+Program& Parser::currentProgram(SourceLoc at) {
+  if (program_ < 0) {
+    // Blocks before any O number form the anonymous main program.
+    Program p;
+    p.name = "MAIN";
+    p.range = {at, 0};
+    p.file = file_;
+    for (const Program& other : unit_.programs) {
+      if (other.name == p.name) {
+        diags_.report(DiagKind::DuplicateProgram, p.range, p.name);
+      }
+    }
+    unit_.programs.push_back(std::move(p));
+    program_ = static_cast<int>(unit_.programs.size() - 1);
+  }
+  return unit_.programs[program_];
+}
+
+// program-header := ('O' number | '<' NAME '>') comment* EOB
+bool Parser::parseProgramHeader() {
+  Token start = tok_;
+  Program p;
+  p.file = file_;
+  if (tok_.kind == Tok::ProgramName) {
+    p.name = tok_.text;
+    advance();
+  } else {
+    advance();
+    if (tok_.kind == Tok::Hash) {
+      diags_.report(DiagKind::VariableNotAllowedHere, tok_.range, "O");
+      fail();
+    }
+    if (tok_.kind != Tok::Number || tok_.hasDecimal) {
+      diags_.report(DiagKind::ExpectedProgramNumber, start.range);
+      fail();
+    }
+    if (tok_.number < 1 || tok_.number > 9999) {
+      diags_.report(DiagKind::ProgramNumberRange, tok_.range, tok_.text);
+      fail();
+    }
+    p.number = static_cast<int>(tok_.number);
+    p.name = fmt::format("O{:04d}", p.number);
+    advance();
+  }
+  p.range = {start.range.begin,
+             tok_.range.begin.offset - start.range.begin.offset};
+  for (const Program& other : unit_.programs) {
+    if (other.name == p.name) {
+      diags_.report(DiagKind::DuplicateProgram, start.range, p.name);
+      diags_.note(DiagKind::ProgramDefinedHere, other.range, p.name);
+    }
+  }
+  unit_.programs.push_back(std::move(p));
+  program_ = static_cast<int>(unit_.programs.size() - 1);
+  if (tok_.kind != Tok::EndOfBlock && tok_.kind != Tok::EndOfFile) {
+    unexpected(DiagKind::ExpectedEndOfBlock);
+  }
+  return true;
+}
+
+// block := ['/' [digit]] ['N' number] statement comment* EOB
+void Parser::parseBlock() {
+  blockComments_.clear();
+  reportedDepth_ = false;
+  operands_ = 0;
+  Block b;
+  b.range.begin = tok_.range.begin;
+  b.line = sources_.lineCol(tok_.range.begin).line;
+  try {
+    if ((tok_.kind == Tok::Letter && tok_.text == "O") ||
+        tok_.kind == Tok::ProgramName) {
+      parseProgramHeader();
+      advance();
+      return;
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+      if (tok_.kind == Tok::Slash && b.skipLevel == 0) {
+        advance();
+        b.skipLevel = 1;
+        if (tok_.kind == Tok::Number && !tok_.hasDecimal && tok_.number >= 1 &&
+            tok_.number <= 9) {
+          b.skipLevel = static_cast<int>(tok_.number);
+          advance();
+        } else if (tok_.kind == Tok::Hash) {
+          diags_.report(DiagKind::VariableNotAllowedHere, tok_.range, "/");
+          fail();
+        }
+      }
+      if (tok_.kind == Tok::Letter && tok_.text == "N" && b.seq < 0) {
+        Token n = tok_;
+        advance();
+        if (tok_.kind == Tok::Hash) {
+          diags_.report(DiagKind::VariableNotAllowedHere, tok_.range, "N");
+          fail();
+        }
+        if (tok_.kind != Tok::Number || tok_.hasDecimal || tok_.number < 1 ||
+            tok_.number > 99999) {
+          diags_.report(DiagKind::ExpectedSequenceNumber, n.range);
+          fail();
+        }
+        b.seq = static_cast<int>(tok_.number);
+        advance();
+      }
+    }
+    parseStatement(b);
+    expectEndOfBlock(b.stmt);
+  } catch (const BlockError&) {
+    resynchronise();
+    return;
+  }
+  b.range.length = tok_.range.begin.offset - b.range.begin.offset;
+  if (b.stmt.kind != StmtKind::Empty || b.seq >= 0) {
+    currentProgram(b.range.begin).blocks.push_back(std::move(b));
+  }
+  advance();
+}
+
+std::string Parser::sourceText(SourceRange r) const {
+  return std::string(
+      sources_.text(r.begin.file).substr(r.begin.offset, r.length));
+}
+
+// `COS(#1)` or `X(#1+5.)`: the '(' was read as a comment, which is the real
+// mistake; say so.
+void Parser::noteParenthesis(const Token& after) {
+  if (blockComments_.empty()) {
+    return;
+  }
+  const Token& c = blockComments_.back();
+  std::uint32_t end = after.range.begin.offset + after.range.length;
+  if (c.range.begin.offset >= end &&
+      c.range.begin.offset <= tok_.range.begin.offset) {
+    diags_.note(DiagKind::ParenthesisIsComment, c.range);
+  }
+}
+
+// After an error: continue with the first token of the next block, wherever
+// the lexer stands (the end of the block may already be in tok_ or ahead_).
+void Parser::resynchronise() {
+  while (tok_.kind != Tok::EndOfBlock && tok_.kind != Tok::EndOfFile) {
+    if (ahead_.empty()) {
+      lexer_.skipBlock();
+    }
+    advance();
+  }
+  if (tok_.kind == Tok::EndOfBlock) {
+    advance();
+  }
+}
+
+void Parser::expectEndOfBlock(const Stmt& s) {
+  if (tok_.kind == Tok::EndOfBlock || tok_.kind == Tok::EndOfFile) {
+    return;
+  }
+  bool macroNext = tok_.kind == Tok::Hash || (tok_.kind == Tok::Keyword &&
+                                              (tok_.keyword == Keyword::If ||
+                                               tok_.keyword == Keyword::While ||
+                                               tok_.keyword == Keyword::Goto));
+  bool ncNext = tok_.kind == Tok::Letter;
+  bool isNc = s.kind == StmtKind::Nc || s.kind == StmtKind::MacroCall;
+  if ((isNc && macroNext) || (!isNc && s.kind != StmtKind::Empty && ncNext)) {
+    diags_.report(DiagKind::MixedNcAndMacro, tok_.range);
+    fail();
+  }
+  unexpected(DiagKind::ExpectedEndOfBlock);
+}
+
+std::string Parser::messageAfter(std::uint32_t offset) const {
+  for (const Token& c : blockComments_) {
+    if (c.range.begin.offset > offset) {
+      return c.text;
+    }
+  }
+  return {};
+}
+
+} // namespace detail
+} // namespace mbc

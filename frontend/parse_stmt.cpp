@@ -1,0 +1,450 @@
+// Statements: assignments, IF/GOTO/THEN, WHILE/DO/END, NC words and G65
+// calls. Macro B's classic mistakes get a diagnostic with the fix.
+#include "frontend/parser.h"
+
+#include <cmath>
+
+namespace mbc::detail {
+
+// Specification I argument letters (spec §5.2): letter -> local variable.
+int argumentVariable(char letter) {
+  static constexpr int kMap[26] = {1,  2,  3,  7,  8,  9,  0,  11, 4,
+                                   5,  6,  0,  13, 0,  0,  0,  17, 18,
+                                   19, 20, 21, 22, 23, 24, 25, 26};
+  return (letter >= 'A' && letter <= 'Z') ? kMap[letter - 'A'] : 0;
+}
+
+namespace {
+
+// Addresses whose whole-number literals are in least-increment units.
+bool isLengthAddress(char c) {
+  return std::string_view("XYZABCUVWIJKRQ").find(c) != std::string_view::npos;
+}
+
+} // namespace
+
+void Parser::parseStatement(Block& b) {
+  Stmt& s = b.stmt;
+  s.range.begin = tok_.range.begin;
+  switch (tok_.kind) {
+    case Tok::EndOfBlock:
+    case Tok::EndOfFile:
+      return;
+    case Tok::Hash:
+      parseAssign(s);
+      return;
+    case Tok::Letter:
+      if (tok_.text == "O" || tok_.text == "N") {
+        misplacedHeader();
+      }
+      parseWords(s);
+      return;
+    case Tok::Keyword:
+      break;
+    default:
+      unexpected(DiagKind::UnexpectedToken);
+  }
+  switch (tok_.keyword) {
+    case Keyword::If:
+      parseIf(s);
+      return;
+    case Keyword::Goto:
+      parseGoto(s);
+      return;
+    case Keyword::While:
+      parseWhile(s);
+      return;
+    case Keyword::Do:
+      parseDoEnd(s, false);
+      return;
+    case Keyword::End:
+      parseDoEnd(s, true);
+      return;
+    case Keyword::Dprnt:
+    case Keyword::Bprnt:
+      parsePrint(s);
+      return;
+    case Keyword::Popen:
+    case Keyword::Pclos:
+      s.kind =
+          tok_.keyword == Keyword::Popen ? StmtKind::Popen : StmtKind::Pclos;
+      advance();
+      return;
+    default:
+      unexpected(DiagKind::UnexpectedToken);
+  }
+}
+
+void Parser::misplacedHeader() {
+  diags_.report(tok_.text == "O" ? DiagKind::OInsideBlock
+                                 : DiagKind::SequenceInsideBlock,
+                tok_.range);
+  fail();
+}
+
+// assignment := '#' (number | '[' expr ']') '=' expr
+void Parser::parseAssign(Stmt& s) {
+  Token hash = tok_;
+  ExprPtr target = parseVariable(0);
+  if (s.kind != StmtKind::IfThen) {
+    s.kind = StmtKind::Assign;
+  }
+  s.target.range = target->range;
+  if (target->kind == ExprKind::Var) {
+    s.target.number = target->var;
+  } else {
+    s.target.index = std::move(target->args[0]);
+  }
+  if (tok_.kind != Tok::Equal) {
+    diags_.report(DiagKind::ExpectedEqual, tok_.range);
+    fail();
+  }
+  std::uint32_t eq = tok_.range.begin.offset;
+  advance();
+  s.value = parseExpr(0);
+  requireNumber(*s.value);
+  s.message = messageAfter(eq);
+  (void)hash;
+}
+
+// Reads '[' cond ']' and, for the seed-003 form `[a] OR [b]`, the rest of an
+// unbracketed compound condition, with a fix-it adding the outer brackets.
+ExprPtr Parser::parseBracketCondition(const Token& keyword) {
+  if (tok_.kind != Tok::LBracket) {
+    diags_.report(DiagKind::IfNeedsBracket, tok_.range, keyword.text)
+        .fixIts.push_back({{tok_.range.begin, 0}, "["});
+    fail();
+  }
+  Token first = tok_;
+  ExprPtr cond = parsePrimary(0);
+  Token lastClose = tok_;
+  bool compound = false;
+  while (tok_.kind == Tok::Keyword &&
+         (tok_.keyword == Keyword::And || tok_.keyword == Keyword::Or ||
+          tok_.keyword == Keyword::Xor)) {
+    compound = true;
+    Token op = tok_;
+    advance();
+    if (tok_.kind != Tok::LBracket) {
+      unexpected(DiagKind::ExpectedExpression);
+    }
+    ExprPtr rhs = parsePrimary(1);
+    cond = makeBinary(op, std::move(cond), std::move(rhs));
+    lastClose = tok_;
+  }
+  if (compound) {
+    SourceRange span{first.range.begin,
+                     lastClose.range.begin.offset - first.range.begin.offset};
+    while (span.length > 0 &&
+           sources_.text(file_)[span.begin.offset + span.length - 1] == ' ') {
+      --span.length;
+    }
+    auto& d = diags_.report(DiagKind::CompoundNeedsBrackets, span);
+    d.fixIts.push_back({span, fmt::format("[{}]", sourceText(span))});
+  }
+  if (!cond->isCondition()) {
+    diags_.report(DiagKind::NumberAsCondition, cond->range);
+    fail();
+  }
+  return cond;
+}
+
+// if := 'IF' '[' cond ']' ('GOTO' expr | 'THEN' assignment)
+void Parser::parseIf(Stmt& s) {
+  Token kw = tok_;
+  advance();
+  s.cond = parseBracketCondition(kw);
+  if (isKeyword(Keyword::Goto)) {
+    s.kind = StmtKind::IfGoto;
+    advance();
+    s.value = parseSum(0, true);
+    requireNumber(*s.value);
+    return;
+  }
+  if (isKeyword(Keyword::Then)) {
+    Token then = tok_;
+    advance();
+    if (tok_.kind == Tok::Hash) {
+      s.kind = StmtKind::IfThen;
+      parseAssign(s);
+      return;
+    }
+    diags_.report(DiagKind::ThenNeedsMacroStatement,
+                  tok_.kind == Tok::EndOfBlock ? then.range : tok_.range);
+    if (tok_.kind == Tok::Letter) {
+      diags_.note(DiagKind::ThenNcNote, tok_.range);
+    }
+    fail();
+  }
+  diags_.report(DiagKind::ExpectedGotoOrThen, tok_.range);
+  fail();
+}
+
+// goto := 'GOTO' expr
+void Parser::parseGoto(Stmt& s) {
+  s.kind = StmtKind::Goto;
+  advance();
+  s.value = parseSum(0, true);
+  requireNumber(*s.value);
+}
+
+int Parser::parseLoopNumber(const Token& keyword) {
+  if (tok_.kind != Tok::Number || tok_.hasDecimal) {
+    diags_.report(DiagKind::LoopNumberMissing, tok_.range, keyword.text);
+    fail();
+  }
+  int id = tok_.number > 99 ? 99 : static_cast<int>(tok_.number);
+  if (id < 1 || id > 3) {
+    diags_.report(DiagKind::LoopNumberRange, tok_.range, tok_.text);
+  }
+  advance();
+  return id;
+}
+
+// while := 'WHILE' '[' cond ']' 'DO' m
+void Parser::parseWhile(Stmt& s) {
+  Token kw = tok_;
+  advance();
+  s.cond = parseBracketCondition(kw);
+  if (!isKeyword(Keyword::Do)) {
+    diags_.report(DiagKind::ExpectedDo, tok_.range);
+    fail();
+  }
+  Token doTok = tok_;
+  advance();
+  s.kind = StmtKind::While;
+  s.loopId = parseLoopNumber(doTok);
+}
+
+// do := 'DO' m   (a loop without condition: leave it with GOTO)
+// end := 'END' m
+void Parser::parseDoEnd(Stmt& s, bool isEnd) {
+  Token kw = tok_;
+  advance();
+  s.kind = isEnd ? StmtKind::End : StmtKind::While;
+  s.loopId = parseLoopNumber(kw);
+}
+
+// word := letter (['+'|'-'] (number | '#' var | '[' expr ']'))
+Word Parser::parseWord() {
+  Word w;
+  Token letter = tok_;
+  w.letter = letter.text[0];
+  advance();
+  if (tok_.kind == Tok::Equal) {
+    // `Z = #101 + 0.03` (seed 003): the author meant Z[#101 + 0.03].
+    Token eq = tok_;
+    advance();
+    auto& d = diags_.report(DiagKind::AssignToAddress, eq.range, letter.text);
+    std::uint32_t valueStart = tok_.range.begin.offset;
+    w.value = parseExpr(0);
+    std::uint32_t valueEnd =
+        w.value->range.begin.offset + w.value->range.length;
+    SourceRange span{eq.range.begin, valueEnd - eq.range.begin.offset};
+    SourceRange value{{file_, valueStart}, valueEnd - valueStart};
+    d.fixIts.push_back({span, fmt::format("[{}]", sourceText(value))});
+    diags_.note(DiagKind::AssignToAddressNote, letter.range, letter.text);
+    return w;
+  }
+  bool negative = false;
+  Token sign = tok_;
+  if (tok_.kind == Tok::Minus || tok_.kind == Tok::Plus) {
+    negative = tok_.kind == Tok::Minus;
+    advance();
+  }
+  switch (tok_.kind) {
+    case Tok::Number: {
+      auto e = std::make_unique<Expr>();
+      e->kind = ExprKind::Number;
+      e->range = tok_.range;
+      e->number = negative && tok_.number != 0 ? -tok_.number : tok_.number;
+      e->hasDecimal = tok_.hasDecimal;
+      w.kind = tok_.hasDecimal ? WordKind::DecLiteral : WordKind::IntLiteral;
+      w.value = std::move(e);
+      advance();
+      break;
+    }
+    case Tok::Hash:
+      w.value = parseVariable(0);
+      w.bareVariable = true;
+      break;
+    case Tok::LBracket:
+      w.value = parseBracketed(0);
+      break;
+    case Tok::Function:
+      diags_.report(DiagKind::FunctionInAddress, tok_.range, letter.text,
+                    tok_.text);
+      w.value = parseCall(1);
+      break;
+    default:
+      diags_.report(DiagKind::ExpectedAddressValue, letter.range, letter.text);
+      noteParenthesis(letter);
+      fail();
+  }
+  requireNumber(*w.value);
+  if (negative && w.kind == WordKind::Value) {
+    auto neg = std::make_unique<Expr>();
+    neg->kind = ExprKind::Neg;
+    neg->range = {sign.range.begin, 0};
+    neg->args.push_back(std::move(w.value));
+    w.value = std::move(neg);
+  }
+  w.range = {letter.range.begin, w.value->range.begin.offset +
+                                     w.value->range.length -
+                                     letter.range.begin.offset};
+  return w;
+}
+
+// nc := word+   (G65 among the words makes it a macro call)
+void Parser::parseWords(Stmt& s) {
+  s.kind = StmtKind::Nc;
+  while (tok_.kind == Tok::Letter) {
+    if (tok_.text == "O" || tok_.text == "N") {
+      misplacedHeader();
+    }
+    s.words.push_back(parseWord());
+  }
+  for (const Word& w : s.words) {
+    if (w.letter == 'G' && w.value->kind == ExprKind::Number &&
+        w.value->number == 65) {
+      finishMacroCall(s);
+      return;
+    }
+  }
+  bool dwell = false;
+  for (const Word& w : s.words) {
+    dwell = dwell || (w.letter == 'G' && w.value->kind == ExprKind::Number &&
+                      w.value->number == 4);
+  }
+  for (const Word& w : s.words) {
+    if (!dwell) {
+      checkDecimalPoint(w, false);
+    }
+  }
+}
+
+void Parser::finishMacroCall(Stmt& s) {
+  s.kind = StmtKind::MacroCall;
+  std::vector<Word> args;
+  bool seenG65 = false;
+  for (Word& w : s.words) {
+    if (w.letter == 'G' && !seenG65 && w.value->kind == ExprKind::Number &&
+        w.value->number == 65) {
+      seenG65 = true;
+    } else if (w.letter == 'P') {
+      s.program = std::move(w.value);
+    } else if (w.letter == 'L') {
+      s.repeat = std::move(w.value);
+    } else if (w.letter == 'G') {
+      diags_.report(DiagKind::BadMacroArgument, w.range, "G",
+                    "G is an argument only with G66.1, PS0129");
+    } else {
+      checkDecimalPoint(w, true);
+      args.push_back(std::move(w));
+    }
+  }
+  s.words = std::move(args);
+  if (!s.program) {
+    diags_.report(DiagKind::G65NeedsP, s.range);
+  }
+}
+
+void Parser::checkDecimalPoint(const Word& w, bool macroArgument) {
+  if (!options_.checkWarnings || w.kind != WordKind::IntLiteral ||
+      w.value->number == 0 || !isLengthAddress(w.letter)) {
+    return;
+  }
+  (void)macroArgument;
+  double v = w.value->number;
+  // The increment is 0.001 mm (or degree) at IS-B metric; trim the zeros.
+  std::string scaled = fmt::format("{:.3f}", v * 0.001);
+  while (scaled.back() == '0') {
+    scaled.pop_back();
+  }
+  if (scaled.back() == '.') {
+    scaled.pop_back();
+  }
+  bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C';
+  diags_.report(DiagKind::NoDecimalPoint, w.range, std::string(1, w.letter),
+                fmt::format("{}", v), scaled, rotary ? "deg" : "mm");
+}
+
+// print := ('DPRNT'|'BPRNT') '[' (text | '#' var '[' digits ']')* ']'
+void Parser::parsePrint(Stmt& s) {
+  Token kw = tok_;
+  s.kind = kw.keyword == Keyword::Dprnt ? StmtKind::Dprnt : StmtKind::Bprnt;
+  // Print text is lexed in its own mode, so no token may be buffered here.
+  tok_ = lexer_.next();
+  if (tok_.kind != Tok::LBracket) {
+    diags_.report(DiagKind::PrintNeedsBracket, tok_.range, kw.text, kw.text);
+    if (tok_.kind == Tok::Comment) {
+      diags_.note(DiagKind::ParenthesisIsComment, tok_.range);
+    }
+    fail();
+  }
+  Token open = tok_;
+  tok_ = lexer_.nextPrint();
+  for (;;) {
+    if (tok_.kind == Tok::PrintText || tok_.kind == Tok::Comment) {
+      if (tok_.kind == Tok::Comment) {
+        blockComments_.push_back(tok_);
+      } else {
+        PrintItem item;
+        item.text = tok_.text;
+        item.range = tok_.range;
+        s.items.push_back(std::move(item));
+      }
+      tok_ = lexer_.nextPrint();
+      continue;
+    }
+    if (tok_.kind == Tok::Hash) {
+      s.items.push_back(parsePrintVariable(kw.text));
+      continue;
+    }
+    if (tok_.kind == Tok::RBracket) {
+      break;
+    }
+    auto& d = diags_.report(DiagKind::ExpectedCloseBracket, tok_.range);
+    d.fixIts.push_back({{tok_.range.begin, 0}, "]"});
+    diags_.note(DiagKind::BracketOpenedHere, open.range);
+    fail();
+  }
+  advance();
+}
+
+// A DPRNT variable: '#' var '[' c d ']'. On return tok_ is the token after
+// the format, lexed in print mode.
+PrintItem Parser::parsePrintVariable(const std::string& statement) {
+  PrintItem item;
+  Token hash = tok_;
+  item.value = parseVariable(0);
+  if (tok_.kind != Tok::LBracket) {
+    diags_.report(DiagKind::PrintNeedsFormat, item.value->range, statement,
+                  item.value->kind == ExprKind::Var
+                      ? std::to_string(item.value->var)
+                      : std::string("[...]"));
+    fail();
+  }
+  Token open = tok_;
+  Token digits = lexer_.next();
+  Token close = lexer_.next();
+  std::erase_if(digits.text, [](char c) { return c == ' ' || c == '\t'; });
+  // DPRNT takes [c d] (two digits), BPRNT only [d] (spec §7.3, §7.4).
+  std::size_t want = statement == "BPRNT" ? 1 : 2;
+  if (digits.kind != Tok::Number || digits.hasDecimal ||
+      digits.text.size() != want || close.kind != Tok::RBracket) {
+    diags_.report(want == 2 ? DiagKind::PrintBadFormat
+                            : DiagKind::BprntBadFormat,
+                  open.range);
+    fail();
+  }
+  item.intDigits = want == 2 ? digits.text[0] - '0' : 0;
+  item.fracDigits = digits.text.back() - '0';
+  item.range = {hash.range.begin,
+                close.range.begin.offset + 1 - hash.range.begin.offset};
+  ahead_.clear();
+  tok_ = lexer_.nextPrint();
+  return item;
+}
+
+} // namespace mbc::detail

@@ -1,0 +1,106 @@
+// Recursive-descent parser for Custom Macro B. One block per line; an error
+// is reported and the parser resynchronises at the end of the block, so one
+// run reports every error of a file.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/lexer.h"
+
+#include <deque>
+
+namespace mbc {
+
+struct ParseOptions {
+  /// `mbc check`: also report the warnings that only a review needs
+  /// (whole-number literals on axes, ...).
+  bool checkWarnings = false;
+  /// The control's bracket nesting limit, function brackets included.
+  int maxBracketDepth = 5;
+};
+
+/// Parses one file and appends its programs to unit.
+void parseFile(const SourceManager& sources, std::uint32_t file,
+               DiagnosticEngine& diags, const ParseOptions& options,
+               Unit& unit);
+
+namespace detail {
+
+/// The local variable a G65 argument letter sets (specification I), or 0.
+int argumentVariable(char letter);
+
+/// Thrown after a diagnostic to abandon the current block.
+struct BlockError {};
+
+class Parser {
+public:
+  Parser(const SourceManager& sources, std::uint32_t file,
+         DiagnosticEngine& diags, const ParseOptions& options, Unit& unit);
+  void run();
+
+private:
+  // Blocks and statements (parse_block.cpp, parse_stmt.cpp).
+  void parseBlock();
+  bool parseProgramHeader();
+  void parseStatement(Block& b);
+  void parseAssign(Stmt& s);
+  void parseIf(Stmt& s);
+  void parseGoto(Stmt& s);
+  void parseWhile(Stmt& s);
+  void parseDoEnd(Stmt& s, bool isEnd);
+  int parseLoopNumber(const Token& keyword);
+  ExprPtr parseBracketCondition(const Token& keyword);
+  void parseWords(Stmt& s);
+  Word parseWord();
+  void finishMacroCall(Stmt& s);
+  void checkDecimalPoint(const Word& w, bool macroArgument);
+  void parsePrint(Stmt& s);
+  PrintItem parsePrintVariable(const std::string& statement);
+  void expectEndOfBlock(const Stmt& s);
+  [[noreturn]] void misplacedHeader();
+  void resynchronise();
+  void noteParenthesis(const Token& after);
+  std::string sourceText(SourceRange r) const;
+  std::string messageAfter(std::uint32_t offset) const;
+  Program& currentProgram(SourceLoc at);
+
+  // Expressions (parse_expr.cpp).
+  ExprPtr parseExpr(int depth);
+  ExprPtr parseSum(int depth, bool allowSign);
+  ExprPtr parseTerm(int depth, bool allowSign);
+  ExprPtr parseUnary(int depth, bool allowSign);
+  ExprPtr parsePrimary(int depth);
+  ExprPtr parseBracketed(int depth);
+  ExprPtr parseVariable(int depth);
+  ExprPtr parseCall(int depth);
+  ExprPtr makeBinary(const Token& op, ExprPtr lhs, ExprPtr rhs);
+  void enterBracket(int depth, const Token& at);
+  [[noreturn]] void addressInExpression(const Token& t);
+  void requireNumber(const Expr& e);
+
+  // Tokens.
+  void advance();
+  const Token& peek();
+
+  bool isKeyword(Keyword k) const {
+    return tok_.kind == Tok::Keyword && tok_.keyword == k;
+  }
+
+  [[noreturn]] void fail();
+  [[noreturn]] void unexpected(DiagKind kind);
+
+  const SourceManager& sources_;
+  std::uint32_t file_;
+  DiagnosticEngine& diags_;
+  ParseOptions options_;
+  Unit& unit_;
+  Lexer lexer_;
+  Token tok_;
+  std::deque<Token> ahead_;
+  std::vector<Token> blockComments_;
+  int program_ = -1; // index in unit_.programs
+  bool reportedDepth_ = false;
+  int operands_ = 0;
+};
+
+} // namespace detail
+} // namespace mbc

@@ -1,0 +1,195 @@
+// Semantic checks (see sema.h).
+#include "frontend/sema.h"
+
+#include <mbc/sysvars.h>
+
+#include <cmath>
+#include <map>
+
+namespace mbc {
+
+namespace {
+
+struct Loop {
+  int id;
+  int block;
+};
+
+void matchLoops(Program& p, DiagnosticEngine& diags) {
+  std::vector<Loop> open;
+  for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
+    Stmt& s = p.blocks[i].stmt;
+    if (s.kind == StmtKind::While) {
+      if (open.size() == 3) {
+        diags.report(DiagKind::LoopNesting, s.range, 4);
+      }
+      for (const Loop& l : open) {
+        if (l.id == s.loopId) {
+          diags.report(DiagKind::LoopIdReused, s.range, s.loopId);
+          diags.note(DiagKind::DoOpenedHere, p.blocks[l.block].stmt.range,
+                     l.id);
+        }
+      }
+      open.push_back({s.loopId, i});
+      continue;
+    }
+    if (s.kind != StmtKind::End) {
+      continue;
+    }
+    int found = -1;
+    for (int k = static_cast<int>(open.size()) - 1; k >= 0; --k) {
+      if (open[k].id == s.loopId) {
+        found = k;
+        break;
+      }
+    }
+    if (found < 0) {
+      diags.report(DiagKind::EndWithoutDo, s.range, s.loopId, s.loopId);
+      continue;
+    }
+    if (found != static_cast<int>(open.size()) - 1) {
+      const Loop& inner = open.back();
+      diags.report(DiagKind::CrossingLoops, s.range, s.loopId, s.loopId,
+                   inner.id);
+      diags.note(DiagKind::DoOpenedHere, p.blocks[inner.block].stmt.range,
+                 inner.id);
+    }
+    Stmt& w = p.blocks[open[found].block].stmt;
+    w.match = i;
+    s.match = open[found].block;
+    open.resize(found);
+  }
+  for (const Loop& l : open) {
+    diags.report(DiagKind::DoWithoutEnd, p.blocks[l.block].stmt.range, l.id,
+                 l.id);
+  }
+}
+
+void checkSequences(const Program& p, DiagnosticEngine& diags) {
+  std::map<int, int> first;
+  for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
+    int seq = p.blocks[i].seq;
+    if (seq < 0) {
+      continue;
+    }
+    auto [it, inserted] = first.emplace(seq, i);
+    if (!inserted) {
+      diags.report(DiagKind::DuplicateSequence, p.blocks[i].range, seq, p.name);
+      diags.note(DiagKind::SequenceDefinedHere, p.blocks[it->second].range,
+                 seq);
+    }
+  }
+}
+
+bool inside(const Program& p, int block, int whileBlock) {
+  int end = p.blocks[whileBlock].stmt.match;
+  return end >= 0 && block > whileBlock && block <= end;
+}
+
+void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
+  Stmt& s = p.blocks[i].stmt;
+  const Expr* v = s.value.get();
+  bool negative = v && v->kind == ExprKind::Neg;
+  if (negative) {
+    v = v->args[0].get();
+  }
+  if (!v || v->kind != ExprKind::Number) {
+    return;
+  }
+  double n = std::round(negative ? -v->number : v->number);
+  if (n < 1 || n > 99999) {
+    diags.report(DiagKind::GotoRange, s.value->range,
+                 fmt::format("{}", s.value->number));
+    return;
+  }
+  int target = findSequence(p, static_cast<int>(n), i);
+  if (target < 0) {
+    diags.report(DiagKind::GotoUndefined, s.value->range, n, p.name);
+    return;
+  }
+  s.gotoBlock = target;
+  for (int w = 0; w < static_cast<int>(p.blocks.size()); ++w) {
+    if (p.blocks[w].stmt.kind == StmtKind::While && inside(p, target, w) &&
+        !inside(p, i, w)) {
+      diags.report(DiagKind::GotoIntoLoop, s.value->range, n);
+      return;
+    }
+  }
+}
+
+// Variables that cannot exist on the default machine are only a warning: a
+// profile may add them (#200-#499), and the control alarms only if the block
+// runs.
+void checkVariables(const Expr& e, DiagnosticEngine& diags) {
+  if (e.kind == ExprKind::Var && variableAccess(e.var) == VarAccess::Missing) {
+    diags.report(DiagKind::VariableMissing, e.range, e.var);
+  }
+  for (const ExprPtr& a : e.args) {
+    checkVariables(*a, diags);
+  }
+}
+
+void checkStatementVariables(const Stmt& s, DiagnosticEngine& diags) {
+  for (const Expr* e : {s.value.get(), s.cond.get(), s.target.index.get(),
+                        s.program.get(), s.repeat.get()}) {
+    if (e) {
+      checkVariables(*e, diags);
+    }
+  }
+  for (const Word& w : s.words) {
+    checkVariables(*w.value, diags);
+  }
+  for (const PrintItem& it : s.items) {
+    if (it.value) {
+      checkVariables(*it.value, diags);
+    }
+  }
+  bool assigns = s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen;
+  if (assigns && !s.target.index &&
+      variableAccess(s.target.number) == VarAccess::Missing) {
+    diags.report(DiagKind::VariableMissing, s.target.range, s.target.number);
+  }
+}
+
+void checkWrite(const Stmt& s, DiagnosticEngine& diags) {
+  if (s.target.index) {
+    return;
+  }
+  int n = s.target.number;
+  if (n == 0) {
+    diags.report(DiagKind::WriteVacant, s.target.range);
+  } else if (variableAccess(n) == VarAccess::ReadOnly) {
+    diags.report(DiagKind::WriteReadOnly, s.target.range, n);
+  }
+}
+
+} // namespace
+
+int findSequence(const Program& program, int seq, int from) {
+  int n = static_cast<int>(program.blocks.size());
+  for (int k = 1; k <= n; ++k) {
+    int i = (from + k) % n;
+    if (program.blocks[i].seq == seq) {
+      return i;
+    }
+  }
+  return -1;
+}
+
+void checkUnit(Unit& unit, DiagnosticEngine& diags) {
+  for (Program& p : unit.programs) {
+    matchLoops(p, diags);
+    checkSequences(p, diags);
+    for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
+      Stmt& s = p.blocks[i].stmt;
+      checkStatementVariables(s, diags);
+      if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
+        resolveGoto(p, i, diags);
+      } else if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
+        checkWrite(s, diags);
+      }
+    }
+  }
+}
+
+} // namespace mbc

@@ -1,0 +1,18 @@
+// Semantic checks over parsed programs: DO/END pairing and nesting, GOTO
+// targets, duplicate sequence numbers, writes to #0 and read-only system
+// variables. Resolves loop partners and constant GOTO targets in place.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+
+namespace mbc {
+
+void checkUnit(Unit& unit, DiagnosticEngine& diags);
+
+/// The block a GOTO/M99 P to sequence number seq reaches from block `from`:
+/// the first block with that N after `from`, searching to the end and then
+/// from the top (spec Part A, "GOTO search"); -1 when there is none.
+int findSequence(const Program& program, int seq, int from);
+
+} // namespace mbc

@@ -1,0 +1,175 @@
+// Parser and semantic checks: structure of the AST, FANUC precedence, and
+// the diagnostics of classic mistakes.
+#include "frontend/parser.h"
+#include "frontend/sema.h"
+
+#include <gtest/gtest.h>
+
+namespace mbc {
+namespace {
+
+struct Parsed {
+  SourceManager sources;
+  DiagnosticEngine diags{sources};
+  Unit unit;
+  std::string text;
+};
+
+std::unique_ptr<Parsed> parse(const std::string& src, bool check = false) {
+  auto p = std::make_unique<Parsed>();
+  std::uint32_t id = p->sources.add("t.nc", src);
+  ParseOptions o;
+  o.checkWarnings = check;
+  parseFile(p->sources, id, p->diags, o, p->unit);
+  checkUnit(p->unit, p->diags);
+  p->text = renderDiagnostics(p->diags);
+  return p;
+}
+
+const Stmt& firstStmt(const Parsed& p) {
+  return p.unit.programs.at(0).blocks.at(0).stmt;
+}
+
+TEST(Parser, ProgramsAndBlocks) {
+  auto p = parse("%\nO1000 (MAIN)\nN10 G00 X1.\n#1=2\nM30\nO2000\nM99\n%\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  ASSERT_EQ(p->unit.programs.size(), 2u);
+  EXPECT_EQ(p->unit.programs[0].name, "O1000");
+  EXPECT_EQ(p->unit.programs[0].blocks.size(), 3u);
+  EXPECT_EQ(p->unit.programs[0].blocks[0].seq, 10);
+  EXPECT_EQ(p->unit.programs[0].blocks[0].line, 3);
+  EXPECT_EQ(p->unit.programs[1].number, 2000);
+}
+
+TEST(Parser, AnonymousMainAndNamedProgram) {
+  auto p = parse("G00 X1.\n<PART_A>\nM99\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  ASSERT_EQ(p->unit.programs.size(), 2u);
+  EXPECT_EQ(p->unit.programs[0].name, "MAIN");
+  EXPECT_EQ(p->unit.programs[1].name, "<PART_A>");
+}
+
+TEST(Parser, AndBindsLikeMultiplication) {
+  // #1 + #2 AND #3 is #1 + [#2 AND #3] (spec §3.2).
+  auto p = parse("#4 = #1 + #2 AND #3\n");
+  const Expr& e = *firstStmt(*p).value;
+  ASSERT_EQ(e.kind, ExprKind::Binary);
+  EXPECT_EQ(e.binOp, BinOp::Add);
+  EXPECT_EQ(e.args[1]->binOp, BinOp::And);
+}
+
+TEST(Parser, OrBindsLikeAddition) {
+  auto p = parse("#4 = #1 OR #2 * #3\n");
+  const Expr& e = *firstStmt(*p).value;
+  EXPECT_EQ(e.binOp, BinOp::Or);
+  EXPECT_EQ(e.args[1]->binOp, BinOp::Mul);
+}
+
+TEST(Parser, SpacesAndKeywordsWithoutSpaces) {
+  auto p = parse("IF[#1EQ0]GOTO10\nN10 WHILE [#2 LT 3] DO 1\nEND 1\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  EXPECT_EQ(firstStmt(*p).kind, StmtKind::IfGoto);
+  EXPECT_EQ(firstStmt(*p).gotoBlock, 1);
+}
+
+TEST(Parser, AtanForms) {
+  auto p = parse("#1=ATAN[1]/[2]\n#2=ATAN[1,2]\n#3=ATAN[1]/2\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  const auto& b = p->unit.programs[0].blocks;
+  EXPECT_EQ(b[0].stmt.value->builtin, Builtin::Atan2);
+  EXPECT_EQ(b[1].stmt.value->builtin, Builtin::Atan2);
+  EXPECT_EQ(b[2].stmt.value->kind, ExprKind::Binary); // a division
+}
+
+TEST(Parser, WordKindsAndVacantDrop) {
+  auto p = parse("G01 X10 Y10. Z#1 A-#2 B[#3] F100.\n");
+  const auto& w = firstStmt(*p).words;
+  ASSERT_EQ(w.size(), 7u);
+  EXPECT_EQ(w[1].kind, WordKind::IntLiteral);
+  EXPECT_EQ(w[2].kind, WordKind::DecLiteral);
+  EXPECT_TRUE(w[3].bareVariable);
+  EXPECT_TRUE(w[4].bareVariable);
+  EXPECT_FALSE(w[5].bareVariable);
+}
+
+TEST(Parser, MacroCallArguments) {
+  auto p = parse("G65 P9100 L2 A1. X#5\n");
+  const Stmt& s = firstStmt(*p);
+  ASSERT_EQ(s.kind, StmtKind::MacroCall);
+  ASSERT_TRUE(s.program && s.repeat);
+  EXPECT_EQ(s.words.size(), 2u);
+}
+
+TEST(Parser, CommentBecomesAlarmMessage) {
+  auto p = parse("IF [#24 EQ #0] THEN #3000 = 1 (X IS MISSING)\n");
+  EXPECT_EQ(firstStmt(*p).message, "X IS MISSING");
+}
+
+TEST(Parser, DprntItems) {
+  auto p = parse("DPRNT[X#2[53]*Y#[100+#1][20]]\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  const auto& items = firstStmt(*p).items;
+  ASSERT_EQ(items.size(), 4u);
+  EXPECT_EQ(items[0].text, "X");
+  EXPECT_EQ(items[1].intDigits, 5);
+  EXPECT_EQ(items[1].fracDigits, 3);
+  EXPECT_EQ(items[2].text, "*Y");
+  EXPECT_EQ(items[3].value->kind, ExprKind::Indirect);
+}
+
+TEST(Parser, SemicolonEndsTheBlock) {
+  auto p = parse("#1 = 10.; #2 = 3 this is a comment\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  EXPECT_EQ(p->unit.programs[0].blocks.size(), 1u);
+}
+
+TEST(Diagnostics, UnicodeDashHasFixIt) {
+  auto p = parse("#1 = #2 \xE2\x80\x93 #3\n");
+  EXPECT_EQ(p->text,
+            "t.nc:1:9: error: '\xE2\x80\x93' is not the minus sign; Macro B "
+            "uses the ASCII '-'\n#1 = #2 \xE2\x80\x93 #3\n        ^\n"
+            "        -\n");
+}
+
+TEST(Diagnostics, EveryErrorOfAFileIsReported) {
+  auto p = parse("#1=[2\n#2=#3+-4\nZ = 1\nIF [#1 GT 0] THEN M99\n");
+  EXPECT_EQ(p->diags.errorCount(), 4) << p->text;
+}
+
+TEST(Diagnostics, TenThousandNestedBracketsDoNotCrash) {
+  std::string deep = "#1=" + std::string(10000, '[') + "1" +
+                     std::string(10000, ']') + "\n#2=3\n";
+  auto p = parse(deep);
+  EXPECT_GE(p->diags.errorCount(), 1);
+  EXPECT_NE(p->text.find("PS0118"), std::string::npos);
+  EXPECT_EQ(p->unit.programs.size(), 1u); // #2=3 still parsed
+}
+
+TEST(Sema, LoopsMatchAndCrossingIsAnError) {
+  auto ok = parse("WHILE[#1LT2]DO1\nWHILE[#2LT2]DO2\nEND2\nEND1\n");
+  EXPECT_EQ(ok->diags.errorCount(), 0) << ok->text;
+  EXPECT_EQ(firstStmt(*ok).match, 3);
+  auto bad = parse("WHILE[#1LT2]DO1\nWHILE[#2LT2]DO2\nEND1\nEND2\n");
+  EXPECT_NE(bad->text.find("loops may nest but not cross"), std::string::npos);
+}
+
+TEST(Sema, GotoSearchesForwardThenFromTheTop) {
+  auto p = parse("N5 #1=1\nGOTO 5\nN5 #1=2\nGOTO 5\n");
+  const auto& b = p->unit.programs[0].blocks;
+  EXPECT_EQ(b[1].stmt.gotoBlock, 2);
+  EXPECT_EQ(b[3].stmt.gotoBlock, 0);
+  EXPECT_EQ(p->diags.warningCount(), 1);
+}
+
+TEST(Sema, GotoIntoLoopIsAnError) {
+  auto p = parse("GOTO 7\nWHILE [#1 LT 2] DO1\nN7 #1=#1+1\nEND1\n");
+  EXPECT_NE(p->text.find("jumps into a WHILE loop"), std::string::npos);
+}
+
+TEST(Sema, WritesToReadOnlyVariables) {
+  auto p = parse("#0=1\n#5021=1\n#3011=1\n#5221=1\n");
+  EXPECT_EQ(p->diags.errorCount(), 3) << p->text;
+}
+
+} // namespace
+} // namespace mbc
