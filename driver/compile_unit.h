@@ -1,0 +1,24 @@
+// Reading, parsing and checking the input files: the front half shared by
+// every mbc command.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+#include "frontend/source.h"
+
+#include <string>
+#include <vector>
+
+namespace mbc::driver {
+
+struct CompiledUnit {
+  SourceManager sources;
+  Unit unit;
+};
+
+/// Loads and checks the files. Diagnostics go to standard error. Returns
+/// false when there were errors (or a file could not be read).
+bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
+              CompiledUnit& out);
+
+} // namespace mbc::driver

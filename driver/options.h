@@ -1,0 +1,33 @@
+// Command-line options of `mbc run` and `mbc check`.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mbc::driver {
+
+struct Options {
+  std::string command; // "run" or "check"
+  std::vector<std::string> files;
+  std::string mainProgram; // --main O1234 / <NAME>
+  std::string engine = "interp";
+  std::string toolpathPath;
+  std::string dprntPath;
+  std::string varsOutPath;
+  std::string machinePath;
+  std::vector<std::pair<double, double>> presets; // --set '#N=V'
+  std::vector<std::pair<char, double>> args;      // --arg A=1.5
+  std::uint64_t maxBlocks = 0;
+  unsigned blockSkipMask = 0;
+  bool trace = false;
+};
+
+/// Parses argv; on a usage error returns nullopt after writing the message
+/// to `error`.
+std::optional<Options> parseOptions(int argc, char** argv, std::string& error);
+
+std::string usageText();
+
+} // namespace mbc::driver

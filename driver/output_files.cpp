@@ -1,0 +1,77 @@
+// Output files of `mbc run` (see output_files.h).
+#include "driver/output_files.h"
+
+#include <mbc/toolpath_json.h>
+#include <mbc/value.h>
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <sys/stat.h>
+
+namespace mbc::driver {
+
+OutputFile::~OutputFile() {
+  if (file_) {
+    std::fflush(file_);
+  }
+  if (owned_) {
+    std::fclose(file_);
+  }
+}
+
+bool OutputFile::open(const std::string& path) {
+  if (path == "-") {
+    file_ = stdout;
+    return true;
+  }
+  file_ = std::fopen(path.c_str(), "wb");
+  owned_ = file_ != nullptr;
+  return owned_;
+}
+
+void OutputFile::writeText(void* self, const char* data, std::size_t size) {
+  auto* out = static_cast<OutputFile*>(self);
+  std::fwrite(data, 1, size, out->file_);
+}
+
+void OutputFile::writeMotion(void* self, const mbrt_motion* motion) {
+  auto* out = static_cast<OutputFile*>(self);
+  std::string line = toolpathJsonLine(*motion);
+  std::fwrite(line.data(), 1, line.size(), out->file_);
+}
+
+bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
+  std::string json = "{";
+  bool first = true;
+  for (int n = 100; n <= 999; ++n) {
+    mbrt_num v;
+    if (!mbrt_peek_common(ctx, n, &v) || isVacant(v)) {
+      continue;
+    }
+    json += fmt::format("{}\"{}\":{}", first ? "" : ",", n, v);
+    first = false;
+  }
+  json += "}\n";
+  // A pipe, a terminal or "-" cannot be replaced by rename: write directly.
+  struct stat info;
+  if (path == "-" ||
+      (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))) {
+    std::FILE* out = path == "-" ? stdout : std::fopen(path.c_str(), "wb");
+    if (!out) {
+      return false;
+    }
+    bool ok = std::fwrite(json.data(), 1, json.size(), out) == json.size();
+    return (out == stdout ? std::fflush(out) : std::fclose(out)) == 0 && ok;
+  }
+  std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) {
+    return false;
+  }
+  bool ok = std::fwrite(json.data(), 1, json.size(), f) == json.size();
+  ok = (std::fclose(f) == 0) && ok;
+  return ok && std::rename(tmp.c_str(), path.c_str()) == 0;
+}
+
+} // namespace mbc::driver

@@ -1,0 +1,38 @@
+// The files `mbc run` writes: toolpath JSON Lines, DPRNT text, and the
+// variables JSON (replaced atomically so that a reader never sees half).
+#pragma once
+
+#include <mbc/runtime.h>
+
+#include <cstdio>
+#include <string>
+
+namespace mbc::driver {
+
+/// An output stream that is a file, standard output, or nothing.
+class OutputFile {
+public:
+  OutputFile() = default;
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  ~OutputFile();
+
+  /// Opens path for writing ("-" is standard output); false on failure.
+  bool open(const std::string& path);
+
+  void useStdout() { file_ = stdout; }
+
+  std::FILE* get() const { return file_; }
+
+  static void writeText(void* self, const char* data, std::size_t size);
+  static void writeMotion(void* self, const mbrt_motion* motion);
+
+private:
+  std::FILE* file_ = nullptr;
+  bool owned_ = false;
+};
+
+/// Writes every common variable that is not vacant as a JSON object.
+bool writeVariables(const mbrt_ctx* ctx, const std::string& path);
+
+} // namespace mbc::driver

@@ -1,0 +1,121 @@
+// Expression evaluation through the shared arithmetic (mbc/arith.h), so the
+// interpreter computes exactly what folding and compiled code compute.
+#include "interp/interpreter.h"
+
+namespace mbc {
+
+mbrt_status Interpreter::check(AlarmId id) {
+  return id == AlarmId::None ? 0
+                             : mbrt_raise(ctx_, static_cast<int>(id), nullptr);
+}
+
+// roundIncrement > 0: the expression is an NC address, where ROUND rounds
+// to the address's least increment (spec §3.4); it does not reach into a
+// variable number #[...].
+mbrt_status Interpreter::eval(const Expr& e, Num& out, double roundIncrement) {
+  switch (e.kind) {
+    case ExprKind::Number:
+      out = e.number;
+      return 0;
+    case ExprKind::Var:
+      return mbrt_read_var(ctx_, e.var, &out);
+    case ExprKind::Indirect: {
+      Num idx;
+      if (mbrt_status st = eval(*e.args[0], idx)) {
+        return st;
+      }
+      return mbrt_read_var(ctx_, numeric(idx), &out);
+    }
+    case ExprKind::Neg: {
+      Num v;
+      if (mbrt_status st = eval(*e.args[0], v, roundIncrement)) {
+        return st;
+      }
+      out = negate(v);
+      return 0;
+    }
+    case ExprKind::Binary: {
+      Num a, b;
+      if (mbrt_status st = eval(*e.args[0], a, roundIncrement)) {
+        return st;
+      }
+      if (mbrt_status st = eval(*e.args[1], b, roundIncrement)) {
+        return st;
+      }
+      return check(evalBinary(e.binOp, a, b, &out));
+    }
+    case ExprKind::Call:
+      return evalCall(e, out, roundIncrement);
+    case ExprKind::Compare:
+    case ExprKind::Logical:
+      break;
+  }
+  return check(AlarmId::IllegalExpressionFormat);
+}
+
+mbrt_status Interpreter::evalCall(const Expr& e, Num& out,
+                                  double roundIncrement) {
+  if (e.builtin == Builtin::Adp) {
+    const Expr& arg = *e.args[0];
+    if (arg.isBareVariable()) {
+      double number = arg.var;
+      if (arg.kind == ExprKind::Indirect) {
+        Num idx;
+        if (mbrt_status st = eval(*arg.args[0], idx)) {
+          return st;
+        }
+        number = numeric(idx);
+      }
+      return mbrt_adp(ctx_, number, &out);
+    }
+  }
+  Num args[2] = {0, 0};
+  for (std::size_t i = 0; i < e.args.size() && i < 2; ++i) {
+    if (mbrt_status st = eval(*e.args[i], args[i], roundIncrement)) {
+      return st;
+    }
+  }
+  if (e.builtin == Builtin::Round && roundIncrement > 0) {
+    out = roundHalfAway(numeric(args[0]) / roundIncrement) * roundIncrement;
+    return 0;
+  }
+  return check(evalBuiltin(e.builtin, args, options_.math, &out));
+}
+
+mbrt_status Interpreter::evalCond(const Expr& e, bool& out) {
+  if (e.kind == ExprKind::Compare) {
+    Num a, b;
+    if (mbrt_status st = eval(*e.args[0], a)) {
+      return st;
+    }
+    if (mbrt_status st = eval(*e.args[1], b)) {
+      return st;
+    }
+    out = evalCompare(e.relOp, a, b);
+    return 0;
+  }
+  if (e.kind != ExprKind::Logical) {
+    return check(AlarmId::IllegalExpressionFormat);
+  }
+  bool a = false, b = false;
+  if (mbrt_status st = evalCond(*e.args[0], a)) {
+    return st;
+  }
+  if (mbrt_status st = evalCond(*e.args[1], b)) {
+    return st;
+  }
+  switch (e.binOp) {
+    case BinOp::And:
+      out = a && b;
+      break;
+    case BinOp::Or:
+      out = a || b;
+      break;
+    default:
+      out = a != b;
+      break;
+  }
+  return 0;
+}
+
+} // namespace mbc

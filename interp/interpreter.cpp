@@ -1,0 +1,202 @@
+// The interpreter's control loop: blocks, GOTO search, WHILE/END, calls and
+// returns (G65/M98/M99), and the end of the run.
+#include "interp/interpreter.h"
+
+#include "frontend/sema.h"
+
+#include <cmath>
+
+namespace mbc {
+
+Interpreter::Interpreter(const Unit& unit, const SourceManager& sources,
+                         mbrt_ctx* ctx, InterpOptions options)
+    : unit_(unit), sources_(sources), ctx_(ctx), options_(options) {
+  for (int i = 0; i < static_cast<int>(unit.programs.size()); ++i) {
+    if (unit.programs[i].number >= 0) {
+      byNumber_.emplace(unit.programs[i].number, i);
+    }
+  }
+}
+
+int Interpreter::findProgram(double number) const {
+  double n = roundHalfAway(number);
+  if (n < 0 || n > 1e8) {
+    return -1;
+  }
+  auto it = byNumber_.find(static_cast<int>(n));
+  return it == byNumber_.end() ? -1 : it->second;
+}
+
+mbrt_status Interpreter::run(int mainIndex) {
+  prog_ = mainIndex;
+  pc_ = 0;
+  stack_.clear();
+  for (;;) {
+    const Program& p = unit_.programs[prog_];
+    if (pc_ >= static_cast<int>(p.blocks.size())) {
+      // The end of a called program's text returns like M99.
+      bool finished = false;
+      if (mbrt_status st = leave(false, 0, finished)) {
+        return st;
+      }
+      if (finished) {
+        mbrt_finish(ctx_, MBRT_END_PROGRAM);
+        return 0;
+      }
+      continue;
+    }
+    const Block& b = p.blocks[pc_];
+    if (b.skipLevel && (options_.blockSkipMask >> b.skipLevel) & 1U) {
+      ++pc_;
+      continue;
+    }
+    if (mbrt_status st =
+            mbrt_begin_block(ctx_, sources_.name(p.file).c_str(), b.line)) {
+      return st;
+    }
+    bool finished = false;
+    mbrt_status st = 0;
+    if (b.stmt.kind == StmtKind::Nc) {
+      st = execNc(b.stmt, finished);
+    } else {
+      st = step(b);
+    }
+    if (st) {
+      return st;
+    }
+    if (finished) {
+      return 0;
+    }
+  }
+}
+
+mbrt_status Interpreter::step(const Block& b) {
+  const Stmt& s = b.stmt;
+  switch (s.kind) {
+    case StmtKind::Empty:
+      ++pc_;
+      return 0;
+    case StmtKind::Assign:
+      ++pc_;
+      return execAssign(s);
+    case StmtKind::IfGoto:
+    case StmtKind::IfThen: {
+      bool taken = false;
+      if (mbrt_status st = evalCond(*s.cond, taken)) {
+        return st;
+      }
+      if (mbrt_tracing(ctx_)) {
+        trace(s, nullptr, taken ? "true" : "false");
+      }
+      if (!taken) {
+        ++pc_;
+        return 0;
+      }
+      if (s.kind == StmtKind::IfThen) {
+        ++pc_;
+        return execAssign(s);
+      }
+      return execGoto(s);
+    }
+    case StmtKind::Goto:
+      return execGoto(s);
+    case StmtKind::While: {
+      bool go = true;
+      if (s.cond) {
+        if (mbrt_status st = evalCond(*s.cond, go)) {
+          return st;
+        }
+      }
+      if (mbrt_tracing(ctx_)) {
+        trace(s, nullptr, go ? "true" : "false");
+      }
+      pc_ = go ? pc_ + 1 : s.match + 1;
+      return 0;
+    }
+    case StmtKind::End:
+      if (mbrt_tracing(ctx_)) {
+        trace(s, nullptr, nullptr);
+      }
+      pc_ = s.match;
+      return 0;
+    case StmtKind::MacroCall:
+      return execMacroCall(s);
+    case StmtKind::Dprnt:
+    case StmtKind::Bprnt:
+      ++pc_;
+      return execPrint(s);
+    case StmtKind::Popen:
+    case StmtKind::Pclos:
+      ++pc_;
+      if (mbrt_tracing(ctx_)) {
+        trace(s, nullptr, nullptr);
+      }
+      return s.kind == StmtKind::Popen ? mbrt_popen(ctx_) : mbrt_pclos(ctx_);
+    case StmtKind::Nc:
+      break;
+  }
+  return 0;
+}
+
+// Computed targets are searched like constant ones: forward from the jump,
+// then from the top of the program (spec Part A); none is PS0128.
+mbrt_status Interpreter::jumpTo(int seq, int from) {
+  int target = findSequence(unit_.programs[prog_], seq, from);
+  if (target < 0) {
+    return mbrt_raise(
+        ctx_, static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
+        fmt::format("N{} not found in {}", seq, unit_.programs[prog_].name)
+            .c_str());
+  }
+  pc_ = target;
+  return 0;
+}
+
+mbrt_status Interpreter::enter(int program, bool macro,
+                               std::vector<mbrt_word> args, long repeat) {
+  const char* name = unit_.programs[program].name.c_str();
+  mbrt_status st = macro ? mbrt_call_macro(ctx_, name, args.data(), args.size())
+                         : mbrt_call_sub(ctx_, name);
+  if (st) {
+    return st;
+  }
+  stack_.push_back({prog_, pc_ + 1, repeat - 1, macro, std::move(args)});
+  prog_ = program;
+  pc_ = 0;
+  return 0;
+}
+
+// M99 (or the end of a called program): repeat the call while L allows,
+// else resume the caller after the calling block or at M99 P's N.
+mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
+  if (stack_.empty()) {
+    finished = true;
+    return 0;
+  }
+  mbrt_return(ctx_);
+  Frame& f = stack_.back();
+  if (f.remaining > 0 && !hasSeq) {
+    --f.remaining;
+    const char* name = unit_.programs[prog_].name.c_str();
+    mbrt_status st =
+        f.macro ? mbrt_call_macro(ctx_, name, f.args.data(), f.args.size())
+                : mbrt_call_sub(ctx_, name);
+    pc_ = 0;
+    return st;
+  }
+  prog_ = f.program;
+  pc_ = f.returnBlock;
+  stack_.pop_back();
+  if (!hasSeq) {
+    return 0;
+  }
+  double n = roundHalfAway(seq);
+  if (n < 1 || n > 99999) {
+    return mbrt_raise(ctx_,
+                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
+                      fmt::format("M99 P{}", seq).c_str());
+  }
+  return jumpTo(static_cast<int>(n), pc_ - 1);
+}
+
+} // namespace mbc

@@ -1,0 +1,83 @@
+// The reference interpreter: runs the AST block by block like a control does
+// (no lookahead; spec Part A), calling the shared runtime for variables,
+// motion and output. It is the semantic oracle every other engine is
+// compared with.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/source.h"
+#include <mbc/arith.h>
+#include <mbc/runtime.h>
+
+#include <fmt/format.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mbc {
+
+struct InterpOptions {
+  MathParams math;
+  /// Bit n set: optional block skip switch /n is on (bit 1 for plain '/').
+  unsigned blockSkipMask = 0;
+};
+
+class Interpreter {
+public:
+  Interpreter(const Unit& unit, const SourceManager& sources, mbrt_ctx* ctx,
+              InterpOptions options);
+
+  /// Runs programs[mainIndex] to its end (after the caller's mbrt_start).
+  /// Returns 0 or the alarm that stopped the run (its report is in the
+  /// context).
+  mbrt_status run(int mainIndex);
+
+private:
+  struct Frame {
+    int program;
+    int returnBlock;
+    long remaining; // repetitions still to run (L)
+    bool macro;     // G65 (new local level) or M98
+    std::vector<mbrt_word> args;
+  };
+
+  // Control (interpreter.cpp).
+  mbrt_status step(const Block& b);
+  mbrt_status jumpTo(int seq, int from);
+  mbrt_status enter(int program, bool macro, std::vector<mbrt_word> args,
+                    long repeat);
+  mbrt_status leave(bool hasSeq, double seq, bool& finished);
+  int findProgram(double number) const;
+
+  // Statements (statements.cpp).
+  mbrt_status execAssign(const Stmt& s);
+  mbrt_status execGoto(const Stmt& s);
+  mbrt_status execNc(const Stmt& s, bool& finished);
+  mbrt_status execMacroCall(const Stmt& s);
+  mbrt_status execPrint(const Stmt& s);
+  mbrt_status evalWords(const std::vector<Word>& words,
+                        std::vector<mbrt_word>& out);
+
+  // Expressions (eval.cpp).
+  mbrt_status eval(const Expr& e, Num& out, double roundIncrement = 0);
+  mbrt_status evalCond(const Expr& e, bool& out);
+  mbrt_status evalCall(const Expr& e, Num& out, double roundIncrement);
+  mbrt_status check(AlarmId id);
+
+  // Trace (trace.cpp).
+  void trace(const Stmt& s, const std::vector<mbrt_word>* words,
+             const char* outcome);
+
+  const Unit& unit_;
+  const SourceManager& sources_;
+  mbrt_ctx* ctx_;
+  InterpOptions options_;
+  std::map<int, int> byNumber_; // O number -> program index
+  int prog_ = 0;
+  int pc_ = 0;
+  std::vector<Frame> stack_;
+  std::vector<mbrt_word> scratch_;
+};
+
+} // namespace mbc
