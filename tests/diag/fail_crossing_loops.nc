@@ -1,0 +1,10 @@
+O1035 (GRID)
+#1 = 0
+WHILE [#1 LT 3] DO1
+#2 = 0
+WHILE [#2 LT 4] DO2
+#2 = #2 + 1
+END1
+#1 = #1 + 1
+END2
+M30

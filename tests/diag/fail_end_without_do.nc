@@ -1,0 +1,7 @@
+O1033 (ROWS)
+#1 = 0
+WHILE [#1 LT 3] DO1
+#1 = #1 + 1
+END1
+END1
+M30

@@ -1,0 +1,5 @@
+O1000 (BOLT CIRCLE RADIUS)
+#1 = 50.
+#2 = #1 ^ 2
+G00 X#1 Y0.
+M30

@@ -1,0 +1,6 @@
+O1019 (TWO LIMITS)
+#1 = 5.
+#2 = 2.
+IF [[#1 GT 0] AND #2 LT 5] GOTO 10
+#3000 = 1 (BAD INPUT)
+N10 M30

@@ -1,0 +1,4 @@
+O1025 (CLEAR ARGUMENTS)
+#0 = 0
+#1 = #0
+M30

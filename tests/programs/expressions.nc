@@ -1,0 +1,33 @@
+%
+O1000 (PRECEDENCE, FUNCTIONS, ROUNDING: SPEC 3)
+#100 = 1 + 2 * 3
+#101 = 12 AND 10 + 1 (AND BINDS LIKE *: 8 + 1)
+#102 = 1 OR 2 * 3 (OR BINDS LIKE +: 1 OR 6)
+#103 = -7 MOD 3
+#104 = 7.6 MOD 2.4 (8 MOD 2)
+#105 = FIX[-1.7] + FUP[-1.2] * 10
+#106 = ROUND[-2.5] + ROUND[2.4999]
+#107 = ATAN[-1]/[-1]
+#108 = ATAN[1,0]
+#109 = ASIN[-0.5]
+#110 = ACOS[-1]
+#111 = SIN[30] + COS[60]
+#112 = SQRT[2] * SQRT[2]
+#113 = POW[2, 10]
+#114 = BCD[25] + BIN[37] * 1000
+#115 = LN[EXP[2]]
+#116 = 5 XOR 1
+#117 = ABS[-3.25]
+#118 = 10 / 4 / 5 (LEFT TO RIGHT)
+#119 = 2 - 3 - 4
+#120 = [1 + 2] * [3 + 4]
+#121 = SIN[[[#100 + 1]]] (NESTED BRACKETS)
+#1 = 1.4999999
+#[#1] = 5 (VARIABLE NUMBER ROUNDS: #1)
+#122 = #1
+#1 = 1.5
+#[#1] = 6 (ROUNDS TO #2)
+#123 = #2
+#124 = ATAN[-1] (ONE ARGUMENT, NAT=0)
+M30
+%

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Runs one golden case and compares every expected file that exists beside it.
+#   run_case.sh MBC CASE.nc [--bless]
+# CASE.args       extra `mbc run` arguments, one per line (optional)
+# CASE.status     expected exit status (default 0)
+# CASE.toolpath.jsonl / CASE.dprnt / CASE.vars.json / CASE.stderr
+#                 expected outputs of `mbc run`
+# CASE.check      expected standard error of `mbc check` (its exit status is
+#                 CASE.status) -- for programs that must be diagnosed
+# Paths are printed relative to the case's folder, so the case runs from there.
+set -u
+mbc=$(realpath "$1")
+case_path=$2
+bless=${3:-}
+dir=$(dirname "$case_path")
+name=$(basename "$case_path" .nc)
+cd "$dir" || exit 2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export LC_ALL=${MBC_TEST_LOCALE:-C} SOURCE_DATE_EPOCH=1767225600
+expected_status=0
+[ -f "$name.status" ] && expected_status=$(cat "$name.status")
+fail=0
+
+compare() { # expected actual label
+  if [ -n "$bless" ]; then
+    cp "$2" "$1"
+  elif ! diff -u "$1" "$2"; then
+    echo "FAIL: $name: $3 differs"
+    fail=1
+  fi
+}
+
+if [ -f "$name.check" ]; then
+  "$mbc" check "$name.nc" 2>"$work/check" >/dev/null
+  status=$?
+  compare "$name.check" "$work/check" "check diagnostics"
+else
+  args=()
+  if [ -f "$name.args" ]; then
+    mapfile -t args < <(grep -v '^[[:space:]]*$' "$name.args")
+  fi
+  "$mbc" run "$name.nc" "${args[@]}" --toolpath "$work/toolpath.jsonl" \
+    --dprnt "$work/dprnt" --vars-out "$work/vars.json" 2>"$work/stderr"
+  status=$?
+  for f in toolpath.jsonl dprnt vars.json stderr; do
+    if [ -f "$name.$f" ] || { [ -n "$bless" ] && [ -s "$work/$f" ]; }; then
+      [ -f "$work/$f" ] || : >"$work/$f"
+      compare "$name.$f" "$work/$f" "$f"
+    fi
+  done
+fi
+if [ -n "$bless" ]; then
+  if [ "$status" != 0 ]; then echo "$status" >"$name.status"; else rm -f "$name.status"; fi
+  echo "blessed $name (status $status)"
+  exit 0
+fi
+if [ "$status" != "$expected_status" ]; then
+  echo "FAIL: $name: exit status $status, expected $expected_status"
+  cat "$work"/stderr 2>/dev/null
+  fail=1
+fi
+exit $fail
