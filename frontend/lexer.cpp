@@ -233,6 +233,12 @@ Token Lexer::lexSpecial(std::uint32_t begin) {
       return make(Tok::Slash, begin);
     case '=':
       return make(Tok::Equal, begin);
+    case ':': {
+      // ISO code writes ':' for the program number address O.
+      Token t = make(Tok::Letter, begin);
+      t.text = "O";
+      return t;
+    }
     case '<': {
       while (pos_ < end_ && text_[pos_] != '>' && text_[pos_] != '\n') {
         ++pos_;

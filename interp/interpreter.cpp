@@ -85,7 +85,8 @@ mbrt_status Interpreter::step(const Block& b) {
       if (mbrt_status st = evalCond(*s.cond, taken)) {
         return st;
       }
-      if (mbrt_tracing(ctx_)) {
+      // A taken IF-THEN is traced with its assignment by execAssign.
+      if (mbrt_tracing(ctx_) && !(taken && s.kind == StmtKind::IfThen)) {
         trace(s, nullptr, taken ? "true" : "false");
       }
       if (!taken) {

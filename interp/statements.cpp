@@ -50,6 +50,11 @@ mbrt_status Interpreter::execAssign(const Stmt& s) {
 
 mbrt_status Interpreter::execGoto(const Stmt& s) {
   if (s.gotoBlock) {
+    if (mbrt_tracing(ctx_) && s.kind == StmtKind::Goto) {
+      trace(s, nullptr,
+            fmt::format("N{}", unit_.programs[prog_].blocks[*s.gotoBlock].seq)
+                .c_str());
+    }
     pc_ = *s.gotoBlock;
     return 0;
   }
@@ -58,6 +63,9 @@ mbrt_status Interpreter::execGoto(const Stmt& s) {
     return st;
   }
   double n = roundHalfAway(numeric(target));
+  if (mbrt_tracing(ctx_) && s.kind == StmtKind::Goto) {
+    trace(s, nullptr, fmt::format("N{}", n).c_str());
+  }
   if (n < 1 || n > 99999) {
     return mbrt_raise(ctx_,
                       static_cast<int>(AlarmId::IllegalMacroSequenceNumber),

@@ -19,14 +19,6 @@ std::string wordsText(const std::vector<mbrt_word>& words) {
 
 const char* stmtName(StmtKind k) {
   switch (k) {
-    case StmtKind::IfGoto:
-      return "IF-GOTO";
-    case StmtKind::IfThen:
-      return "IF-THEN";
-    case StmtKind::While:
-      return "WHILE";
-    case StmtKind::End:
-      return "END";
     case StmtKind::Dprnt:
       return "DPRNT";
     case StmtKind::Bprnt:
@@ -54,6 +46,18 @@ void Interpreter::trace(const Stmt& s, const std::vector<mbrt_word>* words,
       break;
     case StmtKind::Assign:
       text = outcome;
+      break;
+    case StmtKind::IfGoto:
+      text = fmt::format("IF [{}] GOTO", outcome);
+      break;
+    case StmtKind::IfThen:
+      text =
+          fmt::format("IF [{}] THEN {}",
+                      std::string_view(outcome) == "false" ? "false" : "true",
+                      std::string_view(outcome) == "false" ? "" : outcome);
+      break;
+    case StmtKind::Goto:
+      text = fmt::format("GOTO {}", outcome);
       break;
     case StmtKind::While:
       text = s.cond ? fmt::format("WHILE [{}] DO{}", outcome, s.loopId)
