@@ -4,6 +4,7 @@
 #include "sysvars.h"
 
 #include <mbc/arith.h>
+#include <mbc/sysvars.h>
 
 #include <fmt/format.h>
 
@@ -349,6 +350,33 @@ const SysVarRange* findSystemVariable(long n) {
 }
 
 } // namespace
+
+} // namespace mbc::rt
+
+namespace mbc {
+
+// The compile-time view of the same table, for the default machine: a
+// system variable without a writer is read-only.
+VarAccess variableAccess(int n) {
+  if (n == 0) {
+    return VarAccess::ReadOnly;
+  }
+  if ((n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999)) {
+    return VarAccess::ReadWrite;
+  }
+  if (n < 1000) {
+    return VarAccess::Missing;
+  }
+  const rt::SysVarRange* range = rt::findSystemVariable(n);
+  if (range == nullptr) {
+    return VarAccess::Missing;
+  }
+  return range->write ? VarAccess::ReadWrite : VarAccess::ReadOnly;
+}
+
+} // namespace mbc
+
+namespace mbc::rt {
 
 mbrt_status readSystemVariable(mbrt_ctx& ctx, long n, Num* out) {
   const SysVarRange* range = findSystemVariable(n);

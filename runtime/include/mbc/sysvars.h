@@ -5,7 +5,7 @@
 
 namespace mbc {
 
-enum class VarAccess { Missing, ReadOnly, WriteOnly, ReadWrite };
+enum class VarAccess { Missing, ReadOnly, ReadWrite };
 
 /// The access class of #n on the built-in default machine (spec §2, §6).
 VarAccess variableAccess(int n);
