@@ -106,6 +106,29 @@ Lexer::Lexer(const SourceManager& sources, std::uint32_t file,
   findTextBounds();
 }
 
+// The first '%' from `from` that is program text: a '%' inside a ( )
+// comment or after ';' on its line is comment text ("(50% STEPOVER)").
+std::size_t Lexer::findClosingPercent(std::uint32_t from) const {
+  bool inParen = false, inLineComment = false;
+  for (std::size_t i = from; i < text_.size(); ++i) {
+    char c = text_[i];
+    if (c == '\n' || isLoneCr(static_cast<std::uint32_t>(i))) {
+      inParen = inLineComment = false;
+    } else if (inLineComment) {
+      continue;
+    } else if (c == '(') {
+      inParen = true;
+    } else if (c == ')') {
+      inParen = false;
+    } else if (c == ';' && !inParen) {
+      inLineComment = true;
+    } else if (c == '%' && !inParen) {
+      return i;
+    }
+  }
+  return std::string_view::npos;
+}
+
 // A file that opens with '%' has a leader before it and ends at the next '%';
 // a file that does not ends at its first '%' (spec §1.1).
 void Lexer::findTextBounds() {
@@ -121,7 +144,7 @@ void Lexer::findTextBounds() {
       ++pos_;
     }
   }
-  std::size_t close = text_.find('%', pos_);
+  std::size_t close = findClosingPercent(pos_);
   end_ = close == std::string_view::npos ? size
                                          : static_cast<std::uint32_t>(close);
   if (close == std::string_view::npos) {
@@ -159,13 +182,21 @@ Token Lexer::make(Tok kind, std::uint32_t begin) {
 // CR is ignored before LF; a CR that ends a line on its own (old Mac files)
 // ends the block like LF.
 bool Lexer::isLoneCr(std::uint32_t i) const {
-  return text_[i] == '\r' && (i + 1 >= end_ || text_[i + 1] != '\n');
+  return text_[i] == '\r' && (i + 1 >= text_.size() || text_[i + 1] != '\n');
 }
 
 void Lexer::skipSpaces() {
   while (pos_ < end_ && isBlank(text_[pos_]) && !isLoneCr(pos_)) {
     ++pos_;
   }
+}
+
+std::string_view Lexer::restOfBlock() const {
+  std::uint32_t i = pos_;
+  while (i < end_ && text_[i] != '\n' && !isLoneCr(i)) {
+    ++i;
+  }
+  return text_.substr(pos_, i - pos_);
 }
 
 void Lexer::skipBlock() {

@@ -22,6 +22,9 @@ public:
   /// Skips to the end of the current block (error recovery).
   void skipBlock();
 
+  /// The text from the lexer's position to the end of the block, unread.
+  std::string_view restOfBlock() const;
+
   /// True once the closing '%' (or the end of the file) was reached.
   bool atEnd() const { return pos_ >= end_; }
 
@@ -35,6 +38,7 @@ private:
   void skipSpaces();
   bool isLoneCr(std::uint32_t i) const;
   void findTextBounds();
+  std::size_t findClosingPercent(std::uint32_t from) const;
   char upperAt(std::uint32_t i);
 
   const SourceManager& sources_;

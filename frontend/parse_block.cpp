@@ -174,7 +174,9 @@ void Parser::parseBlock() {
     parseStatement(b);
     expectEndOfBlock(b.stmt);
   } catch (const BlockError&) {
+    std::string_view rest = lexer_.restOfBlock();
     resynchronise();
+    keepBrokenBlock(b, rest);
     return;
   }
   b.range.length = tok_.range.begin.offset - b.range.begin.offset;
@@ -200,6 +202,38 @@ void Parser::noteParenthesis(const Token& after) {
   if (c.range.begin.offset >= end &&
       c.range.begin.offset <= tok_.range.begin.offset) {
     diags_.note(DiagKind::ParenthesisIsComment, c.range);
+  }
+}
+
+// A block with an error is not run (the run needs an error-free file), but
+// its N number and a DOm/ENDm in it still matter to the semantic checks:
+// without them one typo would also be reported as a missing GOTO target or
+// an unmatched loop.
+void Parser::keepBrokenBlock(Block& b, std::string_view rest) {
+  bool loop =
+      (b.stmt.kind == StmtKind::While || b.stmt.kind == StmtKind::End) &&
+      b.stmt.loopId > 0;
+  if (!loop) {
+    b.stmt = Stmt{};
+    b.stmt.range.begin = b.range.begin;
+    for (std::size_t i = 0; i + 2 < rest.size(); ++i) {
+      bool end = rest.substr(i, 3) == "END";
+      if (!end && rest.substr(i, 2) != "DO") {
+        continue;
+      }
+      std::size_t j = i + (end ? 3 : 2);
+      while (j < rest.size() && rest[j] == ' ') {
+        ++j;
+      }
+      if (j < rest.size() && rest[j] >= '1' && rest[j] <= '9') {
+        b.stmt.kind = end ? StmtKind::End : StmtKind::While;
+        b.stmt.loopId = rest[j] - '0';
+        break;
+      }
+    }
+  }
+  if (b.stmt.kind != StmtKind::Empty || b.seq >= 0) {
+    currentProgram(b.range.begin).blocks.push_back(std::move(b));
   }
 }
 

@@ -58,6 +58,7 @@ private:
   void expectEndOfBlock(const Stmt& s);
   [[noreturn]] void misplacedHeader();
   void resynchronise();
+  void keepBrokenBlock(Block& b, std::string_view rest);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;
   std::string messageAfter(std::uint32_t offset) const;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace mbc {
 
@@ -120,34 +121,45 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
 // Variables that cannot exist on the default machine are only a warning: a
 // profile may add them (#200-#499), and the control alarms only if the block
 // runs.
-void checkVariables(const Expr& e, DiagnosticEngine& diags) {
-  if (e.kind == ExprKind::Var && variableAccess(e.var) == VarAccess::Missing) {
-    diags.report(DiagKind::VariableMissing, e.range, e.var);
-  }
-  for (const ExprPtr& a : e.args) {
-    checkVariables(*a, diags);
+// One warning per variable and program is enough to make the point.
+using Reported = std::set<int>;
+
+void warnMissing(int n, SourceRange at, Reported& reported,
+                 DiagnosticEngine& diags) {
+  if (variableAccess(n) == VarAccess::Missing && reported.insert(n).second) {
+    diags.report(DiagKind::VariableMissing, at, n);
   }
 }
 
-void checkStatementVariables(const Stmt& s, DiagnosticEngine& diags) {
+void checkVariables(const Expr& e, Reported& reported,
+                    DiagnosticEngine& diags) {
+  if (e.kind == ExprKind::Var) {
+    warnMissing(e.var, e.range, reported, diags);
+  }
+  for (const ExprPtr& a : e.args) {
+    checkVariables(*a, reported, diags);
+  }
+}
+
+void checkStatementVariables(const Stmt& s, Reported& reported,
+                             DiagnosticEngine& diags) {
   for (const Expr* e : {s.value.get(), s.cond.get(), s.target.index.get(),
                         s.program.get(), s.repeat.get()}) {
     if (e) {
-      checkVariables(*e, diags);
+      checkVariables(*e, reported, diags);
     }
   }
   for (const Word& w : s.words) {
-    checkVariables(*w.value, diags);
+    checkVariables(*w.value, reported, diags);
   }
   for (const PrintItem& it : s.items) {
     if (it.value) {
-      checkVariables(*it.value, diags);
+      checkVariables(*it.value, reported, diags);
     }
   }
   bool assigns = s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen;
-  if (assigns && !s.target.index &&
-      variableAccess(s.target.number) == VarAccess::Missing) {
-    diags.report(DiagKind::VariableMissing, s.target.range, s.target.number);
+  if (assigns && !s.target.index) {
+    warnMissing(s.target.number, s.target.range, reported, diags);
   }
 }
 
@@ -180,9 +192,10 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags) {
   for (Program& p : unit.programs) {
     matchLoops(p, diags);
     checkSequences(p, diags);
+    Reported reported;
     for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
       Stmt& s = p.blocks[i].stmt;
-      checkStatementVariables(s, diags);
+      checkStatementVariables(s, reported, diags);
       if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
         resolveGoto(p, i, diags);
       } else if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
