@@ -53,11 +53,13 @@ bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
     first = false;
   }
   json += "}\n";
-  // A pipe, a terminal or "-" cannot be replaced by rename: write directly.
+  // Only a regular file (or a new one) is replaced through a temporary file
+  // and rename; a pipe, a terminal, a symlink such as /dev/stdout or "-" is
+  // written in place (appending, so a redirected stdout keeps its content).
   struct stat info;
   if (path == "-" ||
-      (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))) {
-    std::FILE* out = path == "-" ? stdout : std::fopen(path.c_str(), "wb");
+      (lstat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))) {
+    std::FILE* out = path == "-" ? stdout : std::fopen(path.c_str(), "ab");
     if (!out) {
       return false;
     }
