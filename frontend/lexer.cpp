@@ -129,19 +129,28 @@ std::size_t Lexer::findClosingPercent(std::uint32_t from) const {
   return std::string_view::npos;
 }
 
-// A file that opens with '%' has a leader before it and ends at the next '%';
-// a file that does not ends at its first '%' (spec §1.1).
+// The program text lies between the two '%' marks; what comes before the
+// first is leader (spec §1.1). A file with a single '%' (a listing that only
+// ends with one) runs from its start to that '%'.
 void Lexer::findTextBounds() {
   auto size = static_cast<std::uint32_t>(text_.size());
-  std::uint32_t i = 0;
-  while (i < size && (isBlank(text_[i]) || text_[i] == '\n')) {
-    ++i;
-  }
   pos_ = 0;
-  if (i < size && text_[i] == '%') {
-    pos_ = i + 1;
+  std::size_t first = findClosingPercent(0);
+  if (first != std::string_view::npos &&
+      findClosingPercent(static_cast<std::uint32_t>(first) + 1) !=
+          std::string_view::npos) {
+    pos_ = static_cast<std::uint32_t>(first) + 1;
     while (pos_ < size && text_[pos_] != '\n') {
       ++pos_;
+    }
+  } else if (first != std::string_view::npos) {
+    // A lone '%' that opens the file starts an unterminated text.
+    std::uint32_t i = 0;
+    while (i < size && (isBlank(text_[i]) || text_[i] == '\n')) {
+      ++i;
+    }
+    if (i == first) {
+      pos_ = i + 1;
     }
   }
   std::size_t close = findClosingPercent(pos_);
