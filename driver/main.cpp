@@ -1,6 +1,7 @@
 // The mbc command: `mbc run` executes a Macro B program, `mbc check` only
 // reports diagnostics.
 #include "driver/compile_unit.h"
+#include "driver/ir_pipeline.h"
 #include "driver/options.h"
 #include "driver/run_command.h"
 
@@ -14,6 +15,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mbc: error: %s\n%s", error.c_str(),
                  usageText().c_str());
     return 2;
+  }
+  if (options->command == "emit-ir") {
+    return emitIrCommand(options->files);
   }
   if (options->command == "check") {
     CompiledUnit cu;

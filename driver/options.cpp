@@ -50,7 +50,8 @@ std::string usageText() {
          "                [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n"
          "                [--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n"
          "                [--max-blocks N] [--block-skip[=N]] [--trace]\n"
-         "       mbc check FILE...\n";
+         "       mbc check FILE...\n"
+         "       mbc emit-ir FILE... [--no-opt]\n";
 }
 
 std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
@@ -60,7 +61,7 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     return std::nullopt;
   }
   o.command = argv[1];
-  if (o.command != "run" && o.command != "check") {
+  if (o.command != "run" && o.command != "check" && o.command != "emit-ir") {
     error = fmt::format("unknown command '{}'", o.command);
     return std::nullopt;
   }
@@ -84,6 +85,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     };
     if (name == "--trace") {
       o.trace = true;
+    } else if (name == "--no-opt") {
+      o.noOpt = true;
     } else if (name == "--block-skip") {
       double n = 1;
       if (inlineValue &&
@@ -144,9 +147,12 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     error = "no input file";
     return std::nullopt;
   }
-  if (o.engine != "interp") {
-    error = fmt::format("engine '{}' is not available yet (only 'interp')",
-                        o.engine);
+  if (o.engine != "interp" && o.engine != "ir") {
+    error = fmt::format("unknown engine '{}' (interp or ir)", o.engine);
+    return std::nullopt;
+  }
+  if (o.trace && o.engine != "interp") {
+    error = "--trace is only available with --engine interp for now";
     return std::nullopt;
   }
   return o;

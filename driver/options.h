@@ -9,7 +9,7 @@
 namespace mbc::driver {
 
 struct Options {
-  std::string command; // "run" or "check"
+  std::string command; // "run", "check" or "emit-ir"
   std::vector<std::string> files;
   std::string mainProgram; // --main O1234 / <NAME>
   std::string engine = "interp";
@@ -22,6 +22,7 @@ struct Options {
   std::uint64_t maxBlocks = 0;
   unsigned blockSkipMask = 0;
   bool trace = false;
+  bool noOpt = false; // emit-ir: the raw lowering (no passes exist yet)
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message

@@ -2,6 +2,8 @@
 #include "driver/run_command.h"
 
 #include "driver/compile_unit.h"
+#include "driver/ir_pipeline.h"
+#include "ir/evaluator.h"
 #include "driver/output_files.h"
 #include "interp/interpreter.h"
 #include <mbc/runtime.h>
@@ -89,6 +91,10 @@ int runCommand(const Options& o) {
                  o.mainProgram.c_str());
     return 2;
   }
+  ir::Module module;
+  if (o.engine == "ir" && !buildModule(cu, module)) {
+    return 4;
+  }
   CtxPtr ctx = createContext(o);
   if (!ctx) {
     return 2;
@@ -133,15 +139,20 @@ int runCommand(const Options& o) {
     st = mbrt_set_main_args(ctx.get(), words.data(), words.size());
   }
   if (!st) {
-    InterpOptions io;
-    io.blockSkipMask = o.blockSkipMask;
+    unsigned skipMask = o.blockSkipMask;
     if (mbrt_block_skip(ctx.get())) {
-      io.blockSkipMask |= 1U << 1;
+      skipMask |= 1U << 1;
     }
-    io.math.nat =
-        (static_cast<long>(mbrt_parameter(ctx.get(), 6004)) & 1) != 0;
-    Interpreter interp(cu.unit, cu.sources, ctx.get(), io);
-    st = interp.run(mainIndex);
+    MathParams math;
+    math.nat = (static_cast<long>(mbrt_parameter(ctx.get(), 6004)) & 1) != 0;
+    if (o.engine == "ir") {
+      ir::EvalOptions eo{math, skipMask};
+      st = ir::evaluate(module, mainIndex, ctx.get(), eo);
+    } else {
+      Interpreter interp(cu.unit, cu.sources, ctx.get(),
+                         InterpOptions{math, skipMask});
+      st = interp.run(mainIndex);
+    }
   }
   if (st) {
     char report[4096];

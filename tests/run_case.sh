@@ -7,6 +7,8 @@
 #                 expected outputs of `mbc run`
 # CASE.check      expected standard error of `mbc check` (its exit status is
 #                 CASE.status) -- for programs that must be diagnosed
+# MBC_ENGINE=ir runs the case under another engine: the expected outputs are
+# the same files, since every engine must give byte-identical output.
 # Paths are printed relative to the case's folder, so the case runs from there.
 set -u
 mbc=$(realpath "$1")
@@ -40,7 +42,9 @@ else
   if [ -f "$name.args" ]; then
     mapfile -t args < <(grep -v '^[[:space:]]*$' "$name.args")
   fi
-  "$mbc" run "$name.nc" "${args[@]}" --toolpath "$work/toolpath.jsonl" \
+  engine=()
+  [ -n "${MBC_ENGINE:-}" ] && engine=(--engine "$MBC_ENGINE")
+  "$mbc" run "$name.nc" "${args[@]}" "${engine[@]}" --toolpath "$work/toolpath.jsonl" \
     --dprnt "$work/dprnt" --vars-out "$work/vars.json" 2>"$work/stderr"
   status=$?
   for f in toolpath.jsonl dprnt vars.json stderr; do

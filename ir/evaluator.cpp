@@ -1,0 +1,299 @@
+// The IR evaluator's control: activations, phis, terminators, calls (G65,
+// M98) and returns (M99 [P], the end of a called program's text), mirroring
+// interp/interpreter.cpp and interp/statements.cpp effect for effect.
+#include "ir/evaluator.h"
+
+#include "ir/evaluator_impl.h"
+
+#include <fmt/format.h>
+
+namespace mbc::ir {
+
+namespace detail {
+
+Evaluator::Evaluator(const Module& module, mbrt_ctx* ctx,
+                     const EvalOptions& options)
+    : module_(module), ctx_(ctx), options_(options) {
+  for (int i = 0; i < static_cast<int>(module.functions.size()); ++i) {
+    if (module.functions[i].number >= 0) {
+      byNumber_.emplace(module.functions[i].number, i);
+    }
+  }
+}
+
+mbrt_status Evaluator::run(int mainIndex) {
+  if (mainIndex < 0 ||
+      mainIndex >= static_cast<int>(module_.functions.size())) {
+    return internalError("no main function");
+  }
+  mbrt_status st = runFunction(mainIndex, 0);
+  return st > 0 ? st : 0;
+}
+
+int Evaluator::findProgram(double number) const {
+  double n = roundHalfAway(number);
+  if (n < 0 || n > 1e8) {
+    return -1;
+  }
+  auto it = byNumber_.find(static_cast<int>(n));
+  return it == byNumber_.end() ? -1 : it->second;
+}
+
+mbrt_status Evaluator::internalError(const char* what) {
+  return mbrt_raise(ctx_, static_cast<int>(AlarmId::Unsupported),
+                    fmt::format("IR evaluator: {}", what).c_str());
+}
+
+Frame& Evaluator::frameAt(int depth, const Function& fn) {
+  while (frames_.size() <= static_cast<std::size_t>(depth)) {
+    frames_.push_back(std::make_unique<Frame>());
+  }
+  Frame& frame = *frames_[static_cast<std::size_t>(depth)];
+  if (frame.values.size() < fn.insts.size()) {
+    frame.values.resize(fn.insts.size());
+    frame.flows.resize(fn.insts.size());
+  }
+  frame.hasSeq = false;
+  frame.seq = 0;
+  return frame;
+}
+
+// Runs one activation. 0: it left normally (frame.hasSeq/seq tell whether
+// by M99 P); kStop: the run ended; otherwise the alarm.
+mbrt_status Evaluator::runFunction(int index, int depth) {
+  const Function& fn = module_.functions[static_cast<std::size_t>(index)];
+  Frame& frame = frameAt(depth, fn);
+  BlockId block = 0;
+  BlockId pred = kLeave;
+  for (;;) {
+    if (block >= fn.blocks.size() || fn.blocks[block].insts.empty()) {
+      return internalError("branch to a missing or empty block");
+    }
+    const Block& b = fn.blocks[block];
+    std::size_t i = 0;
+    if (fn.insts[b.insts[0]].op == Op::Phi) {
+      if (mbrt_status st = enterPhis(fn, frame, b, pred, i)) {
+        return st;
+      }
+    }
+    const std::size_t last = b.insts.size() - 1;
+    for (; i < last; ++i) {
+      if (mbrt_status st = exec(fn, frame, depth, b.insts[i])) {
+        return st;
+      }
+    }
+    BlockId next = kLeave;
+    if (mbrt_status st =
+            terminate(fn, frame, depth, fn.insts[b.insts[last]], next)) {
+      return st;
+    }
+    if (next == kLeave) {
+      return 0;
+    }
+    pred = block;
+    block = next;
+  }
+}
+
+// The phis at the head of a block read their inputs for `pred` first and
+// are assigned afterwards (parallel copy). `first` is set to the first
+// instruction after them.
+mbrt_status Evaluator::enterPhis(const Function& fn, Frame& frame,
+                                 const Block& block, BlockId pred,
+                                 std::size_t& first) {
+  first = 0;
+  phiValues_.clear();
+  phiFlows_.clear();
+  for (;
+       first < block.insts.size() && fn.insts[block.insts[first]].op == Op::Phi;
+       ++first) {
+    const Inst& phi = fn.insts[block.insts[first]];
+    std::size_t k = 0;
+    while (k < phi.targets.size() && phi.targets[k] != pred) {
+      ++k;
+    }
+    if (k >= phi.targets.size() || k >= phi.ops.size()) {
+      return internalError("phi without an input for its predecessor");
+    }
+    if (phi.type == Type::Flow) {
+      phiFlows_.push_back(frame.flows[phi.ops[k]]);
+    } else {
+      phiValues_.push_back(frame.values[phi.ops[k]]);
+    }
+  }
+  std::size_t nv = 0;
+  std::size_t nf = 0;
+  for (std::size_t i = 0; i < first; ++i) {
+    ValueId id = block.insts[i];
+    if (fn.insts[id].type == Type::Flow) {
+      frame.flows[id] = phiFlows_[nf++];
+    } else {
+      frame.values[id] = phiValues_[nv++];
+    }
+  }
+  return 0;
+}
+
+mbrt_status Evaluator::terminate(const Function& fn, Frame& frame, int depth,
+                                 const Inst& inst, BlockId& next) {
+  switch (inst.op) {
+    case Op::Br:
+      next = inst.targets[0];
+      return 0;
+    case Op::CondBr:
+      next = frame.values[inst.ops[0]] != 0 ? inst.targets[0] : inst.targets[1];
+      return 0;
+    case Op::Switch:
+      return switchTo(fn, inst, frame.values[inst.ops[0]], next);
+    case Op::Resume:
+      return resume(fn, frame, depth, inst, next);
+    case Op::Ret:
+      // The end of a called program's text returns like M99; the end of the
+      // main program's text ends the run.
+      if (depth == 0) {
+        mbrt_finish(ctx_, MBRT_END_PROGRAM);
+        return kStop;
+      }
+      next = kLeave;
+      return 0;
+    case Op::Unreachable:
+      return internalError("unreachable code reached");
+    default:
+      return internalError("block without a terminator");
+  }
+}
+
+// Computed GOTO (interp execGoto/jumpTo).
+mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
+                                double value, BlockId& next) {
+  double target = numeric(value);
+  double n = roundHalfAway(target);
+  if (n < 1 || n > 99999) {
+    return mbrt_raise(ctx_,
+                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
+                      fmt::format("GOTO {}", target).c_str());
+  }
+  return caseTarget(fn, inst, static_cast<int>(n), 0, next);
+}
+
+// M99 P from a callee: resume at that N of this function (interp leave).
+mbrt_status Evaluator::jumpToSeq(const Function& fn, const Inst& inst,
+                                 double seq, BlockId& next) {
+  double n = roundHalfAway(seq);
+  if (n < 1 || n > 99999) {
+    return mbrt_raise(ctx_,
+                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
+                      fmt::format("M99 P{}", seq).c_str());
+  }
+  return caseTarget(fn, inst, static_cast<int>(n), 1, next);
+}
+
+// The case for sequence number `seq`: cases[i] goes to targets[i + offset].
+mbrt_status Evaluator::caseTarget(const Function& fn, const Inst& inst, int seq,
+                                  std::size_t offset, BlockId& next) {
+  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
+    if (inst.cases[i] == seq && i + offset < inst.targets.size()) {
+      next = inst.targets[i + offset];
+      return 0;
+    }
+  }
+  return mbrt_raise(ctx_, static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
+                    fmt::format("N{} not found in {}", seq, fn.name).c_str());
+}
+
+mbrt_status Evaluator::resume(const Function& fn, Frame& frame, int depth,
+                              const Inst& inst, BlockId& next) {
+  const FlowRec& rec = frame.flows[inst.ops[0]];
+  if (!rec.fromCall) {
+    return resumeNc(fn, frame, depth, inst, next);
+  }
+  if (rec.flow.has_seq) {
+    return jumpToSeq(fn, inst, rec.flow.seq, next);
+  }
+  next = inst.targets[0];
+  return 0;
+}
+
+// The flow of an NC block (interp execNc).
+mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
+                                const Inst& inst, BlockId& next) {
+  const mbrt_flow flow = frame.flows[inst.ops[0]].flow;
+  switch (flow.kind) {
+    case MBRT_FLOW_CALL_SUB: {
+      int target = findProgram(flow.program);
+      if (target < 0) {
+        return mbrt_raise(ctx_, static_cast<int>(AlarmId::ProgramNotFound),
+                          fmt::format("O{:04d}", flow.program).c_str());
+      }
+      FlowRec out{};
+      if (flow.repeat > 0) {
+        if (mbrt_status st =
+                call(target, depth, false, nullptr, 0, flow.repeat, out)) {
+          return st;
+        }
+      }
+      if (out.flow.has_seq) {
+        return jumpToSeq(fn, inst, out.flow.seq, next);
+      }
+      next = inst.targets[0];
+      return 0;
+    }
+    case MBRT_FLOW_RETURN:
+      if (depth == 0) {
+        // M99 in the main program ends a batch run (spec Part A).
+        mbrt_finish(ctx_, MBRT_END_MAIN_M99);
+        return kStop;
+      }
+      frame.hasSeq = flow.has_seq != 0;
+      frame.seq = flow.seq;
+      next = kLeave;
+      return 0;
+    case MBRT_FLOW_END:
+      mbrt_finish(ctx_, flow.counts_part ? MBRT_END_M02_M30 : MBRT_END_PROGRAM);
+      return kStop;
+    default:
+      next = inst.targets[0];
+      return 0;
+  }
+}
+
+// Runs function `callee` `repeat` times (G65 with a new local level, or M98
+// on the same one) like interp enter/leave: after every run mbrt_return,
+// then the next repetition unless the callee left by M99 P. `out` is the
+// call's flow: NEXT, with has_seq/seq for M99 P.
+mbrt_status Evaluator::call(int callee, int depth, bool macro,
+                            const mbrt_word* args, std::size_t count,
+                            long repeat, FlowRec& out) {
+  const char* name =
+      module_.functions[static_cast<std::size_t>(callee)].name.c_str();
+  out = FlowRec{};
+  out.fromCall = true;
+  for (;;) {
+    mbrt_status st = macro ? mbrt_call_macro(ctx_, name, args, count)
+                           : mbrt_call_sub(ctx_, name);
+    if (st) {
+      return st;
+    }
+    if ((st = runFunction(callee, depth + 1))) {
+      return st;
+    }
+    const Frame& done = *frames_[static_cast<std::size_t>(depth) + 1];
+    mbrt_return(ctx_);
+    if (--repeat > 0 && !done.hasSeq) {
+      continue;
+    }
+    out.flow.has_seq = done.hasSeq ? 1 : 0;
+    out.flow.seq = done.seq;
+    return 0;
+  }
+}
+
+} // namespace detail
+
+mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx,
+                     const EvalOptions& options) {
+  detail::Evaluator evaluator(module, ctx, options);
+  return evaluator.run(mainIndex);
+}
+
+} // namespace mbc::ir

@@ -1,0 +1,24 @@
+// The IR evaluator (--engine ir): runs a module instruction by instruction
+// with the same runtime calls, in the same order, as the reference
+// interpreter (interp/), so both engines give the same motion, output,
+// variables and alarms. It is the baseline later passes are checked against.
+#pragma once
+
+#include "ir/ir.h"
+#include <mbc/arith.h>
+#include <mbc/runtime.h>
+
+namespace mbc::ir {
+
+struct EvalOptions {
+  MathParams math;
+  /// Bit n set: optional block skip switch /n is on (bit 1 for plain '/').
+  unsigned blockSkipMask = 0;
+};
+
+/// Runs module.functions[mainIndex] like the interpreter runs a program
+/// (after the caller's mbrt_start). Returns 0 or the alarm that stopped it.
+mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx,
+                     const EvalOptions& options);
+
+} // namespace mbc::ir

@@ -1,0 +1,94 @@
+// Internals of the IR evaluator (evaluator.h), shared by evaluator.cpp
+// (activations, terminators, calls) and evaluator_ops.cpp (the other
+// instructions). Not part of the library's interface.
+#pragma once
+
+#include "ir/evaluator.h"
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace mbc::ir::detail {
+
+/// Internal status: the run ended normally (mbrt_finish was called); every
+/// activation unwinds and evaluate() returns 0. Alarms are > 0.
+inline constexpr mbrt_status kStop = -1;
+
+/// A flow value: the record of an NC block, or the outcome of a call
+/// (fromCall: flow.kind is NEXT, with has_seq/seq for the callee's M99 P).
+struct FlowRec {
+  mbrt_flow flow;
+  bool fromCall;
+};
+
+/// The storage of one activation. Frames are kept per call depth and reused,
+/// so a call allocates only the first time its depth is reached.
+struct Frame {
+  std::vector<double> values;  // by ValueId: numbers, bools as 0/1
+  std::vector<FlowRec> flows;  // by ValueId: flow values
+  std::vector<mbrt_word> args; // call.macro arguments, kept over the repeats
+  bool hasSeq = false;         // how the activation left: M99 P seq
+  double seq = 0;
+};
+
+class Evaluator {
+public:
+  Evaluator(const Module& module, mbrt_ctx* ctx, const EvalOptions& options);
+
+  mbrt_status run(int mainIndex);
+
+private:
+  static constexpr BlockId kLeave = 0xffffffffU;
+
+  // Control (evaluator.cpp).
+  mbrt_status runFunction(int index, int depth);
+  Frame& frameAt(int depth, const Function& fn);
+  mbrt_status enterPhis(const Function& fn, Frame& frame, const Block& block,
+                        BlockId pred, std::size_t& first);
+  mbrt_status terminate(const Function& fn, Frame& frame, int depth,
+                        const Inst& inst, BlockId& next);
+  mbrt_status resume(const Function& fn, Frame& frame, int depth,
+                     const Inst& inst, BlockId& next);
+  mbrt_status resumeNc(const Function& fn, Frame& frame, int depth,
+                       const Inst& inst, BlockId& next);
+  mbrt_status switchTo(const Function& fn, const Inst& inst, double value,
+                       BlockId& next);
+  mbrt_status jumpToSeq(const Function& fn, const Inst& inst, double seq,
+                        BlockId& next);
+  mbrt_status caseTarget(const Function& fn, const Inst& inst, int seq,
+                         std::size_t offset, BlockId& next);
+  mbrt_status call(int callee, int depth, bool macro, const mbrt_word* args,
+                   std::size_t count, long repeat, FlowRec& out);
+  int findProgram(double number) const;
+  mbrt_status internalError(const char* what);
+
+  // Instructions (evaluator_ops.cpp).
+  mbrt_status exec(const Function& fn, Frame& frame, int depth, ValueId id);
+  mbrt_status execValue(const Inst& inst, Frame& frame, ValueId id);
+  mbrt_status execLogic(const Inst& inst, Frame& frame, ValueId id);
+  mbrt_status execVariable(const Inst& inst, Frame& frame, ValueId id);
+  mbrt_status execEffect(const Inst& inst, Frame& frame, int depth, ValueId id);
+  mbrt_status execFn(const Inst& inst, const Frame& frame, double& out);
+  mbrt_status execRoundAddr(const Inst& inst, const Frame& frame, double& out);
+  mbrt_status execNc(const Inst& inst, Frame& frame, FlowRec& out);
+  mbrt_status execCallMacro(const Inst& inst, Frame& frame, int depth,
+                            FlowRec& out);
+  mbrt_status execPrint(const Inst& inst, const Frame& frame);
+  mbrt_status buildWords(const Inst& inst, const Frame& frame,
+                         std::size_t first, std::vector<mbrt_word>& out);
+  const char* message(const Inst& inst) const;
+  mbrt_status check(AlarmId id);
+
+  const Module& module_;
+  mbrt_ctx* ctx_;
+  EvalOptions options_;
+  std::unordered_map<int, int> byNumber_;      // O number -> function index
+  std::vector<std::unique_ptr<Frame>> frames_; // by call depth
+  std::vector<mbrt_word> words_;               // nc words (no recursion)
+  std::vector<mbrt_print_item> items_;         // dprnt/bprnt items
+  std::vector<double> phiValues_;              // parallel copy of phis
+  std::vector<FlowRec> phiFlows_;
+};
+
+} // namespace mbc::ir::detail

@@ -1,0 +1,365 @@
+// AST -> IR lowering (see lower.h). The control flow mirrors the reference
+// interpreter block for block, so that both engines raise the same alarms at
+// the same blocks: a source block's head is where GOTO, WHILE and END jump,
+// and its `begin` counts it exactly once per execution.
+#include "ir/lower.h"
+
+#include "frontend/sema.h"
+
+#include <set>
+
+namespace mbc::ir {
+
+namespace {
+
+class FunctionLowering {
+public:
+  FunctionLowering(const Program& program, Module& module, Function& fn)
+      : program_(program), module_(module), fn_(fn) {}
+
+  void run();
+
+private:
+  BlockId newBlock();
+  ValueId emit(Op op, std::vector<ValueId> ops = {});
+  void terminate(Op op, std::vector<BlockId> targets,
+                 std::vector<ValueId> ops = {});
+  std::uint32_t intern(const std::string& s);
+  void lowerBlock(int index);
+  void lowerStatement(const Stmt& s, int index);
+  void lowerAssign(const Stmt& s);
+  void lowerGoto(const Stmt& s, int index);
+  void lowerWords(const std::vector<Word>& words, Inst& into,
+                  std::vector<ValueId>& ops);
+  void lowerPrint(const Stmt& s);
+  void resumeAfter(ValueId flow, int index);
+  void addSequenceTable(Inst& inst, int from);
+  ValueId lowerExpr(const Expr& e, char roundLetter = 0);
+  ValueId lowerCall(const Expr& e, char roundLetter);
+  ValueId constant(double v);
+
+  BlockId head(int index) const { return heads_[index]; }
+
+  const Program& program_;
+  Module& module_;
+  Function& fn_;
+  std::vector<BlockId> heads_; // head block of each source block, + exit
+  BlockId cur_ = 0;
+  std::uint32_t line_ = 0;
+  std::set<int> sequences_; // every N of the program
+};
+
+BlockId FunctionLowering::newBlock() {
+  fn_.blocks.emplace_back();
+  return static_cast<BlockId>(fn_.blocks.size() - 1);
+}
+
+ValueId FunctionLowering::emit(Op op, std::vector<ValueId> ops) {
+  Inst inst;
+  inst.op = op;
+  inst.type = opInfo(op).result;
+  inst.block = cur_;
+  inst.line = line_;
+  inst.ops = std::move(ops);
+  auto id = static_cast<ValueId>(fn_.insts.size());
+  fn_.insts.push_back(std::move(inst));
+  fn_.blocks[cur_].insts.push_back(id);
+  return id;
+}
+
+void FunctionLowering::terminate(Op op, std::vector<BlockId> targets,
+                                 std::vector<ValueId> ops) {
+  ValueId id = emit(op, std::move(ops));
+  fn_.insts[id].targets = std::move(targets);
+}
+
+std::uint32_t FunctionLowering::intern(const std::string& s) {
+  for (std::size_t i = 0; i < module_.strings.size(); ++i) {
+    if (module_.strings[i] == s) {
+      return static_cast<std::uint32_t>(i + 1);
+    }
+  }
+  module_.strings.push_back(s);
+  return static_cast<std::uint32_t>(module_.strings.size());
+}
+
+ValueId FunctionLowering::constant(double v) {
+  ValueId id = emit(Op::Const);
+  fn_.insts[id].imm = v;
+  return id;
+}
+
+void FunctionLowering::run() {
+  auto n = static_cast<int>(program_.blocks.size());
+  for (const mbc::Block& b : program_.blocks) {
+    if (b.seq >= 0) {
+      sequences_.insert(b.seq);
+    }
+  }
+  // The entry block has no predecessor, so that a GOTO to the first block
+  // (and a phi there) has a block of its own.
+  BlockId entry = newBlock();
+  for (int i = 0; i <= n; ++i) {
+    heads_.push_back(newBlock());
+  }
+  cur_ = entry;
+  terminate(Op::Br, {head(0)});
+  for (int i = 0; i < n; ++i) {
+    lowerBlock(i);
+  }
+  // The end of the text: M99 for a called program, the end of the run for
+  // the main program (the evaluator knows which it is).
+  cur_ = head(n);
+  terminate(Op::Ret, {});
+}
+
+void FunctionLowering::lowerBlock(int index) {
+  const mbc::Block& b = program_.blocks[index];
+  cur_ = head(index);
+  line_ = static_cast<std::uint32_t>(b.line);
+  if (b.skipLevel) {
+    ValueId on = emit(Op::BlockSkip);
+    fn_.insts[on].attr = b.skipLevel;
+    BlockId body = newBlock();
+    terminate(Op::CondBr, {head(index + 1), body}, {on});
+    cur_ = body;
+  }
+  ValueId begin = emit(Op::Begin);
+  fn_.insts[begin].attr = b.line;
+  lowerStatement(b.stmt, index);
+}
+
+void FunctionLowering::lowerStatement(const Stmt& s, int index) {
+  BlockId next = head(index + 1);
+  switch (s.kind) {
+    case StmtKind::Empty:
+      terminate(Op::Br, {next});
+      return;
+    case StmtKind::Assign:
+      lowerAssign(s);
+      terminate(Op::Br, {next});
+      return;
+    case StmtKind::IfGoto:
+    case StmtKind::IfThen: {
+      ValueId c = lowerExpr(*s.cond);
+      BlockId taken = newBlock();
+      terminate(Op::CondBr, {taken, next}, {c});
+      cur_ = taken;
+      if (s.kind == StmtKind::IfThen) {
+        lowerAssign(s);
+        terminate(Op::Br, {next});
+      } else {
+        lowerGoto(s, index);
+      }
+      return;
+    }
+    case StmtKind::Goto:
+      lowerGoto(s, index);
+      return;
+    case StmtKind::While:
+      if (!s.cond) {
+        terminate(Op::Br, {next});
+        return;
+      }
+      terminate(Op::CondBr, {next, head(s.match + 1)}, {lowerExpr(*s.cond)});
+      return;
+    case StmtKind::End:
+      terminate(Op::Br, {head(s.match)});
+      return;
+    case StmtKind::Nc: {
+      std::vector<ValueId> ops;
+      Inst words;
+      lowerWords(s.words, words, ops);
+      ValueId f = emit(Op::Nc, std::move(ops));
+      fn_.insts[f].cases = std::move(words.cases);
+      resumeAfter(f, index);
+      return;
+    }
+    case StmtKind::MacroCall: {
+      std::vector<ValueId> ops{lowerExpr(*s.program),
+                               s.repeat ? lowerExpr(*s.repeat) : constant(1)};
+      Inst words;
+      words.cases = {0, 0};
+      lowerWords(s.words, words, ops);
+      ValueId f = emit(Op::CallMacro, std::move(ops));
+      fn_.insts[f].cases = std::move(words.cases);
+      resumeAfter(f, index);
+      return;
+    }
+    case StmtKind::Dprnt:
+    case StmtKind::Bprnt:
+      lowerPrint(s);
+      terminate(Op::Br, {next});
+      return;
+    case StmtKind::Popen:
+    case StmtKind::Pclos:
+      emit(s.kind == StmtKind::Popen ? Op::Popen : Op::Pclos);
+      terminate(Op::Br, {next});
+      return;
+  }
+}
+
+// The value is evaluated before the variable number, as in the interpreter.
+void FunctionLowering::lowerAssign(const Stmt& s) {
+  ValueId v = lowerExpr(*s.value);
+  const Expr& e = *s.value;
+  // Only a plain reference copies vacancy (spec §2.3b); a bracketed
+  // reference or ADP of a vacant variable stores 0.
+  bool mayBeVacant = e.kind == ExprKind::Var || e.kind == ExprKind::Indirect ||
+                     (e.kind == ExprKind::Call && e.builtin == Builtin::Adp);
+  if (mayBeVacant && !e.isBareVariable()) {
+    v = emit(Op::ToNum, {v});
+  }
+  std::uint32_t message = s.message.empty() ? 0 : intern(s.message);
+  ValueId st = 0;
+  if (s.target.index) {
+    ValueId idx = lowerExpr(*s.target.index);
+    st = emit(Op::StInd, {idx, v});
+  } else {
+    st = emit(Op::StVar, {v});
+    fn_.insts[st].attr = s.target.number;
+  }
+  fn_.insts[st].str = message;
+}
+
+void FunctionLowering::lowerGoto(const Stmt& s, int index) {
+  if (s.gotoBlock) {
+    terminate(Op::Br, {head(*s.gotoBlock)});
+    return;
+  }
+  ValueId target = lowerExpr(*s.value);
+  terminate(Op::Switch, {}, {target});
+  addSequenceTable(fn_.insts.back(), index);
+}
+
+void FunctionLowering::addSequenceTable(Inst& inst, int from) {
+  for (int seq : sequences_) {
+    inst.cases.push_back(seq);
+    inst.targets.push_back(head(findSequence(program_, seq, from)));
+  }
+}
+
+void FunctionLowering::resumeAfter(ValueId flow, int index) {
+  terminate(Op::Resume, {head(index + 1)}, {flow});
+  addSequenceTable(fn_.insts.back(), index);
+}
+
+void FunctionLowering::lowerWords(const std::vector<Word>& words, Inst& into,
+                                  std::vector<ValueId>& ops) {
+  for (const Word& w : words) {
+    WordKind kind = WordKind::Val;
+    ValueId v = 0;
+    if (w.bareVariable) {
+      bool negative = w.value->kind == ExprKind::Neg;
+      kind = negative ? WordKind::NegVar : WordKind::Var;
+      v = lowerExpr(negative ? *w.value->args[0] : *w.value, w.letter);
+    } else if (w.kind == mbc::WordKind::IntLiteral ||
+               w.kind == mbc::WordKind::DecLiteral) {
+      kind = w.kind == mbc::WordKind::IntLiteral ? WordKind::Int
+                                                 : WordKind::Dec;
+      v = constant(w.value->number);
+    } else {
+      v = lowerExpr(*w.value, w.letter);
+    }
+    ops.push_back(v);
+    into.cases.push_back(packWord(w.letter, kind));
+  }
+}
+
+void FunctionLowering::lowerPrint(const Stmt& s) {
+  std::vector<ValueId> ops;
+  std::vector<std::int64_t> items;
+  for (const PrintItem& it : s.items) {
+    if (it.value) {
+      ops.push_back(lowerExpr(*it.value));
+      items.push_back(packFormat(it.intDigits, it.fracDigits));
+    } else {
+      items.push_back(packText(intern(it.text) - 1));
+    }
+  }
+  ValueId p = emit(s.kind == StmtKind::Dprnt ? Op::Dprnt : Op::Bprnt,
+                   std::move(ops));
+  fn_.insts[p].cases = std::move(items);
+}
+
+// roundLetter != 0: the expression is an NC address, where ROUND rounds to
+// the address's least increment; it does not reach into #[...].
+ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
+  switch (e.kind) {
+    case ExprKind::Number:
+      return constant(e.number);
+    case ExprKind::Var: {
+      ValueId v = emit(Op::LdVar);
+      fn_.insts[v].attr = e.var;
+      return v;
+    }
+    case ExprKind::Indirect:
+      return emit(Op::LdInd, {lowerExpr(*e.args[0])});
+    case ExprKind::Neg:
+      return emit(Op::Neg, {lowerExpr(*e.args[0], roundLetter)});
+    case ExprKind::Binary: {
+      static constexpr Op kOps[] = {Op::Add, Op::Sub,    Op::Mul,   Op::Div,
+                                    Op::Mod, Op::BitAnd, Op::BitOr, Op::BitXor};
+      ValueId a = lowerExpr(*e.args[0], roundLetter);
+      ValueId b = lowerExpr(*e.args[1], roundLetter);
+      return emit(kOps[static_cast<int>(e.binOp)], {a, b});
+    }
+    case ExprKind::Compare: {
+      static constexpr Op kOps[] = {Op::Eq, Op::Ne, Op::Gt,
+                                    Op::Ge, Op::Lt, Op::Le};
+      ValueId a = lowerExpr(*e.args[0]);
+      ValueId b = lowerExpr(*e.args[1]);
+      return emit(kOps[static_cast<int>(e.relOp)], {a, b});
+    }
+    case ExprKind::Logical: {
+      ValueId a = lowerExpr(*e.args[0]);
+      ValueId b = lowerExpr(*e.args[1]);
+      Op op = e.binOp == BinOp::And  ? Op::LogAnd
+              : e.binOp == BinOp::Or ? Op::LogOr
+                                     : Op::LogXor;
+      return emit(op, {a, b});
+    }
+    case ExprKind::Call:
+      return lowerCall(e, roundLetter);
+  }
+  return constant(0);
+}
+
+ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
+  const Expr& arg = *e.args[0];
+  if (e.builtin == Builtin::Adp && arg.isBareVariable()) {
+    ValueId number = arg.kind == ExprKind::Var ? constant(arg.var)
+                                               : lowerExpr(*arg.args[0]);
+    return emit(Op::Adp, {number});
+  }
+  std::vector<ValueId> ops;
+  for (const ExprPtr& a : e.args) {
+    ops.push_back(lowerExpr(*a, roundLetter));
+  }
+  if (e.builtin == Builtin::Round && roundLetter) {
+    ValueId v = emit(Op::RoundAddr, std::move(ops));
+    fn_.insts[v].attr = roundLetter;
+    return v;
+  }
+  ValueId v = emit(Op::Fn, std::move(ops));
+  fn_.insts[v].attr = static_cast<std::int64_t>(e.builtin);
+  return v;
+}
+
+} // namespace
+
+Module lower(const Unit& unit, const SourceManager& sources) {
+  Module m;
+  m.functions.resize(unit.programs.size());
+  for (std::size_t i = 0; i < unit.programs.size(); ++i) {
+    const Program& p = unit.programs[i];
+    Function& fn = m.functions[i];
+    fn.name = p.name;
+    fn.number = p.number;
+    fn.file = sources.name(p.file);
+    FunctionLowering(p, m, fn).run();
+  }
+  return m;
+}
+
+} // namespace mbc::ir

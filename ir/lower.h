@@ -1,0 +1,15 @@
+// Lowering from the AST to the IR in memory form: one function per program,
+// one IR block per source block (plus the blocks of IF/THEN and block skip),
+// every variable access an ldvar/stvar/ldind/stind.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/source.h"
+#include "ir/ir.h"
+
+namespace mbc::ir {
+
+/// Lowers every program of a checked unit (no diagnostics errors).
+Module lower(const Unit& unit, const SourceManager& sources);
+
+} // namespace mbc::ir

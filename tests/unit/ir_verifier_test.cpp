@@ -1,0 +1,293 @@
+// The IR verifier (docs/ir.md, "Invariants"): valid functions pass and each
+// invariant has a negative test with its message. Also the CFG it builds on:
+// successors, predecessors, RPO and dominators, unreachable blocks included.
+#include "ir/cfg.h"
+#include "ir/ir_parser.h"
+#include "ir/verifier.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace mbc::ir {
+namespace {
+
+using Messages = std::vector<std::string>;
+
+Module parseText(std::string_view text) {
+  Module m;
+  std::string error;
+  EXPECT_TRUE(parseModule(text, m, error)) << error;
+  return m;
+}
+
+Messages verifyText(std::string_view text) {
+  return verify(parseText(text));
+}
+
+// b0 -> b1 (loop header) <-> b2 (body); b1 -> b3 (exit); b4 unreachable.
+constexpr std::string_view kLoop = R"mbir(func @O1000 #1000 "loop.nc" {
+b0:
+  begin 1
+  %1 = const 0
+  br b1
+b1:
+  %3 = phi [%1, b0], [%6, b2]
+  %4 = const 10
+  %5 = lt %3, %4
+  condbr %5, b2, b3
+b2:
+  %6 = add %3, %4
+  br b1
+b3:
+  stvar #1, %3
+  ret
+b4:
+  %9 = add %6, %12
+  %12 = const 1
+  br b4
+}
+)mbir";
+
+TEST(IrVerifier, AcceptsLoopWithPhiAndUnreachableBlock) {
+  EXPECT_EQ(verifyText(kLoop), Messages{});
+}
+
+TEST(IrVerifier, AcceptsSwitchCasesSharingABlock) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1 "" {
+b0:
+  %0 = ldvar #1
+  switch %0 [1: b1, 2: b1, 3: b2]
+b1:
+  %2 = phi [%0, b0]
+  ret
+b2:
+  ret
+}
+)mbir"),
+            Messages{});
+}
+
+TEST(IrVerifier, MissingTerminator) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  stvar #1, %1\n}\n"),
+            Messages{"@O1 b0: block does not end with a terminator"});
+}
+
+TEST(IrVerifier, EmptyBlock) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  br b1\nb1:\n}\n"),
+            Messages{"@O1 b1: block is empty: it needs a terminator"});
+}
+
+TEST(IrVerifier, TerminatorInTheMiddle) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  br b1\n  ret\nb1:\n  ret\n}\n"),
+            Messages{"@O1 b0: br b1: terminator in the middle of the block"});
+}
+
+TEST(IrVerifier, WrongOperandCount) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  %2 = add %1\n  ret\n}\n"),
+            Messages{"@O1 b0: %2 = add %1: expected 2 operand(s), got 1"});
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  %2 = fn ATAN2, %1\n  ret\n}\n"),
+            Messages{"@O1 b0: %2 = fn ATAN2, %1: expected 2 operand(s) for "
+                     "ATAN2, got 1"});
+}
+
+TEST(IrVerifier, WordDescriptorsMatchOperands) {
+  Module m = parseText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  %2 = nc X:int %1, Y:dec %1\n  resume %2, b0 []\n}\n");
+  m.functions[0].insts[2].cases.pop_back();
+  EXPECT_EQ(verify(m), Messages{"@O1 b0: %2 = nc X:int %1, ?:int %1: 1 word "
+                                "descriptors for 2 operands"});
+}
+
+TEST(IrVerifier, PrintItemsMatchOperands) {
+  Module m = parseText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  dprnt \"X\", %1[53]\n  ret\n}\n");
+  m.functions[0].insts[2].ops.push_back(1);
+  EXPECT_EQ(verify(m), Messages{"@O1 b0: dprnt \"X\", %1[53]: expected 1 "
+                                "operand(s) for the value items, got 2"});
+}
+
+TEST(IrVerifier, BoolWhereNumExpected) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  %2 = eq %1, %1\n  %3 = add %1, %2\n  ret\n}\n"),
+            Messages{"@O1 b0: %3 = add %1, %2: operand %2 is bool, expected "
+                     "num"});
+}
+
+TEST(IrVerifier, ConditionAndFlowTypes) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
+                       "  condbr %1, b1, b1\nb1:\n  resume %1, b1 []\n}\n"),
+            (Messages{"@O1 b0: condbr %1, b1, b1: operand %1 is num, "
+                      "expected bool",
+                      "@O1 b1: resume %1, b1 []: operand %1 is num, "
+                      "expected flow"}));
+}
+
+TEST(IrVerifier, UndefinedOperand) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %1 = neg %42\n  ret\n}\n"),
+            Messages{"@O1 b0: %1 = neg %42: operand %42 is not defined"});
+}
+
+TEST(IrVerifier, UseNotDominated) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1000 "" {
+b0:
+  %5 = const 1
+  %1 = ldvar #1
+  %2 = eq %1, %5
+  condbr %2, b1, b2
+b1:
+  %9 = const 2
+  br b2
+b2:
+  %7 = add %5, %9
+  ret
+}
+)mbir"),
+            Messages{"@O1000 b2: %7 = add %5, %9: operand %9 does not "
+                     "dominate its use"});
+}
+
+TEST(IrVerifier, UseBeforeDefinitionInABlock) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %2 = neg %1\n"
+                       "  %1 = const 1\n  ret\n}\n"),
+            Messages{"@O1 b0: %2 = neg %1: operand %1 does not dominate its "
+                     "use"});
+}
+
+TEST(IrVerifier, PhiInputMustDominateItsIncomingBlock) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1 "" {
+b0:
+  %1 = const 1
+  br b1
+b1:
+  %3 = phi [%4, b0]
+  %4 = const 2
+  ret
+}
+)mbir"),
+            Messages{"@O1 b1: %3 = phi [%4, b0]: operand %4 does not "
+                     "dominate the end of b0"});
+}
+
+TEST(IrVerifier, PhiArityMismatch) {
+  std::string text(kLoop);
+  text.replace(text.find("[%1, b0], [%6, b2]"), 18, "[%1, b0]");
+  EXPECT_EQ(verify(parseText(text)),
+            Messages{"@O1000 b1: %3 = phi [%1, b0]: phi has 1 input(s) for 2 "
+                     "predecessor(s)"});
+}
+
+TEST(IrVerifier, PhiInputFromANonPredecessor) {
+  std::string text(kLoop);
+  text.replace(text.find("[%6, b2]"), 8, "[%1, b3]");
+  EXPECT_EQ(verify(parseText(text)),
+            Messages{"@O1000 b1: %3 = phi [%1, b0], [%1, b3]: b3 is not a "
+                     "predecessor"});
+}
+
+TEST(IrVerifier, PhiAfterOtherInstructions) {
+  std::string text(kLoop);
+  text.replace(text.find("  %3 = phi"), 0, "  %2 = const 5\n");
+  EXPECT_EQ(verify(parseText(text)),
+            Messages{"@O1000 b1: %3 = phi [%1, b0], [%6, b2]: phi after a "
+                     "non-phi instruction"});
+}
+
+TEST(IrVerifier, BadTarget) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  br b7\n}\n"),
+            Messages{"@O1 b0: br b7: target b7 does not exist"});
+}
+
+TEST(IrVerifier, SwitchCases) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %0 = ldvar #1\n"
+                       "  switch %0 [10: b0, 10: b0, 0: b0, 100000: b0]\n}\n"),
+            (Messages{"@O1 b0: switch %0 [10: b0, 10: b0, 0: b0, 100000: b0]: "
+                      "case 10 appears twice",
+                      "@O1 b0: switch %0 [10: b0, 10: b0, 0: b0, 100000: b0]: "
+                      "case 0 is not a sequence number (1..99999)",
+                      "@O1 b0: switch %0 [10: b0, 10: b0, 0: b0, 100000: b0]: "
+                      "case 100000 is not a sequence number (1..99999)"}));
+}
+
+TEST(IrVerifier, Attributes) {
+  EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %0 = ldvar #-1\n"
+                       "  %1 = blockskip 0\n  %2 = fn ADP, %0\n  ret\n}\n"),
+            (Messages{"@O1 b0: %0 = ldvar #-1: variable number is negative",
+                      "@O1 b0: %1 = blockskip 0: block skip switch outside "
+                      "1..9",
+                      "@O1 b0: %2 = fn ADP, %0: ADP is the adp operation, "
+                      "never fn"}));
+}
+
+TEST(IrVerifier, StructureOfHandBuiltFunctions) {
+  Module m = parseText("func @O1 \"\" {\nb0:\n  %0 = const 1\n  br b1\n"
+                       "b1:\n  ret\n}\n");
+  Function& f = m.functions[0];
+  f.insts[0].type = Type::Bool;
+  f.blocks[1].insts.insert(f.blocks[1].insts.begin(), 0);
+  f.blocks[0].insts.insert(f.blocks[0].insts.begin(), 99);
+  EXPECT_EQ(verify(m),
+            (Messages{"@O1 b0: lists %99, which is not an instruction of the "
+                      "function",
+                      "@O1 b1: %0 = const 1: the instruction is also in b0",
+                      "@O1 b0: %0 = const 1: type is bool, but const defines "
+                      "num"}));
+  m.functions.push_back(Function{});
+  m.functions.back().name = "MAIN";
+  EXPECT_EQ(verify(m).back(), "@MAIN: function has no blocks");
+}
+
+TEST(IrCfg, SuccessorsPredecessorsAndDominators) {
+  Module m = parseText(kLoop);
+  Cfg cfg = buildCfg(m.functions[0]);
+  EXPECT_EQ(cfg.succs[1], (std::vector<BlockId>{2, 3}));
+  EXPECT_EQ(cfg.succs[4], (std::vector<BlockId>{4}));
+  EXPECT_EQ(cfg.preds[1], (std::vector<BlockId>{0, 2}));
+  EXPECT_EQ(cfg.preds[4], (std::vector<BlockId>{4}));
+  EXPECT_EQ(cfg.rpo, (std::vector<BlockId>{0, 1, 3, 2}));
+  EXPECT_EQ(cfg.idom, (std::vector<BlockId>{0, 0, 1, 1, kNoBlock}));
+  EXPECT_TRUE(cfg.dominates(1, 2));
+  EXPECT_TRUE(cfg.dominates(0, 3));
+  EXPECT_TRUE(cfg.dominates(2, 2));
+  EXPECT_FALSE(cfg.dominates(2, 3));
+  EXPECT_FALSE(cfg.dominates(2, 1));
+  EXPECT_FALSE(cfg.reachable(4));
+  EXPECT_FALSE(cfg.dominates(0, 4));
+  EXPECT_FALSE(cfg.dominates(4, 0));
+  EXPECT_TRUE(cfg.dominates(4, 4));
+}
+
+TEST(IrCfg, DiamondJoinsAtItsHead) {
+  Module m = parseText(R"mbir(func @O1 "" {
+b0:
+  %0 = blockskip 1
+  condbr %0, b1, b2
+b1:
+  br b3
+b2:
+  br b3
+b3:
+  ret
+}
+)mbir");
+  Cfg cfg = buildCfg(m.functions[0]);
+  EXPECT_EQ(cfg.idom, (std::vector<BlockId>{0, 0, 0, 0}));
+  EXPECT_EQ(cfg.preds[3], (std::vector<BlockId>{1, 2}));
+  EXPECT_FALSE(cfg.dominates(1, 3));
+}
+
+TEST(IrCfg, MalformedFunctionsDoNotCrash) {
+  Function f;
+  EXPECT_TRUE(buildCfg(f).rpo.empty());
+  f.blocks.resize(2); // no instructions, so no edges
+  Cfg cfg = buildCfg(f);
+  EXPECT_EQ(cfg.rpo, (std::vector<BlockId>{0}));
+  EXPECT_FALSE(cfg.reachable(1));
+}
+
+} // namespace
+} // namespace mbc::ir
