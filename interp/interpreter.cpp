@@ -144,10 +144,8 @@ mbrt_status Interpreter::step(const Block& b) {
 mbrt_status Interpreter::jumpTo(int seq, int from) {
   int target = findSequence(unit_.programs[prog_], seq, from);
   if (target < 0) {
-    return mbrt_raise(
-        ctx_, static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-        fmt::format("N{} not found in {}", seq, unit_.programs[prog_].name)
-            .c_str());
+    return mbrt_raise_sequence(ctx_, "", seq,
+                               unit_.programs[prog_].name.c_str());
   }
   pc_ = target;
   return 0;
@@ -193,9 +191,8 @@ mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
   }
   double n = roundHalfAway(seq);
   if (n < 1 || n > 99999) {
-    return mbrt_raise(ctx_,
-                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-                      fmt::format("M99 P{}", seq).c_str());
+    return mbrt_raise_sequence(ctx_, "M99 P", seq,
+                               unit_.programs[prog_].name.c_str());
   }
   return jumpTo(static_cast<int>(n), pc_ - 1);
 }

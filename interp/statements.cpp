@@ -67,9 +67,8 @@ mbrt_status Interpreter::execGoto(const Stmt& s) {
     trace(s, nullptr, fmt::format("N{}", n).c_str());
   }
   if (n < 1 || n > 99999) {
-    return mbrt_raise(ctx_,
-                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-                      fmt::format("GOTO {}", numeric(target)).c_str());
+    return mbrt_raise_sequence(ctx_, "GOTO ", numeric(target),
+                               unit_.programs[prog_].name.c_str());
   }
   return jumpTo(static_cast<int>(n), pc_);
 }
@@ -121,8 +120,7 @@ mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
     case MBRT_FLOW_CALL_SUB: {
       int target = findProgram(flow.program);
       if (target < 0) {
-        return mbrt_raise(ctx_, static_cast<int>(AlarmId::ProgramNotFound),
-                          fmt::format("O{:04d}", flow.program).c_str());
+        return mbrt_raise_program_not_found(ctx_, flow.program);
       }
       if (flow.repeat <= 0) {
         ++pc_;
@@ -169,8 +167,7 @@ mbrt_status Interpreter::execMacroCall(const Stmt& s) {
   }
   int target = findProgram(numeric(p));
   if (target < 0) {
-    return mbrt_raise(ctx_, static_cast<int>(AlarmId::ProgramNotFound),
-                      fmt::format("O{:04}", roundHalfAway(numeric(p))).c_str());
+    return mbrt_raise_program_not_found(ctx_, numeric(p));
   }
   auto repeat = static_cast<long>(roundHalfAway(numeric(l)));
   if (repeat <= 0) {

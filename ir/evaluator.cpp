@@ -169,9 +169,7 @@ mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
   double target = numeric(value);
   double n = roundHalfAway(target);
   if (n < 1 || n > 99999) {
-    return mbrt_raise(ctx_,
-                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-                      fmt::format("GOTO {}", target).c_str());
+    return mbrt_raise_sequence(ctx_, "GOTO ", target, fn.name.c_str());
   }
   return caseTarget(fn, inst, static_cast<int>(n), 0, next);
 }
@@ -181,9 +179,7 @@ mbrt_status Evaluator::jumpToSeq(const Function& fn, const Inst& inst,
                                  double seq, BlockId& next) {
   double n = roundHalfAway(seq);
   if (n < 1 || n > 99999) {
-    return mbrt_raise(ctx_,
-                      static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-                      fmt::format("M99 P{}", seq).c_str());
+    return mbrt_raise_sequence(ctx_, "M99 P", seq, fn.name.c_str());
   }
   return caseTarget(fn, inst, static_cast<int>(n), 1, next);
 }
@@ -197,8 +193,7 @@ mbrt_status Evaluator::caseTarget(const Function& fn, const Inst& inst, int seq,
       return 0;
     }
   }
-  return mbrt_raise(ctx_, static_cast<int>(AlarmId::IllegalMacroSequenceNumber),
-                    fmt::format("N{} not found in {}", seq, fn.name).c_str());
+  return mbrt_raise_sequence(ctx_, "", seq, fn.name.c_str());
 }
 
 mbrt_status Evaluator::resume(const Function& fn, Frame& frame, int depth,
@@ -222,8 +217,7 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
     case MBRT_FLOW_CALL_SUB: {
       int target = findProgram(flow.program);
       if (target < 0) {
-        return mbrt_raise(ctx_, static_cast<int>(AlarmId::ProgramNotFound),
-                          fmt::format("O{:04d}", flow.program).c_str());
+        return mbrt_raise_program_not_found(ctx_, flow.program);
       }
       FlowRec out{};
       if (flow.repeat > 0) {

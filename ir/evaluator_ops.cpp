@@ -257,8 +257,7 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
   }
   int target = findProgram(p);
   if (target < 0) {
-    return mbrt_raise(ctx_, static_cast<int>(AlarmId::ProgramNotFound),
-                      fmt::format("O{:04}", roundHalfAway(p)).c_str());
+    return mbrt_raise_program_not_found(ctx_, p);
   }
   auto repeat = static_cast<long>(roundHalfAway(l));
   out = FlowRec{};

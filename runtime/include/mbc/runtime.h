@@ -217,6 +217,13 @@ mbrt_status mbrt_pclos(mbrt_ctx* ctx);
  * detail (may be NULL) is appended to the message. Returns the id. The first
  * alarm of a run is the one kept and reported. */
 mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail);
+/* The alarms of control transfers, worded alike by every engine (PS0128):
+ * `jump` ("GOTO " or "M99 P") names a target outside 1..99999, otherwise
+ * "N<seq> not found in <program>". */
+mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
+                                const char* program);
+/* PS0076 "O<number>": a called program that does not exist. */
+mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number);
 /* The pending alarm id, or 0. */
 int mbrt_alarm(const mbrt_ctx* ctx);
 /* "file:line: alarm PS0112: ZERO DIVIDE" plus one "  in O9100 called from

@@ -1,0 +1,27 @@
+// The alarms of GOTO, M99 P and calls, in one place so that the interpreter,
+// the IR evaluator and compiled code word them identically.
+#include <mbc/arith.h>
+#include <mbc/runtime.h>
+
+#include <fmt/format.h>
+
+#include "context.h"
+
+using namespace mbc;
+
+mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
+                                const char* program) {
+  double n = roundHalfAway(seq);
+  std::string detail = n < 1 || n > 99999
+                           ? fmt::format("{}{}", jump, seq)
+                           : fmt::format("N{} not found in {}", n, program);
+  return rt::raise(*ctx, AlarmId::IllegalMacroSequenceNumber, detail);
+}
+
+mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number) {
+  double n = roundHalfAway(number);
+  std::string detail = n >= 0 && n < 1e9
+                           ? fmt::format("O{:04d}", static_cast<long>(n))
+                           : fmt::format("O{}", number);
+  return rt::raise(*ctx, AlarmId::ProgramNotFound, detail);
+}
