@@ -289,6 +289,9 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
     case ExprKind::Number:
       return constant(e.number);
     case ExprKind::Var: {
+      if (e.var == 0) {
+        return emit(Op::Vacant); // #0 is always vacant and cannot alarm
+      }
       ValueId v = emit(Op::LdVar);
       fn_.insts[v].attr = e.var;
       return v;
