@@ -1,30 +1,95 @@
-// Lowering + verification, and the emit-ir command.
+// Lowering, verification and the passes, and the emit-ir command.
 #include "driver/ir_pipeline.h"
 
+#include "ir/ir_parser.h"
 #include "ir/lower.h"
+#include "ir/pass_manager.h"
 #include "ir/printer.h"
 #include "ir/verifier.h"
 
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 namespace mbc::driver {
 
-bool buildModule(const CompiledUnit& cu, ir::Module& out) {
-  out = ir::lower(cu.unit, cu.sources);
-  std::vector<std::string> problems = ir::verify(out);
+namespace {
+
+// Debug builds verify after every pass even without --verify-each.
+#ifdef NDEBUG
+constexpr bool kVerifyEachByDefault = false;
+#else
+constexpr bool kVerifyEachByDefault = true;
+#endif
+
+bool reportProblems(const std::vector<std::string>& problems,
+                    const char* what) {
   for (const std::string& p : problems) {
-    std::fprintf(stderr, "mbc: internal error: invalid IR: %s\n", p.c_str());
+    std::fprintf(stderr, "mbc: %s: %s\n", what, p.c_str());
   }
   return problems.empty();
 }
 
-int emitIrCommand(const std::vector<std::string>& files) {
-  CompiledUnit cu;
-  if (!loadUnit(files, false, cu)) {
-    return 1;
+// `-x mbir`: one file of IR text, which must be valid IR (it is input, so
+// a problem is the user's error, not an internal one).
+bool parseIrFile(const std::vector<std::string>& files, ir::Module& out) {
+  if (files.size() != 1) {
+    std::fprintf(stderr, "mbc: error: -x mbir takes exactly one file\n");
+    return false;
   }
+  std::ifstream in(files[0], std::ios::binary);
+  if (!in) {
+    std::fprintf(stderr, "mbc: error: cannot read '%s'\n", files[0].c_str());
+    return false;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string error;
+  if (!ir::parseModule(text.str(), out, error)) {
+    std::fprintf(stderr, "mbc: error: %s:%s\n", files[0].c_str(),
+                 error.c_str());
+    return false;
+  }
+  return reportProblems(ir::verify(out), "error: invalid IR");
+}
+
+} // namespace
+
+bool buildModule(const CompiledUnit& cu, ir::Module& out) {
+  out = ir::lower(cu.unit, cu.sources);
+  return reportProblems(ir::verify(out), "internal error: invalid IR");
+}
+
+bool optimizeModule(ir::Module& m, const Options& o) {
+  if (o.noOpt) {
+    return true;
+  }
+  ir::PassOptions po{o.disabledPasses, o.verifyEach || kVerifyEachByDefault};
+  std::string error;
+  if (!ir::runPasses(m, po, error)) {
+    std::fprintf(stderr, "mbc: internal error: %s\n", error.c_str());
+    return false;
+  }
+  return reportProblems(ir::verify(m),
+                        "internal error: invalid IR after the passes");
+}
+
+int emitIrCommand(const Options& o) {
   ir::Module module;
-  if (!buildModule(cu, module)) {
+  if (o.language == "mbir") {
+    if (!parseIrFile(o.files, module)) {
+      return 1;
+    }
+  } else {
+    CompiledUnit cu;
+    if (!loadUnit(o.files, false, cu)) {
+      return 1;
+    }
+    if (!buildModule(cu, module)) {
+      return 4;
+    }
+  }
+  if (!optimizeModule(module, o)) {
     return 4;
   }
   std::string text = ir::print(module);

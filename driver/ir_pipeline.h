@@ -1,8 +1,10 @@
-// The IR half of the pipeline: lowering a checked unit and verifying the
-// result (a verifier failure is an internal compiler error, not user input).
+// The IR half of the pipeline: lowering a checked unit, verifying the result
+// (a verifier failure is an internal compiler error, not user input) and
+// running the passes.
 #pragma once
 
 #include "driver/compile_unit.h"
+#include "driver/options.h"
 #include "ir/ir.h"
 
 namespace mbc::driver {
@@ -10,7 +12,11 @@ namespace mbc::driver {
 /// Lowers and verifies; on a verifier failure prints it and returns false.
 bool buildModule(const CompiledUnit& cu, ir::Module& out);
 
+/// Runs the pass pipeline as the options say (nothing with --no-opt), then
+/// verifies once more. Prints what went wrong and returns false on failure.
+bool optimizeModule(ir::Module& m, const Options& o);
+
 /// `mbc emit-ir`: prints the module to standard output. Exit status.
-int emitIrCommand(const std::vector<std::string>& files);
+int emitIrCommand(const Options& o);
 
 } // namespace mbc::driver

@@ -1,5 +1,5 @@
 // The mbc command: `mbc run` executes a Macro B program, `mbc check` only
-// reports diagnostics.
+// reports diagnostics, `mbc emit-ir` prints the (optimised) IR.
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
 #include "driver/options.h"
@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (options->command == "emit-ir") {
-    return emitIrCommand(options->files);
+    return emitIrCommand(*options);
   }
   if (options->command == "check") {
     CompiledUnit cu;

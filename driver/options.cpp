@@ -2,6 +2,8 @@
 // that the locale never changes their meaning.
 #include "driver/options.h"
 
+#include "ir/pass_manager.h"
+
 #include <fmt/format.h>
 
 #include <charconv>
@@ -43,15 +45,86 @@ bool parseArg(std::string_view text, std::pair<char, double>& out) {
   return c >= 'A' && c <= 'Z' && parseNumber(text.substr(2), out.second);
 }
 
+// An option that takes a value (`--set '#1=2'`, `--set='#1=2'`).
+bool setValueOption(Options& o, const std::string& name,
+                    const std::string& value, std::string& error) {
+  if (name == "--main") {
+    o.mainProgram = value;
+  } else if (name == "--disable-pass") {
+    if (!ir::isPassName(value)) {
+      error = fmt::format("unknown pass '{}' (passes: {})", value,
+                          ir::passNameList());
+      return false;
+    }
+    o.disabledPasses.push_back(value);
+  } else if (name == "-x") {
+    o.language = value;
+  } else if (name == "--engine") {
+    o.engine = value;
+  } else if (name == "--toolpath") {
+    o.toolpathPath = value;
+  } else if (name == "--dprnt") {
+    o.dprntPath = value;
+  } else if (name == "--vars-out") {
+    o.varsOutPath = value;
+  } else if (name == "--machine") {
+    o.machinePath = value;
+  } else if (name == "--set") {
+    std::pair<double, double> p;
+    if (!parsePreset(value, p)) {
+      error = fmt::format("--set expects '#N=V', got '{}'", value);
+      return false;
+    }
+    o.presets.push_back(p);
+  } else if (name == "--arg") {
+    std::pair<char, double> p;
+    if (!parseArg(value, p)) {
+      error = fmt::format("--arg expects LETTER=VALUE, got '{}'", value);
+      return false;
+    }
+    o.args.push_back(p);
+  } else {
+    double n = 0;
+    if (!parseNumber(value, n) || n < 1) {
+      error = fmt::format("--max-blocks expects a positive number");
+      return false;
+    }
+    o.maxBlocks = static_cast<std::uint64_t>(n);
+  }
+  return true;
+}
+
+// The combinations of options that make no sense.
+bool checkOptions(const Options& o, std::string& error) {
+  if (o.files.empty()) {
+    error = "no input file";
+  } else if (o.engine != "interp" && o.engine != "ir") {
+    error = fmt::format("unknown engine '{}' (interp or ir)", o.engine);
+  } else if (o.language != "nc" && o.language != "mbir") {
+    error = fmt::format("unknown input language '{}' (nc or mbir)", o.language);
+  } else if (o.language == "mbir" && o.command != "emit-ir") {
+    error = "-x mbir is only available with emit-ir";
+  } else if (o.trace && o.engine != "interp") {
+    error = "--trace is only available with --engine interp for now";
+  } else {
+    return true;
+  }
+  return false;
+}
+
 } // namespace
 
 std::string usageText() {
-  return "usage: mbc run FILE... [--main O1234] [--engine interp]\n"
+  return "usage: mbc run FILE... [--main O1234] [--engine interp|ir]\n"
          "                [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n"
          "                [--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n"
          "                [--max-blocks N] [--block-skip[=N]] [--trace]\n"
+         "                [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc check FILE...\n"
-         "       mbc emit-ir FILE... [--no-opt]\n";
+         "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt]\n"
+         "                [--disable-pass NAME]... [--verify-each]\n"
+         "passes: " +
+         ir::passNameList() + "\n";
 }
 
 std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
@@ -87,6 +160,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.trace = true;
     } else if (name == "--no-opt") {
       o.noOpt = true;
+    } else if (name == "--verify-each") {
+      o.verifyEach = true;
     } else if (name == "--block-skip") {
       double n = 1;
       if (inlineValue &&
@@ -98,43 +173,13 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     } else if (name == "--main" || name == "--engine" || name == "--toolpath" ||
                name == "--dprnt" || name == "--vars-out" ||
                name == "--machine" || name == "--set" || name == "--arg" ||
-               name == "--max-blocks") {
+               name == "--max-blocks" || name == "--disable-pass" ||
+               name == "-x") {
       if (!needValue()) {
         return std::nullopt;
       }
-      if (name == "--main") {
-        o.mainProgram = value;
-      } else if (name == "--engine") {
-        o.engine = value;
-      } else if (name == "--toolpath") {
-        o.toolpathPath = value;
-      } else if (name == "--dprnt") {
-        o.dprntPath = value;
-      } else if (name == "--vars-out") {
-        o.varsOutPath = value;
-      } else if (name == "--machine") {
-        o.machinePath = value;
-      } else if (name == "--set") {
-        std::pair<double, double> p;
-        if (!parsePreset(value, p)) {
-          error = fmt::format("--set expects '#N=V', got '{}'", value);
-          return std::nullopt;
-        }
-        o.presets.push_back(p);
-      } else if (name == "--arg") {
-        std::pair<char, double> p;
-        if (!parseArg(value, p)) {
-          error = fmt::format("--arg expects LETTER=VALUE, got '{}'", value);
-          return std::nullopt;
-        }
-        o.args.push_back(p);
-      } else {
-        double n = 0;
-        if (!parseNumber(value, n) || n < 1) {
-          error = fmt::format("--max-blocks expects a positive number");
-          return std::nullopt;
-        }
-        o.maxBlocks = static_cast<std::uint64_t>(n);
+      if (!setValueOption(o, name, value, error)) {
+        return std::nullopt;
       }
     } else if (a.starts_with("-") && a != "-") {
       error = fmt::format("unknown option '{}'", a);
@@ -143,16 +188,7 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.files.push_back(a);
     }
   }
-  if (o.files.empty()) {
-    error = "no input file";
-    return std::nullopt;
-  }
-  if (o.engine != "interp" && o.engine != "ir") {
-    error = fmt::format("unknown engine '{}' (interp or ir)", o.engine);
-    return std::nullopt;
-  }
-  if (o.trace && o.engine != "interp") {
-    error = "--trace is only available with --engine interp for now";
+  if (!checkOptions(o, error)) {
     return std::nullopt;
   }
   return o;

@@ -1,4 +1,4 @@
-// Command-line options of `mbc run` and `mbc check`.
+// Command-line options of `mbc run`, `mbc check` and `mbc emit-ir`.
 #pragma once
 
 #include <cstdint>
@@ -22,7 +22,10 @@ struct Options {
   std::uint64_t maxBlocks = 0;
   unsigned blockSkipMask = 0;
   bool trace = false;
-  bool noOpt = false; // emit-ir: the raw lowering (no passes exist yet)
+  bool noOpt = false;      // emit-ir, run --engine ir: no passes
+  bool verifyEach = false; // verify the IR after every pass
+  std::vector<std::string> disabledPasses; // --disable-pass NAME
+  std::string language = "nc";             // -x nc|mbir (emit-ir)
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message

@@ -3,9 +3,9 @@
 
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
-#include "ir/evaluator.h"
 #include "driver/output_files.h"
 #include "interp/interpreter.h"
+#include "ir/evaluator.h"
 #include <mbc/runtime.h>
 
 #include <cstdio>
@@ -92,7 +92,8 @@ int runCommand(const Options& o) {
     return 2;
   }
   ir::Module module;
-  if (o.engine == "ir" && !buildModule(cu, module)) {
+  if (o.engine == "ir" &&
+      (!buildModule(cu, module) || !optimizeModule(module, o))) {
     return 4;
   }
   CtxPtr ctx = createContext(o);

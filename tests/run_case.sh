@@ -8,20 +8,28 @@
 # CASE.check      expected standard error of `mbc check` (its exit status is
 #                 CASE.status) -- for programs that must be diagnosed
 # MBC_ENGINE=ir runs the case under another engine: the expected outputs are
-# the same files, since every engine must give byte-identical output.
+# the same files, since every engine must give byte-identical output. The IR
+# is then verified after every pass (--verify-each).
+# MBC_EXTRA_ARGS: more `mbc run` arguments, split at spaces (for instance
+# "--disable-pass dce").
 # Paths are printed relative to the case's folder, so the case runs from there.
 set -u
 mbc=$(realpath "$1")
 case_path=$2
 bless=${3:-}
-dir=$(dirname "$case_path")
-name=$(basename "$case_path" .nc)
+# Parameter expansion rather than dirname/basename: a process less each,
+# and ctest runs this script hundreds of times.
+dir=${case_path%/*}
+[ "$dir" = "$case_path" ] && dir=.
+[ -z "$dir" ] && dir=/
+name=${case_path##*/}
+name=${name%.nc}
 cd "$dir" || exit 2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export LC_ALL=${MBC_TEST_LOCALE:-C} SOURCE_DATE_EPOCH=1767225600
 expected_status=0
-[ -f "$name.status" ] && expected_status=$(cat "$name.status")
+[ -f "$name.status" ] && expected_status=$(<"$name.status")
 fail=0
 
 compare() { # expected actual label
@@ -44,7 +52,9 @@ else
   fi
   engine=()
   [ -n "${MBC_ENGINE:-}" ] && engine=(--engine "$MBC_ENGINE")
-  "$mbc" run "$name.nc" "${args[@]}" "${engine[@]}" --toolpath "$work/toolpath.jsonl" \
+  [ "${MBC_ENGINE:-}" = ir ] && engine+=(--verify-each)
+  read -r -a extra <<<"${MBC_EXTRA_ARGS:-}"
+  "$mbc" run "$name.nc" "${args[@]}" "${engine[@]}" "${extra[@]}" --toolpath "$work/toolpath.jsonl" \
     --dprnt "$work/dprnt" --vars-out "$work/vars.json" 2>"$work/stderr"
   status=$?
   for f in toolpath.jsonl dprnt vars.json stderr; do

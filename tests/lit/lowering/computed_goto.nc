@@ -1,4 +1,4 @@
-; RUN: %mbc emit-ir %s | FileCheck %s
+; RUN: %mbc emit-ir --no-opt %s | FileCheck %s
 ; A computed GOTO becomes a switch over every N of the program, each case the
 ; block the FANUC search reaches from the jump (forward, then from the top).
 N10 #1 = 20

@@ -1,4 +1,4 @@
-; RUN: %mbc emit-ir %s | FileCheck %s
+; RUN: %mbc emit-ir --no-opt %s | FileCheck %s
 ; #[e] is an indirect memory operation; NC words keep how they were written,
 ; so that vacant words drop and literals keep their decimal point meaning.
 #[100 + #1] = #2 (STORED)

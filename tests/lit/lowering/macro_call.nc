@@ -1,4 +1,4 @@
-; RUN: %mbc emit-ir %s | FileCheck %s
+; RUN: %mbc emit-ir --no-opt %s | FileCheck %s
 ; G65 becomes call.macro with P, L and the argument words; the resume after
 ; it knows where an M99 P of the callee lands.
 O1000

@@ -1,4 +1,4 @@
-; RUN: %mbc emit-ir %s | FileCheck %s
+; RUN: %mbc emit-ir --no-opt %s | FileCheck %s
 ; A WHILE loop becomes a conditional branch at its head and a back edge from
 ; END to the head; variables stay in memory before the passes run.
 #1 = 0

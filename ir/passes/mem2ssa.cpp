@@ -1,0 +1,238 @@
+// mem2ssa: promotes the locals #1..#33 of a function to SSA values with
+// phis, where that is provably invisible:
+//  - only in functions without ldind, stind and adp (indirection could
+//    reach any local, and ADP needs to know how the local was set);
+//  - memory holds every local whenever other code can see this frame: a
+//    local written since the frame was last synchronised is stored back
+//    before `ret` and before the resume of an NC block that may be M98
+//    (which runs on this frame) or M99 (which returns to a caller that
+//    shares it), and every local is loaded again after such a resume. Other
+//    NC blocks (motion, M30) and G65 calls (whose callee has a frame of its
+//    own) need neither.
+// A store back happens only where the local was written on every path since
+// the last synchronisation, as in the original program: storing an unwritten
+// local would reset its ADP state (runtime adpMask) even with the same
+// value. Where paths with and without a write meet, the store moves up to
+// the edges that come from the writing paths.
+// After each synchronisation a local is loaded where its value is needed:
+// it may be an argument or the caller's value (or vacant), never an assumed
+// 0. A load of a local cannot alarm, so where it happens is invisible.
+#include "ir/passes/mem2ssa.h"
+
+#include "ir/pass_manager.h"
+#include "ir/passes/pass_util.h"
+#include <mbc/arith.h>
+
+namespace mbc::ir {
+
+namespace mem2ssa {
+
+namespace {
+
+// The locals the function accesses, or none when indirection may reach
+// them.
+Mask promotableLocals(const Function& f) {
+  Mask locals = 0;
+  for (const Block& block : f.blocks) {
+    for (ValueId id : block.insts) {
+      const Inst& inst = f.insts[id];
+      if (inst.op == Op::LdInd || inst.op == Op::StInd || inst.op == Op::Adp) {
+        return 0;
+      }
+      if ((inst.op == Op::LdVar || inst.op == Op::StVar) &&
+          isLocal(inst.attr)) {
+        locals |= localBit(inst.attr);
+      }
+    }
+  }
+  return locals;
+}
+
+// An NC block hands this frame to other code only by M98 (an M98
+// subprogram runs on it) or M99 (the caller that shares it goes on): the
+// runtime's other flows are NEXT and END (M02/M30 end the run, and nothing
+// reads a local after it; runtime/src/nc_block.cpp, decideFlow). So a block
+// whose M words are all constants other than 98 and 99 keeps it private.
+bool ncMayShareFrame(const Function& f, const Inst& nc) {
+  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
+    if (wordLetter(nc.cases[i]) != 'M') {
+      continue;
+    }
+    const Inst& value = f.insts[nc.ops[i]];
+    if (value.op == Op::Vacant) {
+      continue; // M0, or no word at all
+    }
+    if (value.op != Op::Const) {
+      return true;
+    }
+    bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
+    double m = roundHalfAway(negated ? -value.imm : value.imm);
+    if (m == 98 || m == 99) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether the block ends in a resume that may let other code see this
+// frame. A G65 call's never does: the callee has a frame of its own.
+bool sharesFrame(const Function& f, BlockId b) {
+  const Inst& term = f.insts[terminatorOf(f, b)];
+  if (term.op != Op::Resume) {
+    return false;
+  }
+  const Inst& flow = f.insts[term.ops[0]];
+  return flow.op != Op::CallMacro &&
+         (flow.op != Op::Nc || ncMayShareFrame(f, flow));
+}
+
+// Moves the phi inputs of `s` from the predecessors in `from` to a new phi
+// in `pad`, which then feeds `s`.
+void movePhiInputs(Function& f, BlockId s, BlockId pad,
+                   const std::vector<bool>& from) {
+  for (std::size_t i = 0; i < f.blocks[s].insts.size(); ++i) {
+    ValueId id = f.blocks[s].insts[i];
+    if (f.insts[id].op != Op::Phi) {
+      break;
+    }
+    ValueId moved = newInst(f, Op::Phi, pad, 0); // invalidates references
+    Inst& phi = f.insts[id];
+    Inst& into = f.insts[moved];
+    into.type = phi.type;
+    Inst kept;
+    for (std::size_t k = 0; k < phi.targets.size(); ++k) {
+      Inst& to = from[phi.targets[k]] ? into : kept;
+      to.ops.push_back(phi.ops[k]);
+      to.targets.push_back(phi.targets[k]);
+    }
+    phi.ops = std::move(kept.ops);
+    phi.targets = std::move(kept.targets);
+    phi.ops.push_back(moved);
+    phi.targets.push_back(pad);
+    insertAt(f, pad, f.blocks[pad].insts.size() - 1, moved);
+  }
+}
+
+// A block entered both from resumes that share the frame and from other
+// blocks gets a landing pad for the resumes: the pad is where the locals
+// are loaded again, so no edge needs a load of its own.
+void addLandingPads(Function& f) {
+  Cfg cfg = buildCfg(f);
+  std::size_t n = f.blocks.size();
+  std::vector<bool> shares(n, false);
+  std::vector<std::size_t> fromSharing(n, 0);
+  for (BlockId b = 0; b < n; ++b) {
+    shares[b] = sharesFrame(f, b);
+    if (shares[b]) {
+      for (BlockId s : cfg.succs[b]) {
+        ++fromSharing[s];
+      }
+    }
+  }
+  std::vector<BlockId> pad(n, kNoBlock);
+  for (BlockId s = 0; s < n; ++s) {
+    if (fromSharing[s] == 0 || fromSharing[s] == cfg.preds[s].size()) {
+      continue;
+    }
+    pad[s] = static_cast<BlockId>(f.blocks.size());
+    f.blocks.emplace_back();
+    ValueId br = newInst(f, Op::Br, pad[s], 0);
+    f.insts[br].targets = {s};
+    f.blocks[pad[s]].insts.push_back(br);
+    movePhiInputs(f, s, pad[s], shares);
+  }
+  for (BlockId b = 0; b < n; ++b) {
+    if (shares[b]) {
+      for (BlockId& t : f.insts[terminatorOf(f, b)].targets) {
+        t = pad[t] == kNoBlock ? t : pad[t];
+      }
+    }
+  }
+}
+
+Plan makePlan(const Function& f, Mask locals) {
+  Plan plan;
+  plan.locals = locals;
+  plan.cfg = buildCfg(f);
+  std::size_t n = f.blocks.size();
+  plan.sync.assign(n, false);
+  plan.storePoint.assign(n, false);
+  plan.writes.assign(n, 0);
+  plan.stores.assign(n, 0);
+  for (BlockId b = 0; b < n; ++b) {
+    const std::vector<BlockId>& preds = plan.cfg.preds[b];
+    bool sync = b == 0 || !preds.empty();
+    for (BlockId p : preds) {
+      sync = sync && sharesFrame(f, p);
+    }
+    plan.sync[b] = sync;
+    plan.storePoint[b] =
+        f.insts[terminatorOf(f, b)].op == Op::Ret || sharesFrame(f, b);
+    for (ValueId id : f.blocks[b].insts) {
+      const Inst& inst = f.insts[id];
+      if (inst.op == Op::StVar && isLocal(inst.attr)) {
+        plan.writes[b] |= localBit(inst.attr);
+      }
+    }
+  }
+  return plan;
+}
+
+// Stores on an edge go at the end of its source when that has no other
+// successor, else on a block of their own. The plan is then made again for
+// the new CFG, keeping the stores.
+void placeEdgeStores(Function& f, Plan& plan,
+                     const std::vector<EdgeStore>& edges) {
+  std::vector<Mask> stores = plan.stores;
+  for (const EdgeStore& e : edges) {
+    if (plan.cfg.succs[e.from].size() == 1) {
+      stores[e.from] |= e.locals;
+    } else {
+      splitEdge(f, e.from, e.to);
+      stores.push_back(e.locals);
+    }
+  }
+  plan = makePlan(f, plan.locals);
+  plan.stores = std::move(stores);
+}
+
+} // namespace
+
+} // namespace mem2ssa
+
+namespace {
+
+// Works on a copy of the function, so that a plan that does not fit leaves
+// it as it was.
+void promote(Function& f) {
+  using namespace mem2ssa;
+  Mask locals = promotableLocals(f);
+  if (locals == 0) {
+    return;
+  }
+  Function work = f;
+  removeUnreachableBlocks(work);
+  addLandingPads(work);
+  Plan plan = makePlan(work, locals);
+  std::vector<EdgeStore> edges;
+  // A jump back to b0 (hand-written IR) would need a phi at the entry.
+  if (!plan.cfg.preds[0].empty() || !planStores(plan, edges)) {
+    return;
+  }
+  placeEdgeStores(work, plan, edges);
+  if (!rename(work, plan)) {
+    return;
+  }
+  removeTrivialPhis(work);
+  f = std::move(work);
+}
+
+} // namespace
+
+void runMem2Ssa(Module& m) {
+  for (Function& f : m.functions) {
+    promote(f);
+  }
+}
+
+} // namespace mbc::ir
