@@ -55,4 +55,10 @@ bool planStores(Plan& plan, std::vector<EdgeStore>& edges);
 /// not fit the function (then `f` is half rewritten: work on a copy).
 bool rename(Function& f, const Plan& plan);
 
+/// Backward may-analysis up to the sync blocks (which load their own
+/// locals): the locals in gen[b] at block b, or needed after it without
+/// being written in it, at each block's entry.
+std::vector<Mask> backwardToSync(const Plan& plan,
+                                 const std::vector<Mask>& gen);
+
 } // namespace mbc::ir::mem2ssa

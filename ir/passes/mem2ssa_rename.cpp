@@ -46,23 +46,7 @@ std::vector<Mask> liveAtEntry(const Function& f, const Plan& plan) {
   for (BlockId b = 0; b < n; ++b) {
     gen[b] = liveGen(f, plan, b);
   }
-  std::vector<Mask> in(n, 0);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = plan.cfg.rpo.size(); i-- > 0;) {
-      BlockId b = plan.cfg.rpo[i];
-      Mask out = 0;
-      for (BlockId s : plan.cfg.succs[b]) {
-        out |= plan.sync[s] ? 0 : in[s];
-      }
-      Mask v = gen[b] | (out & ~plan.writes[b]);
-      if (v != in[b]) {
-        in[b] = v;
-        changed = true;
-      }
-    }
-  }
-  return in;
+  return backwardToSync(plan, gen);
 }
 
 class Renamer {

@@ -13,13 +13,9 @@
 
 namespace mbc::ir::mem2ssa {
 
-namespace {
-
-// Backward: the locals whose dirtiness at a block's entry matters, because
-// a path from there reaches a store point before writing them.
-std::vector<Mask> demandAtEntry(const Plan& plan) {
-  std::size_t n = plan.sync.size();
-  std::vector<Mask> in(n, 0);
+std::vector<Mask> backwardToSync(const Plan& plan,
+                                 const std::vector<Mask>& gen) {
+  std::vector<Mask> in(gen.size(), 0);
   for (bool changed = true; changed;) {
     changed = false;
     for (std::size_t i = plan.cfg.rpo.size(); i-- > 0;) {
@@ -28,7 +24,7 @@ std::vector<Mask> demandAtEntry(const Plan& plan) {
       for (BlockId s : plan.cfg.succs[b]) {
         out |= plan.sync[s] ? 0 : in[s];
       }
-      Mask v = (plan.storePoint[b] ? plan.locals : 0) | (out & ~plan.writes[b]);
+      Mask v = gen[b] | (out & ~plan.writes[b]);
       if (v != in[b]) {
         in[b] = v;
         changed = true;
@@ -36,6 +32,18 @@ std::vector<Mask> demandAtEntry(const Plan& plan) {
     }
   }
   return in;
+}
+
+namespace {
+
+// Backward: the locals whose dirtiness at a block's entry matters, because
+// a path from there reaches a store point before writing them.
+std::vector<Mask> demandAtEntry(const Plan& plan) {
+  std::vector<Mask> gen(plan.sync.size(), 0);
+  for (BlockId b = 0; b < gen.size(); ++b) {
+    gen[b] = plan.storePoint[b] ? plan.locals : 0;
+  }
+  return backwardToSync(plan, gen);
 }
 
 struct Dirty {
