@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ir_test_support.h"
 #include "runtime_test_support.h"
 
 namespace mbc::ir {
@@ -163,13 +164,6 @@ b8:
   ret !8
 }
 )mbir";
-
-Module parseText(std::string_view text) {
-  Module m;
-  std::string error;
-  EXPECT_TRUE(parseModule(text, m, error)) << error;
-  return m;
-}
 
 // What a run leaves behind that any engine must reproduce, as text.
 std::string run(const Module& m) {

@@ -10,6 +10,8 @@
 #include <set>
 #include <string>
 
+#include "ir_test_support.h"
+
 namespace mbc::ir {
 namespace {
 
@@ -132,13 +134,6 @@ b5:
   ret
 }
 )mbir";
-
-Module parseText(std::string_view text) {
-  Module m;
-  std::string error;
-  EXPECT_TRUE(parseModule(text, m, error)) << error;
-  return m;
-}
 
 std::string parseError(std::string_view text) {
   Module m;

@@ -10,17 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "ir_test_support.h"
+
 namespace mbc::ir {
 namespace {
 
 using Messages = std::vector<std::string>;
-
-Module parseText(std::string_view text) {
-  Module m;
-  std::string error;
-  EXPECT_TRUE(parseModule(text, m, error)) << error;
-  return m;
-}
 
 Messages verifyText(std::string_view text) {
   return verify(parseText(text));
