@@ -15,7 +15,9 @@ constexpr std::array kOps = {
 
 } // namespace
 
-const OpInfo& opInfo(Op op) { return kOps[static_cast<std::size_t>(op)]; }
+const OpInfo& opInfo(Op op) {
+  return kOps[static_cast<std::size_t>(op)];
+}
 
 bool opFromMnemonic(const std::string& mnemonic, Op& out) {
   for (std::size_t i = 0; i < kOps.size(); ++i) {

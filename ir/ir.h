@@ -16,9 +16,13 @@ enum class Op : std::uint8_t {
 #include "ir/opcodes.def"
 };
 
-/// The type of a value. Num is a double that may be vacant; Flow is what an
-/// NC block or a call asks the control to do next (resume interprets it).
-enum class Type : std::uint8_t { None, Num, Bool, Flow };
+/// The type of a value. Num is a double that is never vacant; VNum is a
+/// double that may be vacant (a variable's value, a phi over such values).
+/// Arithmetic takes Num: where a VNum is read as a number, `tonum` makes
+/// "vacant reads as 0" explicit, and the vacancy pass removes the `tonum`s
+/// it proves needless. Flow is what an NC block or a call asks the control
+/// to do next (resume interprets it).
+enum class Type : std::uint8_t { None, Num, VNum, Bool, Flow };
 
 enum OpFlag : unsigned {
   Pure = 0,
@@ -47,11 +51,11 @@ inline constexpr ValueId kNoValue = 0xffffffffU;
 
 /// How an address word's value is handed to the runtime (nc, call.macro).
 enum class WordKind : std::uint8_t {
-  Int,     // literal without decimal point ("X10")
-  Dec,     // literal with decimal point ("X10.")
-  Val,     // [expression]: a real value, vacant reads as 0
-  Var,     // bare variable "X#1": the word is dropped when it is vacant
-  NegVar,  // "X-#1": dropped when vacant, else negated
+  Int,    // literal without decimal point ("X10")
+  Dec,    // literal with decimal point ("X10.")
+  Val,    // [expression]: a real value, vacant reads as 0
+  Var,    // bare variable "X#1": the word is dropped when it is vacant
+  NegVar, // "X-#1": dropped when vacant, else negated
 };
 
 /// cases[i] of nc/call.macro describes operand i: letter | kind << 8.
@@ -60,7 +64,9 @@ inline std::int64_t packWord(char letter, WordKind kind) {
          (static_cast<std::int64_t>(kind) << 8);
 }
 
-inline char wordLetter(std::int64_t w) { return static_cast<char>(w & 0xff); }
+inline char wordLetter(std::int64_t w) {
+  return static_cast<char>(w & 0xff);
+}
 
 inline WordKind wordKind(std::int64_t w) {
   return static_cast<WordKind>((w >> 8) & 0xff);
@@ -83,10 +89,10 @@ struct Inst {
   BlockId block = 0;
   std::uint32_t line = 0;
   std::vector<ValueId> ops;
-  double imm = 0;                 // const
-  std::int64_t attr = 0;          // #n, builtin, letter, skip switch, line
-  std::uint32_t str = 0;          // Module::strings index + 1 (0: none)
-  std::vector<BlockId> targets;   // br, condbr, switch, resume; phi inputs
+  double imm = 0;                  // const
+  std::int64_t attr = 0;           // #n, builtin, letter, skip switch, line
+  std::uint32_t str = 0;           // Module::strings index + 1 (0: none)
+  std::vector<BlockId> targets;    // br, condbr, switch, resume; phi inputs
   std::vector<std::int64_t> cases; // switch/resume N numbers; word/item info
 };
 
@@ -95,9 +101,9 @@ struct Block {
 };
 
 struct Function {
-  std::string name;   // "O1000", "<NAME>", "MAIN"
-  int number = -1;    // O number, -1 for named and anonymous programs
-  std::string file;   // source file, for alarms
+  std::string name; // "O1000", "<NAME>", "MAIN"
+  int number = -1;  // O number, -1 for named and anonymous programs
+  std::string file; // source file, for alarms
   std::vector<Inst> insts;
   std::vector<Block> blocks; // blocks[0] is the entry
 };

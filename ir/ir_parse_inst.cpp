@@ -129,8 +129,17 @@ void OperandParser::items() {
   } while (c_.accept(','));
 }
 
-// phi = ["[" value "," block "]" {"," "[" value "," block "]"}] ;
+// phi = ("num" | "vnum") [input {"," input}] ; input = "[" value "," block "]"
+// ;
 void OperandParser::phi() {
+  c_.skipBlanks();
+  TextPos at = c_.pos();
+  std::string_view type = c_.word("the phi's type, num or vnum");
+  if (type != "num" && type != "vnum") {
+    Cursor::failAt(at,
+                   fmt::format("phi type '{}' is neither num nor vnum", type));
+  }
+  inst_.type = type == "num" ? Type::Num : Type::VNum;
   if (atOperandEnd()) {
     return;
   }

@@ -35,6 +35,7 @@ private:
   void resumeAfter(ValueId flow, int index);
   void addSequenceTable(Inst& inst, int from);
   ValueId lowerExpr(const Expr& e, char roundLetter = 0);
+  ValueId lowerNum(const Expr& e, char roundLetter = 0);
   ValueId lowerCall(const Expr& e, char roundLetter);
   ValueId constant(double v);
 
@@ -201,19 +202,14 @@ void FunctionLowering::lowerStatement(const Stmt& s, int index) {
 
 // The value is evaluated before the variable number, as in the interpreter.
 void FunctionLowering::lowerAssign(const Stmt& s) {
-  ValueId v = lowerExpr(*s.value);
-  const Expr& e = *s.value;
   // Only a plain reference copies vacancy (spec §2.3b); a bracketed
   // reference or ADP of a vacant variable stores 0.
-  bool mayBeVacant = e.kind == ExprKind::Var || e.kind == ExprKind::Indirect ||
-                     (e.kind == ExprKind::Call && e.builtin == Builtin::Adp);
-  if (mayBeVacant && !e.isBareVariable()) {
-    v = emit(Op::ToNum, {v});
-  }
+  ValueId v =
+      s.value->isBareVariable() ? lowerExpr(*s.value) : lowerNum(*s.value);
   std::uint32_t message = s.message.empty() ? 0 : intern(s.message);
   ValueId st = 0;
   if (s.target.index) {
-    ValueId idx = lowerExpr(*s.target.index);
+    ValueId idx = lowerNum(*s.target.index);
     st = emit(Op::StInd, {idx, v});
   } else {
     st = emit(Op::StVar, {v});
@@ -255,11 +251,11 @@ void FunctionLowering::lowerWords(const std::vector<Word>& words, Inst& into,
       v = lowerExpr(negative ? *w.value->args[0] : *w.value, w.letter);
     } else if (w.kind == mbc::WordKind::IntLiteral ||
                w.kind == mbc::WordKind::DecLiteral) {
-      kind = w.kind == mbc::WordKind::IntLiteral ? WordKind::Int
-                                                 : WordKind::Dec;
+      kind =
+          w.kind == mbc::WordKind::IntLiteral ? WordKind::Int : WordKind::Dec;
       v = constant(w.value->number);
     } else {
-      v = lowerExpr(*w.value, w.letter);
+      v = lowerNum(*w.value, w.letter);
     }
     ops.push_back(v);
     into.cases.push_back(packWord(w.letter, kind));
@@ -277,8 +273,8 @@ void FunctionLowering::lowerPrint(const Stmt& s) {
       items.push_back(packText(intern(it.text) - 1));
     }
   }
-  ValueId p = emit(s.kind == StmtKind::Dprnt ? Op::Dprnt : Op::Bprnt,
-                   std::move(ops));
+  ValueId p =
+      emit(s.kind == StmtKind::Dprnt ? Op::Dprnt : Op::Bprnt, std::move(ops));
   fn_.insts[p].cases = std::move(items);
 }
 
@@ -297,21 +293,23 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
       return v;
     }
     case ExprKind::Indirect:
-      return emit(Op::LdInd, {lowerExpr(*e.args[0])});
+      return emit(Op::LdInd, {lowerNum(*e.args[0])});
     case ExprKind::Neg:
-      return emit(Op::Neg, {lowerExpr(*e.args[0], roundLetter)});
+      return emit(Op::Neg, {lowerNum(*e.args[0], roundLetter)});
     case ExprKind::Binary: {
       static constexpr Op kOps[] = {Op::Add, Op::Sub,    Op::Mul,   Op::Div,
                                     Op::Mod, Op::BitAnd, Op::BitOr, Op::BitXor};
-      ValueId a = lowerExpr(*e.args[0], roundLetter);
-      ValueId b = lowerExpr(*e.args[1], roundLetter);
+      ValueId a = lowerNum(*e.args[0], roundLetter);
+      ValueId b = lowerNum(*e.args[1], roundLetter);
       return emit(kOps[static_cast<int>(e.binOp)], {a, b});
     }
     case ExprKind::Compare: {
       static constexpr Op kOps[] = {Op::Eq, Op::Ne, Op::Gt,
                                     Op::Ge, Op::Lt, Op::Le};
-      ValueId a = lowerExpr(*e.args[0]);
-      ValueId b = lowerExpr(*e.args[1]);
+      // EQ and NE tell vacant from 0; the others read vacant as 0.
+      bool equality = e.relOp == RelOp::Eq || e.relOp == RelOp::Ne;
+      ValueId a = equality ? lowerExpr(*e.args[0]) : lowerNum(*e.args[0]);
+      ValueId b = equality ? lowerExpr(*e.args[1]) : lowerNum(*e.args[1]);
       return emit(kOps[static_cast<int>(e.relOp)], {a, b});
     }
     case ExprKind::Logical: {
@@ -328,16 +326,22 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
   return constant(0);
 }
 
+// An expression read as a number: vacant reads as 0.
+ValueId FunctionLowering::lowerNum(const Expr& e, char roundLetter) {
+  ValueId v = lowerExpr(e, roundLetter);
+  return fn_.insts[v].type == Type::VNum ? emit(Op::ToNum, {v}) : v;
+}
+
 ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
   const Expr& arg = *e.args[0];
   if (e.builtin == Builtin::Adp && arg.isBareVariable()) {
-    ValueId number = arg.kind == ExprKind::Var ? constant(arg.var)
-                                               : lowerExpr(*arg.args[0]);
+    ValueId number =
+        arg.kind == ExprKind::Var ? constant(arg.var) : lowerNum(*arg.args[0]);
     return emit(Op::Adp, {number});
   }
   std::vector<ValueId> ops;
   for (const ExprPtr& a : e.args) {
-    ops.push_back(lowerExpr(*a, roundLetter));
+    ops.push_back(lowerNum(*a, roundLetter));
   }
   if (e.builtin == Builtin::Round && roundLetter) {
     ValueId v = emit(Op::RoundAddr, std::move(ops));

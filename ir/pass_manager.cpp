@@ -16,8 +16,9 @@ namespace {
 // for them (folded branches leave unreachable blocks and dead constants,
 // forwarded loads leave foldable arithmetic).
 constexpr std::string_view kPipeline[] = {
-    "mem2ssa", "copyprop", "constfold", "dce", "simplifycfg", "loadelim",
-    "vacancy", "copyprop", "constfold", "dce", "simplifycfg"};
+    "mem2ssa",     "copyprop",  "constfold", "dce",
+    "simplifycfg", "loadelim",  "vacancy",   "cse",
+    "copyprop",    "constfold", "dce",       "simplifycfg"};
 
 const PassInfo* findPass(std::string_view name) {
   for (const PassInfo& p : allPasses()) {

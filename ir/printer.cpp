@@ -111,6 +111,7 @@ void OperandPrinter::items() {
 }
 
 void OperandPrinter::phi() {
+  out_ += inst_.type == Type::Num ? " num" : " vnum";
   std::size_t n = std::max(inst_.ops.size(), inst_.targets.size());
   for (std::size_t i = 0; i < n; ++i) {
     out_ += i == 0 ? " [" : ", [";

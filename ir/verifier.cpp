@@ -21,14 +21,18 @@ namespace {
 constexpr std::int64_t kMaxSequence = 99999;
 
 std::string_view typeName(Type t) {
-  constexpr std::array<std::string_view, 4> kNames = {"no value", "num", "bool",
-                                                      "flow"};
+  constexpr std::array<std::string_view, 5> kNames = {"no value", "num", "vnum",
+                                                      "bool", "flow"};
   auto i = static_cast<std::size_t>(t);
   return i < kNames.size() ? kNames[i] : "?";
 }
 
-Type operandType(Op op) {
-  switch (op) {
+// The type operand i must have; VNum accepts Num too. Arithmetic, functions,
+// ordering comparisons and variable numbers read a number (vacant as 0
+// through an explicit tonum); equality, stores, NC words, print items and
+// the computed GOTO tell vacant apart, so they take either.
+Type operandType(const Inst& inst, std::size_t i) {
+  switch (inst.op) {
     case Op::LogAnd:
     case Op::LogOr:
     case Op::LogXor:
@@ -36,9 +40,27 @@ Type operandType(Op op) {
       return Type::Bool;
     case Op::Resume:
       return Type::Flow;
+    case Op::Phi:
+      return inst.type;
+    case Op::StInd:
+      return i == 0 ? Type::Num : Type::VNum;
+    case Op::ToNum:
+    case Op::Eq:
+    case Op::Ne:
+    case Op::StVar:
+    case Op::Nc:
+    case Op::CallMacro:
+    case Op::Dprnt:
+    case Op::Bprnt:
+    case Op::Switch:
+      return Type::VNum;
     default:
       return Type::Num;
   }
+}
+
+bool accepts(Type want, Type got) {
+  return got == want || (want == Type::VNum && got == Type::Num);
 }
 
 // The number of block targets an instruction needs.
@@ -182,7 +204,8 @@ void FunctionVerifier::checkBlock(BlockId b) {
 void FunctionVerifier::checkInst(BlockId b, std::uint32_t index, ValueId id) {
   const Inst& inst = f_.insts[id];
   Type defined = opInfo(inst.op).result;
-  if (inst.type != defined) {
+  bool numPhi = inst.op == Op::Phi && inst.type == Type::Num;
+  if (inst.type != defined && !numPhi) {
     fail(b, id,
          fmt::format("type is {}, but {} defines {}", typeName(inst.type),
                      opInfo(inst.op).mnemonic, typeName(defined)));
@@ -341,7 +364,6 @@ void FunctionVerifier::checkAttributes(BlockId b, ValueId id,
 
 void FunctionVerifier::checkOperands(BlockId b, std::uint32_t index, ValueId id,
                                      const Inst& inst) {
-  Type want = operandType(inst.op);
   for (std::size_t i = 0; i < inst.ops.size(); ++i) {
     ValueId v = inst.ops[i];
     if (v >= f_.insts.size() || place_[v].block == kNoBlock) {
@@ -349,7 +371,8 @@ void FunctionVerifier::checkOperands(BlockId b, std::uint32_t index, ValueId id,
       continue;
     }
     Type got = f_.insts[v].type;
-    if (got != want) {
+    Type want = operandType(inst, i);
+    if (!accepts(want, got)) {
       fail(b, id,
            fmt::format("operand %{} is {}, expected {}", v, typeName(got),
                        typeName(want)));

@@ -59,7 +59,7 @@ std::optional<Num> Folder::num(ValueId v) const {
 void Folder::setConst(ValueId id, Num v) {
   Inst& inst = f_.insts[id];
   inst.op = isVacant(v) ? Op::Vacant : Op::Const;
-  inst.type = Type::Num;
+  inst.type = opInfo(inst.op).result;
   inst.imm = isVacant(v) ? 0 : v;
   inst.ops.clear();
   inst.attr = 0;
@@ -183,7 +183,7 @@ void Folder::foldPhi(ValueId id) {
     }
     value = v;
   }
-  if (!value || inst.type != Type::Num) {
+  if (!value) {
     return;
   }
   BlockId b = inst.block;

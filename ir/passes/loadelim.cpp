@@ -1,63 +1,115 @@
-// loadelim: within a block, a load of a common variable (#100-#999) whose
-// value is already known takes that value: the value of an earlier load of
-// the same number, or of the last store to it. Knowledge ends where another
-// program may run or variables change in ways not seen here: NC blocks
-// (M98, and G65 through call.macro) and indirect stores. A second load of
-// a number that did not alarm the first time cannot alarm either, so the
+// loadelim: a load of a common variable (#100-#999), or of a local the
+// function keeps in memory, whose value is already known takes that value:
+// the value of an earlier load of the same number, or of the last store to
+// it, on every path to the load. Knowledge ends where another program may
+// run or variables change in ways not seen here: NC blocks (M98, a custom
+// macro), calls, resumes and indirect stores. A value known on every path
+// is defined on every path, so it dominates the load. A second load of a
+// number that did not alarm the first time cannot alarm either, so the
 // alarm behaviour stays.
+#include "ir/cfg.h"
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
 
-#include <unordered_map>
+#include <map>
+#include <optional>
 
 namespace mbc::ir {
 
 namespace {
 
-bool isCommon(std::int64_t n) {
-  return n >= 100 && n <= 999;
+bool isMemoryVariable(std::int64_t n) {
+  return (n >= 1 && n <= 33) || (n >= 100 && n <= 999);
 }
 
-void forwardInBlock(Function& f, const Block& block, std::vector<ValueId>& repl,
-                    std::vector<bool>& dead) {
-  std::unordered_map<std::int64_t, ValueId> known;
-  for (ValueId id : block.insts) {
-    const Inst& inst = f.insts[id];
-    switch (inst.op) {
-      case Op::LdVar:
-        if (isCommon(inst.attr)) {
-          auto [it, fresh] = known.emplace(inst.attr, id);
-          if (!fresh) {
-            repl[id] = it->second;
-            dead[id] = true;
-          }
-        }
-        break;
-      case Op::StVar:
-        if (isCommon(inst.attr)) {
-          known[inst.attr] = inst.ops[0];
-        }
-        break;
-      default:
-        if (opInfo(inst.op).flags & WritesVars) {
-          known.clear(); // stind, nc, call.macro, resume
-        }
-        break;
+using Known = std::map<std::int64_t, ValueId>;
+
+class LoadElim {
+public:
+  explicit LoadElim(Function& f)
+      : f_(f), repl_(f.insts.size(), kNoValue), dead_(f.insts.size(), false) {}
+
+  void run();
+
+private:
+  Known entry(BlockId b) const;
+  Known transfer(BlockId b, Known known, bool rewrite);
+
+  Function& f_;
+  Cfg cfg_;
+  std::vector<std::optional<Known>> out_; // none: not reached yet
+  std::vector<ValueId> repl_;
+  std::vector<bool> dead_;
+};
+
+// What every predecessor knows with the same value; predecessors not
+// reached yet do not count (they are met again when the solver repeats).
+Known LoadElim::entry(BlockId b) const {
+  if (b == 0) {
+    return {}; // the caller's frame and the commons: nothing known
+  }
+  std::optional<Known> in;
+  for (BlockId p : cfg_.preds[b]) {
+    if (!out_[p]) {
+      continue;
+    }
+    if (!in) {
+      in = *out_[p];
+      continue;
+    }
+    for (auto it = in->begin(); it != in->end();) {
+      auto other = out_[p]->find(it->first);
+      it = other != out_[p]->end() && other->second == it->second
+               ? std::next(it)
+               : in->erase(it);
     }
   }
+  return in.value_or(Known{});
+}
+
+Known LoadElim::transfer(BlockId b, Known known, bool rewrite) {
+  for (ValueId id : f_.blocks[b].insts) {
+    const Inst& inst = f_.insts[id];
+    if (inst.op == Op::LdVar && isMemoryVariable(inst.attr)) {
+      auto [it, fresh] = known.emplace(inst.attr, id);
+      if (!fresh && rewrite) {
+        repl_[id] = it->second;
+        dead_[id] = true;
+      }
+    } else if (inst.op == Op::StVar && isMemoryVariable(inst.attr)) {
+      known[inst.attr] = inst.ops[0];
+    } else if (opInfo(inst.op).flags & WritesVars) {
+      known.clear(); // stind, nc, call.macro, resume
+    }
+  }
+  return known;
+}
+
+void LoadElim::run() {
+  cfg_ = buildCfg(f_);
+  out_.assign(f_.blocks.size(), std::nullopt);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (BlockId b : cfg_.rpo) {
+      Known out = transfer(b, entry(b), false);
+      if (out_[b] != out) {
+        out_[b] = std::move(out);
+        changed = true;
+      }
+    }
+  }
+  for (BlockId b : cfg_.rpo) {
+    transfer(b, entry(b), true);
+  }
+  replaceUses(f_, repl_);
+  eraseInsts(f_, dead_);
 }
 
 } // namespace
 
 void runLoadElim(Module& m) {
   for (Function& f : m.functions) {
-    std::vector<ValueId> repl(f.insts.size(), kNoValue);
-    std::vector<bool> dead(f.insts.size(), false);
-    for (const Block& block : f.blocks) {
-      forwardInBlock(f, block, repl, dead);
-    }
-    replaceUses(f, repl);
-    eraseInsts(f, dead);
+    LoadElim(f).run();
   }
 }
 

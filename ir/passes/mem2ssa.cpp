@@ -21,7 +21,6 @@
 
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
-#include <mbc/arith.h>
 
 namespace mbc::ir {
 
@@ -48,32 +47,6 @@ Mask promotableLocals(const Function& f) {
   return locals;
 }
 
-// An NC block hands this frame to other code only by M98 (an M98
-// subprogram runs on it) or M99 (the caller that shares it goes on): the
-// runtime's other flows are NEXT and END (M02/M30 end the run, and nothing
-// reads a local after it; runtime/src/nc_block.cpp, decideFlow). So a block
-// whose M words are all constants other than 98 and 99 keeps it private.
-bool ncMayShareFrame(const Function& f, const Inst& nc) {
-  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
-    if (wordLetter(nc.cases[i]) != 'M') {
-      continue;
-    }
-    const Inst& value = f.insts[nc.ops[i]];
-    if (value.op == Op::Vacant) {
-      continue; // M0, or no word at all
-    }
-    if (value.op != Op::Const) {
-      return true;
-    }
-    bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
-    double m = roundHalfAway(negated ? -value.imm : value.imm);
-    if (m == 98 || m == 99) {
-      return true;
-    }
-  }
-  return false;
-}
-
 // Whether the block ends in a resume that may let other code see this
 // frame. A G65 call's never does: the callee has a frame of its own.
 bool sharesFrame(const Function& f, BlockId b) {
@@ -83,7 +56,7 @@ bool sharesFrame(const Function& f, BlockId b) {
   }
   const Inst& flow = f.insts[term.ops[0]];
   return flow.op != Op::CallMacro &&
-         (flow.op != Op::Nc || ncMayShareFrame(f, flow));
+         (flow.op != Op::Nc || ncMayGiveM(f, flow, {98, 99}));
 }
 
 // Moves the phi inputs of `s` from the predecessors in `from` to a new phi

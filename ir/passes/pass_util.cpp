@@ -2,6 +2,7 @@
 #include "ir/passes/pass_util.h"
 
 #include "ir/cfg.h"
+#include <mbc/arith.h>
 
 #include <algorithm>
 
@@ -10,6 +11,28 @@ namespace mbc::ir {
 bool readCannotAlarm(std::int64_t n) {
   return n == 0 || (n >= 1 && n <= 33) || (n >= 100 && n <= 199) ||
          (n >= 500 && n <= 999);
+}
+
+bool ncMayGiveM(const Function& f, const Inst& nc,
+                std::initializer_list<double> codes) {
+  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
+    if (wordLetter(nc.cases[i]) != 'M') {
+      continue;
+    }
+    const Inst& value = f.insts[nc.ops[i]];
+    if (value.op == Op::Vacant) {
+      continue; // M0, or no word at all
+    }
+    if (value.op != Op::Const) {
+      return true;
+    }
+    bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
+    double m = roundHalfAway(negated ? -value.imm : value.imm);
+    if (std::find(codes.begin(), codes.end(), m) != codes.end()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 ValueId terminatorOf(const Function& f, BlockId b) {

@@ -8,6 +8,7 @@
 #include "ir/ir.h"
 
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 namespace mbc::ir {
@@ -20,6 +21,15 @@ inline bool isTerminator(Op op) {
 /// locals and the commons every machine has. System variables are left out:
 /// some readers alarm (a tool offset beyond the profile's count).
 bool readCannotAlarm(std::int64_t n);
+
+/// Whether the flow of NC block `nc` may come from one of the M codes in
+/// `codes`: one of its M words is not a constant, or is one of them. The
+/// runtime's only flows for other M codes are NEXT and the END of the run
+/// (runtime/src/nc_block.cpp, decideFlow): only M98 runs a subprogram on
+/// this frame (whose M99 P may come back at a sequence number) and only M99
+/// returns. Custom M-code calls (parameters 6071-6089) will need a look here.
+bool ncMayGiveM(const Function& f, const Inst& nc,
+                std::initializer_list<double> codes);
 
 /// The terminator of `b` (its last instruction).
 ValueId terminatorOf(const Function& f, BlockId b);

@@ -2,7 +2,8 @@
 // jumps only to it and it has no other predecessor, and lets jumps go past
 // blocks that hold nothing but a `br`. Neither changes what runs: every
 // `begin` stays, in order, so blocks are counted and alarms located as
-// before. b0 keeps no predecessor.
+// before. b0 keeps no predecessor. The case table of a resume whose NC block
+// cannot run an M98 subprogram goes: nothing can come back at an N there.
 #include "ir/cfg.h"
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
@@ -17,6 +18,27 @@ void simplifyBranches(Function& f) {
     const Inst& term = f.insts[terminatorOf(f, b)];
     if (term.op == Op::CondBr && term.targets[0] == term.targets[1]) {
       replaceByBr(f, b, term.targets[0]);
+    }
+  }
+}
+
+void pruneResumeCases(Function& f) {
+  for (BlockId b = 0; b < f.blocks.size(); ++b) {
+    Inst& term = f.insts[terminatorOf(f, b)];
+    if (term.op != Op::Resume || term.cases.empty()) {
+      continue;
+    }
+    const Inst& flow = f.insts[term.ops[0]];
+    if (flow.op != Op::Nc || ncMayGiveM(f, flow, {98})) {
+      continue;
+    }
+    std::vector<BlockId> dropped(term.targets.begin() + 1, term.targets.end());
+    term.targets.resize(1);
+    term.cases.clear();
+    for (BlockId t : dropped) {
+      if (t != term.targets[0]) {
+        dropPhiInputs(f, t, b);
+      }
     }
   }
 }
@@ -158,6 +180,7 @@ void threadJumps(Function& f) {
 void runSimplifyCfg(Module& m) {
   for (Function& f : m.functions) {
     simplifyBranches(f);
+    pruneResumeCases(f);
     mergeChains(f);
     removeUnreachableBlocks(f);
     threadJumps(f);

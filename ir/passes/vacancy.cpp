@@ -1,36 +1,13 @@
-// vacancy: finds the values that can never be vacant and drops the `tonum`
-// (vacant -> 0) of each: arithmetic, functions and negation never give
-// vacant, a constant is vacant only as `vacant`, and a phi is never vacant
-// when none of its inputs can be. Loads may read a vacant variable.
+// vacancy: finds the phis that can never be vacant, types them num, and
+// drops every `tonum` (vacant -> 0) whose operand is then a num. A phi is
+// never vacant when none of its inputs can be; values of other operations
+// have the type their operation defines (only loads and `vacant` are vnum).
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
-#include <mbc/value.h>
 
 namespace mbc::ir {
 
 namespace {
-
-bool neverVacantOp(const Inst& inst) {
-  switch (inst.op) {
-    case Op::Const:
-      return !isVacant(inst.imm);
-    case Op::Add:
-    case Op::Sub:
-    case Op::Mul:
-    case Op::Div:
-    case Op::Mod:
-    case Op::BitAnd:
-    case Op::BitOr:
-    case Op::BitXor:
-    case Op::Neg:
-    case Op::ToNum:
-    case Op::Fn:
-    case Op::RoundAddr:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // Optimistic for phis (assumed never vacant until an input may be), so that
 // a loop of phis over numbers is found never vacant.
@@ -39,8 +16,7 @@ std::vector<bool> neverVacant(const Function& f) {
   for (const Block& block : f.blocks) {
     for (ValueId id : block.insts) {
       const Inst& inst = f.insts[id];
-      never[id] =
-          neverVacantOp(inst) || (inst.op == Op::Phi && inst.type == Type::Num);
+      never[id] = inst.type == Type::Num || inst.op == Op::Phi;
     }
   }
   for (bool changed = true; changed;) {
@@ -73,8 +49,10 @@ void runVacancy(Module& m) {
     std::vector<bool> dead(f.insts.size(), false);
     for (const Block& block : f.blocks) {
       for (ValueId id : block.insts) {
-        const Inst& inst = f.insts[id];
-        if (inst.op == Op::ToNum && never[inst.ops[0]]) {
+        Inst& inst = f.insts[id];
+        if (inst.op == Op::Phi && never[id]) {
+          inst.type = Type::Num;
+        } else if (inst.op == Op::ToNum && never[inst.ops[0]]) {
           repl[id] = inst.ops[0];
           dead[id] = true;
         }

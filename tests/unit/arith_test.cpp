@@ -465,8 +465,7 @@ TEST(ArithSnap, InverseTrigGivesWholeDegreesExactly) {
   Num half = 0.5, minusHalf = -0.5;
   ASSERT_EQ(evalBuiltin(Builtin::Asin, &half, nat1, &out), AlarmId::None);
   EXPECT_EQ(out, 30.0);
-  ASSERT_EQ(evalBuiltin(Builtin::Asin, &minusHalf, nat1, &out),
-            AlarmId::None);
+  ASSERT_EQ(evalBuiltin(Builtin::Asin, &minusHalf, nat1, &out), AlarmId::None);
   EXPECT_EQ(out, -30.0);
   ASSERT_EQ(evalBuiltin(Builtin::Acos, &half, nat1, &out), AlarmId::None);
   EXPECT_EQ(out, 60.0);

@@ -53,7 +53,8 @@ b1:
   begin 5
   %2 = ldvar #2
   %3 = const 1
-  %4 = gt %2, %3
+  %23 = tonum %2
+  %4 = gt %23, %3
   condbr %4, b6, b2
 b2:
   begin 6
@@ -65,7 +66,9 @@ b3:
   begin 7
   %15 = ldvar #1
   %16 = ldvar #2
-  %17 = add %15, %16
+  %24 = tonum %15
+  %25 = tonum %16
+  %17 = add %24, %25
   stvar #100, %17
   br b4
 b4:
@@ -89,17 +92,20 @@ b1:
   %2 = const 1
   %3 = adp %2
   %4 = const 10
-  %5 = mul %3, %4
+  %20 = tonum %3
+  %5 = mul %20, %4
   %6 = const 2
   %7 = adp %6
-  %8 = add %5, %7
+  %21 = tonum %7
+  %8 = add %5, %21
   stvar #101, %8
   br b2
 b2:
   begin 11
   %12 = ldvar #2
   %13 = const 1
-  %14 = add %12, %13
+  %22 = tonum %12
+  %14 = add %22, %13
   stvar #2, %14
   br b3
 b3:
@@ -132,7 +138,8 @@ b3:
   begin 4
   %10 = ldvar #1
   %11 = const 5
-  %12 = lt %10, %11
+  %35 = tonum %10
+  %12 = lt %35, %11
   condbr %12, b4, b7
 b4:
   begin 5
@@ -140,16 +147,20 @@ b4:
   %16 = const 10
   %17 = ldvar #2
   %18 = ldvar #1
-  %19 = sub %17, %18
+  %36 = tonum %17
+  %37 = tonum %18
+  %19 = sub %36, %37
   %20 = div %16, %19
-  %21 = add %15, %20
+  %38 = tonum %15
+  %21 = add %38, %20
   stvar #100, %21
   br b5
 b5:
   begin 6
   %25 = ldvar #1
   %26 = const 1
-  %27 = add %25, %26
+  %39 = tonum %25
+  %27 = add %39, %26
   stvar #1, %27
   br b6
 b6:
@@ -220,7 +231,7 @@ TEST(IrPasses, NamesComeFromPassesDef) {
   EXPECT_TRUE(isPassName("dce"));
   EXPECT_FALSE(isPassName("nosuchpass"));
   EXPECT_EQ(passNameList(), "mem2ssa, copyprop, constfold, vacancy, "
-                            "loadelim, dce, simplifycfg");
+                            "cse, loadelim, dce, simplifycfg");
 }
 
 TEST(IrPasses, EveryPassDisabledLeavesTheModuleAlone) {

@@ -24,7 +24,7 @@ b0:
   stvar #1, %1
   br b1
 b1:
-  %3 = phi [%1, b0], [%9, b2]
+  %3 = phi num [%1, b0], [%9, b2]
   begin 2
   %4 = const 3
   %5 = lt %3, %4
@@ -52,9 +52,10 @@ b4:
 b5:
   begin 7 !8
   %20 = ldvar #3
-  %21 = ldind %20 !9
-  %22 = adp %20
-  stind %20, %22, "MSG \\ DONE"
+  %23 = tonum %20
+  %21 = ldind %23 !9
+  %22 = adp %23
+  stind %23, %22, "MSG \\ DONE"
   unreachable
 }
 
@@ -84,12 +85,16 @@ b1:
   %3 = ldvar #26
   %4 = const 10.5
   %5 = const 0.1
-  %6 = sub %2, %5
+  %44 = tonum %2
+  %6 = sub %44, %5
   %7 = mul %6, %4
   %8 = div %7, %5
   %9 = mod %8, %4
-  %10 = and %2, %3
-  %11 = or %10, %3
+  %45 = tonum %2
+  %46 = tonum %3
+  %10 = and %45, %46
+  %47 = tonum %3
+  %11 = or %10, %47
   %12 = xor %11, %9
   %13 = neg %12
   %14 = tonum %13
@@ -107,9 +112,12 @@ b2:
   %24 = const 1e+20
   %25 = eq %23, %24
   %26 = ne %23, %24
-  %27 = gt %23, %24 !5
-  %28 = ge %23, %24
-  %29 = le %23, %24
+  %48 = tonum %23
+  %27 = gt %48, %24 !5
+  %49 = tonum %23
+  %28 = ge %49, %24
+  %50 = tonum %23
+  %29 = le %50, %24
   %30 = land %25, %26
   %31 = lor %30, %27
   %32 = lxor %31, %28
@@ -214,7 +222,7 @@ TEST(IrText, FillsFieldsAsIrHDescribes) {
   EXPECT_EQ(m.strings[dprnt.cases[0] >> 1], "X");
   EXPECT_EQ(dprnt.cases[1], packFormat(5, 3));
   EXPECT_EQ(m.strings[dprnt.cases[2] >> 1], "*Y\"Q\"");
-  const Inst& stind = f.insts[f.blocks[5].insts[4]];
+  const Inst& stind = f.insts[f.blocks[5].insts[5]];
   ASSERT_NE(stind.str, 0U);
   EXPECT_EQ(m.strings[stind.str - 1], "MSG \\ DONE");
 }

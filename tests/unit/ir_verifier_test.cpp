@@ -28,7 +28,7 @@ b0:
   %1 = const 0
   br b1
 b1:
-  %3 = phi [%1, b0], [%6, b2]
+  %3 = phi num [%1, b0], [%6, b2]
   %4 = const 10
   %5 = lt %3, %4
   condbr %5, b2, b3
@@ -55,7 +55,7 @@ b0:
   %0 = ldvar #1
   switch %0 [1: b1, 2: b1, 3: b2]
 b1:
-  %2 = phi [%0, b0]
+  %2 = phi vnum [%0, b0]
   ret
 b2:
   ret
@@ -159,28 +159,29 @@ b0:
   %1 = const 1
   br b1
 b1:
-  %3 = phi [%4, b0]
+  %3 = phi num [%4, b0]
   %4 = const 2
   ret
 }
 )mbir"),
-            Messages{"@O1 b1: %3 = phi [%4, b0]: operand %4 does not "
+            Messages{"@O1 b1: %3 = phi num [%4, b0]: operand %4 does not "
                      "dominate the end of b0"});
 }
 
 TEST(IrVerifier, PhiArityMismatch) {
   std::string text(kLoop);
   text.replace(text.find("[%1, b0], [%6, b2]"), 18, "[%1, b0]");
-  EXPECT_EQ(verify(parseText(text)),
-            Messages{"@O1000 b1: %3 = phi [%1, b0]: phi has 1 input(s) for 2 "
-                     "predecessor(s)"});
+  EXPECT_EQ(
+      verify(parseText(text)),
+      Messages{"@O1000 b1: %3 = phi num [%1, b0]: phi has 1 input(s) for 2 "
+               "predecessor(s)"});
 }
 
 TEST(IrVerifier, PhiInputFromANonPredecessor) {
   std::string text(kLoop);
   text.replace(text.find("[%6, b2]"), 8, "[%1, b3]");
   EXPECT_EQ(verify(parseText(text)),
-            Messages{"@O1000 b1: %3 = phi [%1, b0], [%1, b3]: b3 is not a "
+            Messages{"@O1000 b1: %3 = phi num [%1, b0], [%1, b3]: b3 is not a "
                      "predecessor"});
 }
 
@@ -188,8 +189,33 @@ TEST(IrVerifier, PhiAfterOtherInstructions) {
   std::string text(kLoop);
   text.replace(text.find("  %3 = phi"), 0, "  %2 = const 5\n");
   EXPECT_EQ(verify(parseText(text)),
-            Messages{"@O1000 b1: %3 = phi [%1, b0], [%6, b2]: phi after a "
+            Messages{"@O1000 b1: %3 = phi num [%1, b0], [%6, b2]: phi after a "
                      "non-phi instruction"});
+}
+
+// Arithmetic reads numbers: a value that may be vacant goes through tonum
+// first, and a num phi takes no vnum input.
+TEST(IrVerifier, VacantValuesNeedTonum) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1 "" {
+b0:
+  %0 = ldvar #1
+  %1 = const 2
+  %2 = mul %0, %1
+  %3 = tonum %0
+  %4 = mul %3, %1
+  %5 = eq %0, %1
+  stvar #2, %0
+  br b1
+b1:
+  %6 = phi num [%0, b0]
+  %7 = phi vnum [%4, b0]
+  ret
+}
+)mbir"),
+            (Messages{"@O1 b0: %2 = mul %0, %1: operand %0 is vnum, expected "
+                      "num",
+                      "@O1 b1: %6 = phi num [%0, b0]: operand %0 is vnum, "
+                      "expected num"}));
 }
 
 TEST(IrVerifier, BadTarget) {
@@ -210,11 +236,12 @@ TEST(IrVerifier, SwitchCases) {
 
 TEST(IrVerifier, Attributes) {
   EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  %0 = ldvar #-1\n"
-                       "  %1 = blockskip 0\n  %2 = fn ADP, %0\n  ret\n}\n"),
+                       "  %1 = blockskip 0\n  %3 = tonum %0\n"
+                       "  %2 = fn ADP, %3\n  ret\n}\n"),
             (Messages{"@O1 b0: %0 = ldvar #-1: variable number is negative",
                       "@O1 b0: %1 = blockskip 0: block skip switch outside "
                       "1..9",
-                      "@O1 b0: %2 = fn ADP, %0: ADP is the adp operation, "
+                      "@O1 b0: %2 = fn ADP, %3: ADP is the adp operation, "
                       "never fn"}));
 }
 

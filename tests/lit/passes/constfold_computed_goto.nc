@@ -17,7 +17,7 @@ N30 M30
 ; CHECK-LABEL: func @O1000
 ; CHECK: begin 9
 ; CHECK-NOT: switch
-; CHECK: br [[N20:b[0-9]+]]
+; CHECK: br [[N20:b[0-9]+]]{{$}}
 ; CHECK: [[K:%[0-9]+]] = const 35
 ; CHECK-NEXT: begin 11
 ; CHECK-NEXT: switch [[K]] [10:

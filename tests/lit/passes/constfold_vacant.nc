@@ -16,14 +16,14 @@ M30
 ; CHECK-NEXT: [[ONE:%[0-9]+]] = const 1
 ; CHECK-NEXT: begin 8
 ; CHECK-NEXT: begin 9
-; CHECK-NEXT: stvar #100, [[ONE]]
+; CHECK-NEXT: stvar #100, [[ONE]]{{$}}
 ; CHECK-NEXT: begin 10
 ; CHECK-NEXT: [[A:%[0-9]+]] = const 1
 ; CHECK-NEXT: [[Z:%[0-9]+]] = const 0
-; CHECK-NEXT: [[Q:%[0-9]+]] = div [[A]], [[Z]]
-; CHECK-NEXT: stvar #101, [[Q]]
+; CHECK-NEXT: [[Q:%[0-9]+]] = div [[A]], [[Z]]{{$}}
+; CHECK-NEXT: stvar #101, [[Q]]{{$}}
 ; CHECK-NEXT: begin 11
 ; CHECK-NEXT: ldvar #50
 ; CHECK: begin 12
 ; CHECK-NEXT: [[V:%[0-9]+]] = vacant
-; CHECK-NEXT: stvar #102, [[V]]
+; CHECK-NEXT: stvar #102, [[V]]{{$}}

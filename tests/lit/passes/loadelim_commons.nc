@@ -11,11 +11,12 @@ M30
 ; CHECK-LABEL: func @MAIN
 ; CHECK-NOT: ldvar #100
 ; CHECK: [[B:%[0-9]+]] = ldvar #102
-; CHECK-NEXT: [[BB:%[0-9]+]] = mul [[B]], [[B]]
+; CHECK-NEXT: [[N:%[0-9]+]] = tonum [[B]]{{$}}
+; CHECK-NEXT: [[BB:%[0-9]+]] = mul [[N]], [[N]]{{$}}
 ; CHECK: stind
 ; CHECK: [[C:%[0-9]+]] = ldvar #102
-; CHECK-NEXT: stvar #103, [[C]]
+; CHECK-NEXT: stvar #103, [[C]]{{$}}
 ; OFF-LABEL: func @MAIN
 ; OFF: ldvar #100
 ; OFF: ldvar #102
-; OFF-NEXT: ldvar #102
+; OFF: ldvar #102

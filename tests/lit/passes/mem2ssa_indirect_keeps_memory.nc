@@ -23,6 +23,6 @@ M99
 ; CHECK-NOT: ldvar
 ; CHECK: [[FIVE:%[0-9]+]] = const 5
 ; CHECK: [[TWICE:%[0-9]+]] = const 10
-; CHECK: stvar #1, [[FIVE]]
-; CHECK-NEXT: stvar #2, [[TWICE]]
+; CHECK: stvar #1, [[FIVE]]{{$}}
+; CHECK-NEXT: stvar #2, [[TWICE]]{{$}}
 ; CHECK-NEXT: resume

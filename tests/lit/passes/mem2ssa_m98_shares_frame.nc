@@ -22,17 +22,20 @@ M99
 ; CHECK: condbr %{{[0-9]+}}, b5, b1
 ; CHECK: b1:
 ; CHECK: nc M:int %{{[0-9]+}}, P:int %{{[0-9]+}}
-; CHECK-NEXT: stvar #1, [[ONE]]
+; CHECK-NEXT: stvar #1, [[ONE]]{{$}}
 ; CHECK-NEXT: resume
 ; CHECK: b2:
 ; CHECK-NEXT: [[R1:%[0-9]+]] = ldvar #1
 ; CHECK-NEXT: [[R2:%[0-9]+]] = ldvar #2
-; CHECK: add [[R1]], [[R2]]
+; CHECK-NEXT: begin 12
+; CHECK-NEXT: [[N1:%[0-9]+]] = tonum [[R1]]{{$}}
+; CHECK-NEXT: [[N2:%[0-9]+]] = tonum [[R2]]{{$}}
+; CHECK-NEXT: add [[N1]], [[N2]]{{$}}
 ; CHECK: call.macro
 ; CHECK-NEXT: resume
 ; CHECK: b3:
 ; CHECK-NOT: ldvar #1
-; CHECK: stvar #102, [[R1]]
+; CHECK: stvar #102, [[R1]]{{$}}
 ; CHECK-NOT: stvar #
 ; CHECK: resume
 ; CHECK: b5:

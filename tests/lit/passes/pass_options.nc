@@ -9,11 +9,11 @@
 #1 = 2
 #100 = #1 * 3
 M30
-; BAD: mbc: error: unknown pass 'nosuchpass' (passes: mem2ssa, copyprop, constfold, vacancy, loadelim, dce, simplifycfg)
+; BAD: mbc: error: unknown pass 'nosuchpass' (passes: mem2ssa, copyprop, constfold, vacancy, cse, loadelim, dce, simplifycfg)
 ; BAD: usage: mbc run
 ; CHECK-LABEL: func @MAIN
 ; CHECK: [[SIX:%[0-9]+]] = const 6
-; CHECK-NEXT: stvar #100, [[SIX]]
+; CHECK-NEXT: stvar #100, [[SIX]]{{$}}
 ; RAW-LABEL: func @MAIN
 ; RAW: ldvar #1
 ; RAW: mul

@@ -10,10 +10,10 @@ M30
 ; CHECK-LABEL: func @MAIN
 ; CHECK: [[V2:%[0-9]+]] = ldvar #2
 ; CHECK: [[SUM:%[0-9]+]] = add
-; CHECK-NOT: tonum [[SUM]]
-; CHECK: stvar #101, [[SUM]]
-; CHECK: [[N2:%[0-9]+]] = tonum [[V2]]
-; CHECK-NEXT: stvar #102, [[N2]]
+; CHECK-NOT: tonum [[SUM]]{{$}}
+; CHECK: stvar #101, [[SUM]]{{$}}
+; CHECK: [[N2:%[0-9]+]] = tonum [[V2]]{{$}}
+; CHECK-NEXT: stvar #102, [[N2]]{{$}}
 ; OFF-LABEL: func @MAIN
 ; OFF: [[SUM:%[0-9]+]] = add
-; OFF: tonum [[SUM]]
+; OFF: tonum [[SUM]]{{$}}
