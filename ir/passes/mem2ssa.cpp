@@ -1,7 +1,13 @@
 // mem2ssa: promotes the locals #1..#33 of a function to SSA values with
 // phis, where that is provably invisible:
-//  - only in functions without ldind, stind and adp (indirection could
-//    reach any local, and ADP needs to know how the local was set);
+//  - only locals that no indirection (ldind, stind, adp: ADP needs to know
+//    how the local was set) can reach. The function is promoted on a copy
+//    as if no indirection reached any local; the range analysis of that copy
+//    then bounds every indirection's number. If one may reach a promoted
+//    local, the promotion starts again without the locals it may reach.
+//    (If the first indirection to reach a promoted local came before any
+//    other difference, the copy would compute the same number for it, and
+//    that number lies in its range: so no such indirection exists.);
 //  - memory holds every local whenever other code can see this frame: a
 //    local written since the frame was last synchronised is stored back
 //    before `ret` and before the resume of an NC block that may be M98
@@ -21,6 +27,10 @@
 
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
+#include "ir/passes/ranges.h"
+#include <mbc/arith.h>
+
+#include <algorithm>
 
 namespace mbc::ir {
 
@@ -28,16 +38,16 @@ namespace mem2ssa {
 
 namespace {
 
-// The locals the function accesses, or none when indirection may reach
-// them.
-Mask promotableLocals(const Function& f) {
+bool isIndirection(Op op) {
+  return op == Op::LdInd || op == Op::StInd || op == Op::Adp;
+}
+
+// The locals the function loads or stores by number.
+Mask accessedLocals(const Function& f) {
   Mask locals = 0;
   for (const Block& block : f.blocks) {
     for (ValueId id : block.insts) {
       const Inst& inst = f.insts[id];
-      if (inst.op == Op::LdInd || inst.op == Op::StInd || inst.op == Op::Adp) {
-        return 0;
-      }
       if ((inst.op == Op::LdVar || inst.op == Op::StVar) &&
           isLocal(inst.attr)) {
         locals |= localBit(inst.attr);
@@ -45,6 +55,42 @@ Mask promotableLocals(const Function& f) {
     }
   }
   return locals;
+}
+
+// The locals whose numbers (rounded half away from zero, as #[...] does)
+// lie in r.
+Mask localsIn(const Range& r) {
+  double lo = std::max(r.lo, 0.0);
+  double hi = std::min(r.hi, 40.0);
+  if (!(lo <= hi)) {
+    return 0; // never computed, or entirely outside 0..40
+  }
+  double first = std::max(roundHalfAway(lo), 1.0);
+  double last = std::min(roundHalfAway(hi), 33.0);
+  Mask m = 0;
+  for (double k = first; k <= last; ++k) {
+    m |= localBit(static_cast<std::int64_t>(k));
+  }
+  return m;
+}
+
+// The locals an indirection of `f` may reach, by the ranges of its numbers.
+Mask reachedByIndirection(const Function& f) {
+  std::vector<Range> ranges;
+  Mask reached = 0;
+  for (const Block& block : f.blocks) {
+    for (ValueId id : block.insts) {
+      const Inst& inst = f.insts[id];
+      if (!isIndirection(inst.op)) {
+        continue;
+      }
+      if (ranges.empty()) {
+        ranges = valueRanges(f);
+      }
+      reached |= localsIn(ranges[inst.ops[0]]);
+    }
+  }
+  return reached;
 }
 
 // Whether the block ends in a resume that may let other code see this
@@ -143,7 +189,8 @@ Plan makePlan(const Function& f, Mask locals) {
         f.insts[terminatorOf(f, b)].op == Op::Ret || sharesFrame(f, b);
     for (ValueId id : f.blocks[b].insts) {
       const Inst& inst = f.insts[id];
-      if (inst.op == Op::StVar && isLocal(inst.attr)) {
+      if (inst.op == Op::StVar && isLocal(inst.attr) &&
+          (locals & localBit(inst.attr))) {
         plan.writes[b] |= localBit(inst.attr);
       }
     }
@@ -175,29 +222,43 @@ void placeEdgeStores(Function& f, Plan& plan,
 
 namespace {
 
-// Works on a copy of the function, so that a plan that does not fit leaves
-// it as it was.
-void promote(Function& f) {
+// Promotes `locals` in `work`, a copy of the function: false when the plan
+// does not fit (then `work` is half rewritten).
+bool promoteInto(Function& work, mem2ssa::Mask locals) {
   using namespace mem2ssa;
-  Mask locals = promotableLocals(f);
-  if (locals == 0) {
-    return;
-  }
-  Function work = f;
   removeUnreachableBlocks(work);
   addLandingPads(work);
   Plan plan = makePlan(work, locals);
   std::vector<EdgeStore> edges;
   // A jump back to b0 (hand-written IR) would need a phi at the entry.
   if (!plan.cfg.preds[0].empty() || !planStores(plan, edges)) {
-    return;
+    return false;
   }
   placeEdgeStores(work, plan, edges);
   if (!rename(work, plan)) {
-    return;
+    return false;
   }
   removeTrivialPhis(work);
-  f = std::move(work);
+  return true;
+}
+
+// Each round leaves out at least one more local, so there are at most 33.
+void promote(Function& f) {
+  using namespace mem2ssa;
+  Mask accessed = accessedLocals(f);
+  Mask excluded = 0;
+  while (Mask locals = accessed & ~excluded) {
+    Function work = f;
+    if (!promoteInto(work, locals)) {
+      return;
+    }
+    Mask reached = reachedByIndirection(work);
+    if ((reached & locals) == 0) {
+      f = std::move(work);
+      return;
+    }
+    excluded |= reached;
+  }
 }
 
 } // namespace
