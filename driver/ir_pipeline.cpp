@@ -55,8 +55,8 @@ bool parseIrFile(const std::vector<std::string>& files, ir::Module& out) {
 
 } // namespace
 
-bool buildModule(const CompiledUnit& cu, ir::Module& out) {
-  out = ir::lower(cu.unit, cu.sources);
+bool buildModule(const CompiledUnit& cu, const Options& o, ir::Module& out) {
+  out = ir::lower(cu.unit, cu.sources, ir::LowerOptions{o.trace});
   return reportProblems(ir::verify(out), "internal error: invalid IR");
 }
 
@@ -85,7 +85,7 @@ int emitIrCommand(const Options& o) {
     if (!loadUnit(o.files, false, cu)) {
       return 1;
     }
-    if (!buildModule(cu, module)) {
+    if (!buildModule(cu, o, module)) {
       return 4;
     }
   }

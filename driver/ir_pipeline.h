@@ -10,7 +10,8 @@
 namespace mbc::driver {
 
 /// Lowers and verifies; on a verifier failure prints it and returns false.
-bool buildModule(const CompiledUnit& cu, ir::Module& out);
+/// --trace lowers with a `trace` instruction per statement.
+bool buildModule(const CompiledUnit& cu, const Options& o, ir::Module& out);
 
 /// Runs the pass pipeline as the options say (nothing with --no-opt), then
 /// verifies once more. Prints what went wrong and returns false on failure.

@@ -104,8 +104,6 @@ bool checkOptions(const Options& o, std::string& error) {
     error = fmt::format("unknown input language '{}' (nc or mbir)", o.language);
   } else if (o.language == "mbir" && o.command != "emit-ir") {
     error = "-x mbir is only available with emit-ir";
-  } else if (o.trace && o.engine != "interp") {
-    error = "--trace is only available with --engine interp for now";
   } else {
     return true;
   }
@@ -121,7 +119,7 @@ std::string usageText() {
          "                [--max-blocks N] [--block-skip[=N]] [--trace]\n"
          "                [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc check FILE...\n"
-         "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt]\n"
+         "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "                [--disable-pass NAME]... [--verify-each]\n"
          "passes: " +
          ir::passNameList() + "\n";

@@ -93,7 +93,7 @@ int runCommand(const Options& o) {
   }
   ir::Module module;
   if (o.engine == "ir" &&
-      (!buildModule(cu, module) || !optimizeModule(module, o))) {
+      (!buildModule(cu, o, module) || !optimizeModule(module, o))) {
     return 4;
   }
   CtxPtr ctx = createContext(o);

@@ -87,7 +87,7 @@ mbrt_status Interpreter::step(const Block& b) {
       }
       // A taken IF-THEN is traced with its assignment by execAssign.
       if (mbrt_tracing(ctx_) && !(taken && s.kind == StmtKind::IfThen)) {
-        trace(s, nullptr, taken ? "true" : "false");
+        trace(s, {taken ? 1.0 : 0.0}, taken);
       }
       if (!taken) {
         ++pc_;
@@ -109,14 +109,14 @@ mbrt_status Interpreter::step(const Block& b) {
         }
       }
       if (mbrt_tracing(ctx_)) {
-        trace(s, nullptr, go ? "true" : "false");
+        trace(s, {go ? 1.0 : 0.0});
       }
       pc_ = go ? pc_ + 1 : s.match + 1;
       return 0;
     }
     case StmtKind::End:
       if (mbrt_tracing(ctx_)) {
-        trace(s, nullptr, nullptr);
+        trace(s, {});
       }
       pc_ = s.match;
       return 0;
@@ -129,9 +129,6 @@ mbrt_status Interpreter::step(const Block& b) {
     case StmtKind::Popen:
     case StmtKind::Pclos:
       ++pc_;
-      if (mbrt_tracing(ctx_)) {
-        trace(s, nullptr, nullptr);
-      }
       return s.kind == StmtKind::Popen ? mbrt_popen(ctx_) : mbrt_pclos(ctx_);
     case StmtKind::Nc:
       break;

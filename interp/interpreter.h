@@ -65,9 +65,10 @@ private:
   mbrt_status evalCall(const Expr& e, Num& out, double roundIncrement);
   mbrt_status check(AlarmId id);
 
-  // Trace (trace.cpp).
-  void trace(const Stmt& s, const std::vector<mbrt_word>* words,
-             const char* outcome);
+  // The --trace line of a statement the interpreter runs itself
+  // (frontend/trace_text.h); call only when mbrt_tracing.
+  void trace(const Stmt& s, std::initializer_list<mbrt_num> values,
+             bool taken = true);
 
   const Unit& unit_;
   const SourceManager& sources_;

@@ -38,11 +38,8 @@ mbrt_status Interpreter::execAssign(const Stmt& s) {
     number = numeric(idx);
   }
   if (mbrt_tracing(ctx_)) {
-    trace(s, nullptr,
-          fmt::format("#{} = {}", roundHalfAway(number),
-                      isVacant(v) ? std::string("<vacant>")
-                                  : fmt::format("{}", v))
-              .c_str());
+    trace(s, s.target.index ? std::initializer_list<mbrt_num>{number, v}
+                            : std::initializer_list<mbrt_num>{v});
   }
   return mbrt_write_var(ctx_, number, v,
                         s.message.empty() ? nullptr : s.message.c_str());
@@ -51,9 +48,7 @@ mbrt_status Interpreter::execAssign(const Stmt& s) {
 mbrt_status Interpreter::execGoto(const Stmt& s) {
   if (s.gotoBlock) {
     if (mbrt_tracing(ctx_) && s.kind == StmtKind::Goto) {
-      trace(s, nullptr,
-            fmt::format("N{}", unit_.programs[prog_].blocks[*s.gotoBlock].seq)
-                .c_str());
+      trace(s, {});
     }
     pc_ = *s.gotoBlock;
     return 0;
@@ -64,7 +59,7 @@ mbrt_status Interpreter::execGoto(const Stmt& s) {
   }
   double n = roundHalfAway(numeric(target));
   if (mbrt_tracing(ctx_) && s.kind == StmtKind::Goto) {
-    trace(s, nullptr, fmt::format("N{}", n).c_str());
+    trace(s, {n});
   }
   if (n < 1 || n > 99999) {
     return mbrt_raise_sequence(ctx_, "GOTO ", numeric(target),
@@ -107,9 +102,6 @@ mbrt_status Interpreter::evalWords(const std::vector<Word>& words,
 mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
   if (mbrt_status st = evalWords(s.words, scratch_)) {
     return st;
-  }
-  if (mbrt_tracing(ctx_)) {
-    trace(s, &scratch_, nullptr);
   }
   mbrt_flow flow{};
   if (mbrt_status st =
@@ -162,9 +154,7 @@ mbrt_status Interpreter::execMacroCall(const Stmt& s) {
   if (mbrt_status st = evalWords(s.words, args)) {
     return st;
   }
-  if (mbrt_tracing(ctx_)) {
-    trace(s, &args, fmt::format("P{} L{}", numeric(p), numeric(l)).c_str());
-  }
+  mbrt_trace_call(ctx_, p, l, args.data(), args.size());
   int target = findProgram(numeric(p));
   if (target < 0) {
     return mbrt_raise_program_not_found(ctx_, numeric(p));
@@ -190,9 +180,6 @@ mbrt_status Interpreter::execPrint(const Stmt& s) {
       out.text = it.text.c_str();
     }
     items.push_back(out);
-  }
-  if (mbrt_tracing(ctx_)) {
-    trace(s, nullptr, nullptr);
   }
   return s.kind == StmtKind::Dprnt
              ? mbrt_dprnt(ctx_, items.data(), items.size())

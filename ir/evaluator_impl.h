@@ -75,6 +75,7 @@ private:
   mbrt_status execCallMacro(const Inst& inst, Frame& frame, int depth,
                             FlowRec& out);
   mbrt_status execPrint(const Inst& inst, const Frame& frame);
+  mbrt_status execTrace(const Inst& inst, const Frame& frame);
   mbrt_status buildWords(const Inst& inst, const Frame& frame,
                          std::size_t first, std::vector<mbrt_word>& out);
   const char* message(const Inst& inst) const;
@@ -87,6 +88,7 @@ private:
   std::vector<std::unique_ptr<Frame>> frames_; // by call depth
   std::vector<mbrt_word> words_;               // nc words (no recursion)
   std::vector<mbrt_print_item> items_;         // dprnt/bprnt items
+  std::vector<mbrt_num> traceValues_;          // trace values
   std::vector<double> phiValues_;              // parallel copy of phis
   std::vector<FlowRec> phiFlows_;
 };

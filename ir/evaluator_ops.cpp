@@ -194,6 +194,8 @@ mbrt_status Evaluator::execEffect(const Inst& inst, Frame& frame, int depth,
       return mbrt_popen(ctx_);
     case Op::Pclos:
       return mbrt_pclos(ctx_);
+    case Op::Trace:
+      return execTrace(inst, frame);
     default:
       return internalError("terminator in the middle of a block");
   }
@@ -255,6 +257,7 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
   if (mbrt_status st = buildWords(inst, frame, 2, frame.args)) {
     return st;
   }
+  mbrt_trace_call(ctx_, p, l, frame.args.data(), frame.args.size());
   int target = findProgram(p);
   if (target < 0) {
     return mbrt_raise_program_not_found(ctx_, p);
@@ -267,6 +270,19 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
   }
   return call(target, depth, true, frame.args.data(), frame.args.size(), repeat,
               out);
+}
+
+mbrt_status Evaluator::execTrace(const Inst& inst, const Frame& frame) {
+  const char* tmpl = message(inst);
+  if (tmpl == nullptr) {
+    return internalError("trace without a template");
+  }
+  traceValues_.clear();
+  for (ValueId v : inst.ops) {
+    traceValues_.push_back(frame.values[v]);
+  }
+  mbrt_trace_values(ctx_, tmpl, traceValues_.data(), traceValues_.size());
+  return 0;
 }
 
 // Items: a text item is str << 1 (str indexes Module::strings), a value

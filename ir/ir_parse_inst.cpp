@@ -228,6 +228,12 @@ void OperandParser::parse() {
     case Op::Phi:
       phi();
       return;
+    case Op::Trace:
+      inst_.str = intern(c_.string()) + 1;
+      while (c_.accept(',')) {
+        inst_.ops.push_back(c_.value());
+      }
+      return;
     case Op::Br:
       inst_.targets.push_back(c_.block());
       return;

@@ -5,6 +5,7 @@
 #include "ir/lower.h"
 
 #include "frontend/sema.h"
+#include "frontend/trace_text.h"
 
 #include <set>
 
@@ -14,8 +15,9 @@ namespace {
 
 class FunctionLowering {
 public:
-  FunctionLowering(const Program& program, Module& module, Function& fn)
-      : program_(program), module_(module), fn_(fn) {}
+  FunctionLowering(const Program& program, Module& module, Function& fn,
+                   const LowerOptions& options)
+      : program_(program), module_(module), fn_(fn), options_(options) {}
 
   void run();
 
@@ -28,6 +30,7 @@ private:
   void lowerBlock(int index);
   void lowerStatement(const Stmt& s, int index);
   void lowerAssign(const Stmt& s);
+  void trace(const Stmt& s, std::vector<ValueId> values, bool taken = true);
   void lowerGoto(const Stmt& s, int index);
   void lowerWords(const std::vector<Word>& words, Inst& into,
                   std::vector<ValueId>& ops);
@@ -44,6 +47,7 @@ private:
   const Program& program_;
   Module& module_;
   Function& fn_;
+  const LowerOptions& options_;
   std::vector<BlockId> heads_; // head block of each source block, + exit
   BlockId cur_ = 0;
   std::uint32_t line_ = 0;
@@ -144,7 +148,18 @@ void FunctionLowering::lowerStatement(const Stmt& s, int index) {
     case StmtKind::IfThen: {
       ValueId c = lowerExpr(*s.cond);
       BlockId taken = newBlock();
-      terminate(Op::CondBr, {taken, next}, {c});
+      BlockId notTaken = next;
+      if (s.kind == StmtKind::IfGoto) {
+        trace(s, {c});
+      } else if (options_.trace) {
+        notTaken = newBlock();
+      }
+      terminate(Op::CondBr, {taken, notTaken}, {c});
+      if (notTaken != next) {
+        cur_ = notTaken;
+        trace(s, {}, false);
+        terminate(Op::Br, {next});
+      }
       cur_ = taken;
       if (s.kind == StmtKind::IfThen) {
         lowerAssign(s);
@@ -155,16 +170,24 @@ void FunctionLowering::lowerStatement(const Stmt& s, int index) {
       return;
     }
     case StmtKind::Goto:
+      if (s.gotoBlock) {
+        trace(s, {});
+      }
       lowerGoto(s, index);
       return;
-    case StmtKind::While:
+    case StmtKind::While: {
       if (!s.cond) {
+        trace(s, {});
         terminate(Op::Br, {next});
         return;
       }
-      terminate(Op::CondBr, {next, head(s.match + 1)}, {lowerExpr(*s.cond)});
+      ValueId c = lowerExpr(*s.cond);
+      trace(s, {c});
+      terminate(Op::CondBr, {next, head(s.match + 1)}, {c});
       return;
+    }
     case StmtKind::End:
+      trace(s, {});
       terminate(Op::Br, {head(s.match)});
       return;
     case StmtKind::Nc: {
@@ -210,12 +233,22 @@ void FunctionLowering::lowerAssign(const Stmt& s) {
   ValueId st = 0;
   if (s.target.index) {
     ValueId idx = lowerNum(*s.target.index);
+    trace(s, {idx, v});
     st = emit(Op::StInd, {idx, v});
   } else {
+    trace(s, {v});
     st = emit(Op::StVar, {v});
     fn_.insts[st].attr = s.target.number;
   }
   fn_.insts[st].str = message;
+}
+
+void FunctionLowering::trace(const Stmt& s, std::vector<ValueId> values,
+                             bool taken) {
+  if (options_.trace) {
+    ValueId t = emit(Op::Trace, std::move(values));
+    fn_.insts[t].str = intern(traceTemplate(program_, s, taken));
+  }
 }
 
 void FunctionLowering::lowerGoto(const Stmt& s, int index) {
@@ -224,6 +257,9 @@ void FunctionLowering::lowerGoto(const Stmt& s, int index) {
     return;
   }
   ValueId target = lowerExpr(*s.value);
+  if (s.kind == StmtKind::Goto) {
+    trace(s, {target});
+  }
   terminate(Op::Switch, {}, {target});
   addSequenceTable(fn_.insts.back(), index);
 }
@@ -355,7 +391,8 @@ ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
 
 } // namespace
 
-Module lower(const Unit& unit, const SourceManager& sources) {
+Module lower(const Unit& unit, const SourceManager& sources,
+             const LowerOptions& options) {
   Module m;
   m.functions.resize(unit.programs.size());
   for (std::size_t i = 0; i < unit.programs.size(); ++i) {
@@ -364,7 +401,7 @@ Module lower(const Unit& unit, const SourceManager& sources) {
     fn.name = p.name;
     fn.number = p.number;
     fn.file = sources.name(p.file);
-    FunctionLowering(p, m, fn).run();
+    FunctionLowering(p, m, fn, options).run();
   }
   return m;
 }

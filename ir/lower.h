@@ -9,7 +9,14 @@
 
 namespace mbc::ir {
 
+struct LowerOptions {
+  /// Emit a `trace` before each statement the engine runs itself, with the
+  /// line --trace prints for it (frontend/trace_text.h).
+  bool trace = false;
+};
+
 /// Lowers every program of a checked unit (no diagnostics errors).
-Module lower(const Unit& unit, const SourceManager& sources);
+Module lower(const Unit& unit, const SourceManager& sources,
+             const LowerOptions& options = {});
 
 } // namespace mbc::ir

@@ -194,6 +194,14 @@ void OperandPrinter::print() {
     case Op::Phi:
       phi();
       return;
+    case Op::Trace:
+      out_ += " ";
+      string(inst_.str - 1);
+      for (std::size_t i = 0; i < inst_.ops.size(); ++i) {
+        out_ += ", ";
+        operand(i);
+      }
+      return;
     case Op::Br:
       out_ += " ";
       target(0);

@@ -27,7 +27,8 @@ std::string_view typeName(Type t) {
   return i < kNames.size() ? kNames[i] : "?";
 }
 
-// The type operand i must have; VNum accepts Num too. Arithmetic, functions,
+// The type operand i must have; VNum accepts Num too, None any value but a
+// flow. Arithmetic, functions,
 // ordering comparisons and variable numbers read a number (vacant as 0
 // through an explicit tonum); equality, stores, NC words, print items and
 // the computed GOTO tell vacant apart, so they take either.
@@ -40,6 +41,8 @@ Type operandType(const Inst& inst, std::size_t i) {
       return Type::Bool;
     case Op::Resume:
       return Type::Flow;
+    case Op::Trace:
+      return Type::None;
     case Op::Phi:
       return inst.type;
     case Op::StInd:
@@ -60,7 +63,22 @@ Type operandType(const Inst& inst, std::size_t i) {
 }
 
 bool accepts(Type want, Type got) {
+  if (want == Type::None) {
+    return got != Type::Flow && got != Type::None;
+  }
   return got == want || (want == Type::VNum && got == Type::Num);
+}
+
+// The holes of a trace template ("{}", "{#}", "{?}"; mbrt_trace_values).
+std::size_t traceHoles(std::string_view tmpl) {
+  std::size_t n = 0;
+  for (std::string_view hole : {"{}", "{#}", "{?}"}) {
+    for (auto at = tmpl.find(hole); at != std::string_view::npos;
+         at = tmpl.find(hole, at + 1)) {
+      ++n;
+    }
+  }
+  return n;
 }
 
 // The number of block targets an instruction needs.
@@ -239,6 +257,14 @@ void FunctionVerifier::checkOperandCount(BlockId b, ValueId id,
       return;
     case Op::Phi: // one per input block: checkTargets
       return;
+    case Op::Trace:
+      if (inst.str == 0) {
+        fail(b, id, "trace without a template");
+      } else if (inst.str <= module_.strings.size()) {
+        expect(traceHoles(module_.strings[inst.str - 1]),
+               " for the template's holes");
+      }
+      return;
     case Op::Nc:
     case Op::CallMacro:
       if (inst.op == Op::CallMacro && n < 2) {
@@ -375,7 +401,8 @@ void FunctionVerifier::checkOperands(BlockId b, std::uint32_t index, ValueId id,
     if (!accepts(want, got)) {
       fail(b, id,
            fmt::format("operand %{} is {}, expected {}", v, typeName(got),
-                       typeName(want)));
+                       want == Type::None ? "a value other than a flow"
+                                          : typeName(want)));
     }
     checkDominance(b, index, id, inst, i);
   }

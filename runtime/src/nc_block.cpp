@@ -311,6 +311,7 @@ using namespace mbc::rt;
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow) {
   *flow = mbrt_flow{};
+  mbrt_trace_words(ctx, "", words, count);
   const mbrt_status status = executeBlock(*ctx, words, count, flow);
   if (status != 0) {
     *flow = mbrt_flow{};

@@ -20,6 +20,7 @@ void sendLine(mbrt_ctx& ctx) {
 
 mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
                        size_t count) {
+  mbrt_trace(ctx, "DPRNT");
   if (ctx->printSink.fn == nullptr) {
     return 0; // nothing in DPRNT can fail, so skip the formatting
   }
@@ -38,6 +39,7 @@ mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
 
 mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
                        size_t count) {
+  mbrt_trace(ctx, "BPRNT");
   std::string& line = ctx->scratch;
   line.clear();
   for (size_t i = 0; i < count; ++i) {
@@ -56,10 +58,12 @@ mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
   return 0;
 }
 
-mbrt_status mbrt_popen(mbrt_ctx*) {
+mbrt_status mbrt_popen(mbrt_ctx* ctx) {
+  mbrt_trace(ctx, "POPEN");
   return 0;
 }
 
-mbrt_status mbrt_pclos(mbrt_ctx*) {
+mbrt_status mbrt_pclos(mbrt_ctx* ctx) {
+  mbrt_trace(ctx, "PCLOS");
   return 0;
 }

@@ -28,6 +28,7 @@ b1:
   begin 2
   %4 = const 3
   %5 = lt %3, %4
+  trace "WHILE [{?}] DO1", %5
   condbr %5, b2, b3
 b2:
   begin 3

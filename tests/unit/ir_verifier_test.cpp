@@ -218,6 +218,28 @@ b1:
                       "expected num"}));
 }
 
+// A trace takes one value per hole of its template, and no flow.
+TEST(IrVerifier, TraceHolesAndTypes) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1 "" {
+b0:
+  %0 = const 1
+  %1 = lt %0, %0
+  trace "#{#} = {}", %0, %0
+  trace "WHILE [{?}] DO1", %1
+  trace "#5 = {}"
+  %2 = nc
+  trace "IF [{?}] GOTO", %2
+  resume %2, b1 []
+b1:
+  ret
+}
+)mbir"),
+            (Messages{"@O1 b0: trace \"#5 = {}\": expected 1 operand(s) for "
+                      "the template's holes, got 0",
+                      "@O1 b0: trace \"IF [{?}] GOTO\", %2: operand %2 is "
+                      "flow, expected a value other than a flow"}));
+}
+
 TEST(IrVerifier, BadTarget) {
   EXPECT_EQ(verifyText("func @O1 \"\" {\nb0:\n  br b7\n}\n"),
             Messages{"@O1 b0: br b7: target b7 does not exist"});

@@ -103,6 +103,12 @@ mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line);
 int mbrt_tracing(const mbrt_ctx* ctx);
 /* Writes "file:line: text" for the current block to the trace sink. */
 void mbrt_trace(mbrt_ctx* ctx, const char* text);
+/* Traces a template whose holes take the values in order: "{}" a value
+ * ("<vacant>" when vacant), "{#}" a variable number (rounded half away from
+ * zero), "{?}" a truth ("true" unless 0). frontend/trace_text.h makes the
+ * templates of the statements engines run themselves. */
+void mbrt_trace_values(mbrt_ctx* ctx, const char* tmpl, const mbrt_num* values,
+                       size_t count);
 
 enum mbrt_end_kind {
   MBRT_END_PROGRAM = 0, /* end of the main program's text or '%' */
@@ -174,6 +180,14 @@ typedef struct mbrt_flow {
  * the engine what control transfer it asks for. */
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow);
+
+/* Traces "head" followed by the words ("X10 Y-2"). mbrt_nc_block traces its
+ * own words. Engines trace a G65 call with mbrt_trace_call ("G65 P L" and
+ * the arguments) before they look the program up. */
+void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
+                      size_t count);
+void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
+                     const mbrt_word* words, size_t count);
 
 /* G65/G66 call: a new local level whose #1..#33 are set from the argument
  * words (specification I and II, spec §5.2-5.4). P and L are not passed.
