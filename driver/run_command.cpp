@@ -140,18 +140,14 @@ int runCommand(const Options& o) {
     st = mbrt_set_main_args(ctx.get(), words.data(), words.size());
   }
   if (!st) {
-    unsigned skipMask = o.blockSkipMask;
-    if (mbrt_block_skip(ctx.get())) {
-      skipMask |= 1U << 1;
-    }
+    mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
     MathParams math;
     math.nat = (static_cast<long>(mbrt_parameter(ctx.get(), 6004)) & 1) != 0;
     if (o.engine == "ir") {
-      ir::EvalOptions eo{math, skipMask};
+      ir::EvalOptions eo{math};
       st = ir::evaluate(module, mainIndex, ctx.get(), eo);
     } else {
-      Interpreter interp(cu.unit, cu.sources, ctx.get(),
-                         InterpOptions{math, skipMask});
+      Interpreter interp(cu.unit, cu.sources, ctx.get(), InterpOptions{math});
       st = interp.run(mainIndex);
     }
   }

@@ -46,7 +46,7 @@ mbrt_status Interpreter::run(int mainIndex) {
       continue;
     }
     const Block& b = p.blocks[pc_];
-    if (b.skipLevel && (options_.blockSkipMask >> b.skipLevel) & 1U) {
+    if (b.skipLevel && mbrt_skip_switch(ctx_, b.skipLevel)) {
       ++pc_;
       continue;
     }

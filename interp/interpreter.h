@@ -19,8 +19,6 @@ namespace mbc {
 
 struct InterpOptions {
   MathParams math;
-  /// Bit n set: optional block skip switch /n is on (bit 1 for plain '/').
-  unsigned blockSkipMask = 0;
 };
 
 class Interpreter {

@@ -220,11 +220,9 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
         return mbrt_raise_program_not_found(ctx_, flow.program);
       }
       FlowRec out{};
-      if (flow.repeat > 0) {
-        if (mbrt_status st =
-                call(target, depth, false, nullptr, 0, flow.repeat, out)) {
-          return st;
-        }
+      if (mbrt_status st =
+              call(target, depth, false, nullptr, 0, flow.repeat, out)) {
+        return st;
       }
       if (out.flow.has_seq) {
         return jumpToSeq(fn, inst, out.flow.seq, next);
@@ -251,35 +249,34 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
   }
 }
 
-// Runs function `callee` `repeat` times (G65 with a new local level, or M98
-// on the same one) like interp enter/leave: after every run mbrt_return,
-// then the next repetition unless the callee left by M99 P. `out` is the
-// call's flow: NEXT, with has_seq/seq for M99 P.
+// A call of function `callee` (G65 with a new local level, or M98 on the
+// same one) through the runtime, which repeats it and returns like every
+// other engine. `out` is the call's flow: NEXT, with has_seq/seq for M99 P.
 mbrt_status Evaluator::call(int callee, int depth, bool macro,
                             const mbrt_word* args, std::size_t count,
                             long repeat, FlowRec& out) {
-  const char* name =
-      module_.functions[static_cast<std::size_t>(callee)].name.c_str();
+  struct Activation {
+    Evaluator* self;
+    int callee;
+    int depth;
+  };
+
+  auto body = [](mbrt_ctx*, void* user, mbrt_flow* leave) -> mbrt_status {
+    auto* a = static_cast<Activation*>(user);
+    if (mbrt_status st = a->self->runFunction(a->callee, a->depth)) {
+      return st;
+    }
+    const Frame& done = *a->self->frames_[static_cast<std::size_t>(a->depth)];
+    leave->has_seq = done.hasSeq ? 1 : 0;
+    leave->seq = done.seq;
+    return 0;
+  };
+  Activation activation{this, callee, depth + 1};
   out = FlowRec{};
   out.fromCall = true;
-  for (;;) {
-    mbrt_status st = macro ? mbrt_call_macro(ctx_, name, args, count)
-                           : mbrt_call_sub(ctx_, name);
-    if (st) {
-      return st;
-    }
-    if ((st = runFunction(callee, depth + 1))) {
-      return st;
-    }
-    const Frame& done = *frames_[static_cast<std::size_t>(depth) + 1];
-    mbrt_return(ctx_);
-    if (--repeat > 0 && !done.hasSeq) {
-      continue;
-    }
-    out.flow.has_seq = done.hasSeq ? 1 : 0;
-    out.flow.seq = done.seq;
-    return 0;
-  }
+  return mbrt_run_call(
+      ctx_, module_.functions[static_cast<std::size_t>(callee)].name.c_str(),
+      macro ? 1 : 0, args, count, repeat, body, &activation, &out.flow);
 }
 
 } // namespace detail

@@ -12,8 +12,6 @@ namespace mbc::ir {
 
 struct EvalOptions {
   MathParams math;
-  /// Bit n set: optional block skip switch /n is on (bit 1 for plain '/').
-  unsigned blockSkipMask = 0;
 };
 
 /// Runs module.functions[mainIndex] like the interpreter runs a program

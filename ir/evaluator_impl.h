@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ir/evaluator.h"
+#include <mbc/compiled.h>
 
 #include <memory>
 #include <unordered_map>
@@ -13,7 +14,7 @@ namespace mbc::ir::detail {
 
 /// Internal status: the run ended normally (mbrt_finish was called); every
 /// activation unwinds and evaluate() returns 0. Alarms are > 0.
-inline constexpr mbrt_status kStop = -1;
+inline constexpr mbrt_status kStop = MBRT_STOP;
 
 /// A flow value: the record of an NC block, or the outcome of a call
 /// (fromCall: flow.kind is NEXT, with has_seq/seq for the callee's M99 P).
@@ -70,7 +71,6 @@ private:
   mbrt_status execVariable(const Inst& inst, Frame& frame, ValueId id);
   mbrt_status execEffect(const Inst& inst, Frame& frame, int depth, ValueId id);
   mbrt_status execFn(const Inst& inst, const Frame& frame, double& out);
-  mbrt_status execRoundAddr(const Inst& inst, const Frame& frame, double& out);
   mbrt_status execNc(const Inst& inst, Frame& frame, FlowRec& out);
   mbrt_status execCallMacro(const Inst& inst, Frame& frame, int depth,
                             FlowRec& out);

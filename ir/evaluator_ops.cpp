@@ -107,7 +107,8 @@ mbrt_status Evaluator::execValue(const Inst& inst, Frame& frame, ValueId id) {
     case Op::Fn:
       return execFn(inst, frame, v[id]);
     case Op::RoundAddr:
-      return execRoundAddr(inst, frame, v[id]);
+      return mbrt_round_address(ctx_, static_cast<int>(inst.attr),
+                                v[inst.ops[0]], &v[id]);
     default:
       return execLogic(inst, frame, id);
   }
@@ -126,8 +127,7 @@ mbrt_status Evaluator::execLogic(const Inst& inst, Frame& frame, ValueId id) {
       v[id] = truth((v[inst.ops[0]] != 0) != (v[inst.ops[1]] != 0));
       return 0;
     case Op::BlockSkip:
-      v[id] = truth(inst.attr > 0 && inst.attr < 32 &&
-                    ((options_.blockSkipMask >> inst.attr) & 1U) != 0);
+      v[id] = truth(mbrt_skip_switch(ctx_, static_cast<int>(inst.attr)) != 0);
       return 0;
     default: // a phi after the head of its block
       return internalError("phi after the head of its block");
@@ -142,18 +142,6 @@ mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
   }
   return check(
       evalBuiltin(static_cast<Builtin>(inst.attr), args, options_.math, &out));
-}
-
-// ROUND written directly in an address rounds to its least increment.
-mbrt_status Evaluator::execRoundAddr(const Inst& inst, const Frame& frame,
-                                     double& out) {
-  Num args[2] = {frame.values[inst.ops[0]], 0};
-  double inc = mbrt_address_increment(ctx_, static_cast<char>(inst.attr));
-  if (inc > 0) {
-    out = roundHalfAway(numeric(args[0]) / inc) * inc;
-    return 0;
-  }
-  return check(evalBuiltin(Builtin::Round, args, options_.math, &out));
 }
 
 const char* Evaluator::message(const Inst& inst) const {

@@ -77,11 +77,11 @@ mbrt_status mapArguments(mbrt_ctx& ctx, const mbrt_word* args, size_t count,
     // X10 passes 0.010 mm (spec §5.4); ADP gives the 10 back.
     if (word.kind == MBRT_WORD_INT_LITERAL && scalesLiteral(ctx, word.letter) &&
         !ctx.profile.decimalPointInput()) {
-      level.values[local - 1] = word.value / ctx.scale();
-      level.adpMask |= bit;
+      level.value[local - 1] = word.value / ctx.scale();
+      level.adp_mask |= bit;
     } else {
-      level.values[local - 1] = word.value;
-      level.adpMask &= ~bit;
+      level.value[local - 1] = word.value;
+      level.adp_mask &= ~bit;
     }
   }
   return 0;
@@ -102,8 +102,8 @@ void pushCall(mbrt_ctx& ctx, const char* program, bool macro) {
   call.program = program != nullptr ? program : "";
   call.programNumber = parseProgramNumber(program);
   call.macro = macro;
-  call.file = ctx.file;
-  call.line = ctx.line;
+  call.file = ctx.block.file;
+  call.line = ctx.block.line;
 }
 
 } // namespace

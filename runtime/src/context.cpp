@@ -86,9 +86,9 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};
   ctx.modal.inch = inch;
-  ctx.file = nullptr;
-  ctx.line = 0;
-  ctx.blocks = 0;
+  ctx.block.file = nullptr;
+  ctx.block.line = 0;
+  ctx.block.blocks = 0;
   ctx.moves = 0;
   ctx.optionalStops = 0;
   ctx.mainM99 = false;
@@ -123,8 +123,8 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   alarm.id = id;
   alarm.macroNumber = macroNumber;
   alarm.detail = detail;
-  alarm.file = ctx.file != nullptr ? ctx.file : "";
-  alarm.line = ctx.line;
+  alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
+  alarm.line = ctx.block.line;
   alarm.stack.clear();
   for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
     alarm.stack.push_back(CallSite{
@@ -138,7 +138,8 @@ void sendMessage(mbrt_ctx& ctx, std::string_view text) {
     return;
   }
   const std::string line =
-      location(ctx.file != nullptr ? ctx.file : "", ctx.line) +
+      location(ctx.block.file != nullptr ? ctx.block.file : "",
+               ctx.block.line) +
       fmt::format("message: {}\n", text);
   ctx.messageSink.fn(ctx.messageSink.user, line.data(), line.size());
 }
@@ -219,7 +220,7 @@ void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
 }
 
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
-  ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
+  ctx->block.max_blocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
 }
 
 double mbrt_parameter(const mbrt_ctx* ctx, int number) {
@@ -242,19 +243,39 @@ int mbrt_block_skip(const mbrt_ctx* ctx) {
   return ctx->profile.blockSkip;
 }
 
+void mbrt_set_block_skip(mbrt_ctx* ctx, unsigned mask) {
+  ctx->skipMask = mask;
+}
+
+int mbrt_skip_switch(const mbrt_ctx* ctx, int n) {
+  if (n == 1 && ctx->profile.blockSkip) {
+    return 1;
+  }
+  return n > 0 && n < 32 && ((ctx->skipMask >> n) & 1U) != 0;
+}
+
 void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
   resetRun(*ctx, main_program);
 }
 
+void mbrt_reset(mbrt_ctx* ctx) {
+  loadProfile(*ctx);
+  resetRun(*ctx, "MAIN");
+}
+
 mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
-  ctx->file = file;
-  ctx->line = line;
-  if (++ctx->blocks > ctx->maxBlocks) {
-    return raise(*ctx, AlarmId::ExecutionLimit,
-                 fmt::format("more than {} blocks executed (--max-blocks)",
-                             ctx->maxBlocks));
+  ctx->block.file = file;
+  ctx->block.line = line;
+  if (++ctx->block.blocks > ctx->block.max_blocks) {
+    return mbrt_block_limit(ctx);
   }
   return 0;
+}
+
+mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
+  return raise(*ctx, AlarmId::ExecutionLimit,
+               fmt::format("more than {} blocks executed (--max-blocks)",
+                           ctx->block.max_blocks));
 }
 
 int mbrt_tracing(const mbrt_ctx* ctx) {
@@ -266,7 +287,8 @@ void mbrt_trace(mbrt_ctx* ctx, const char* text) {
     return;
   }
   const std::string line =
-      location(ctx->file != nullptr ? ctx->file : "", ctx->line) +
+      location(ctx->block.file != nullptr ? ctx->block.file : "",
+               ctx->block.line) +
       (text != nullptr ? text : "") + "\n";
   ctx->traceSink.fn(ctx->traceSink.user, line.data(), line.size());
 }
@@ -310,7 +332,7 @@ size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
 }
 
 void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
-  out->blocks = ctx->blocks;
+  out->blocks = ctx->block.blocks;
   out->moves = ctx->moves;
   out->optional_stops = ctx->optionalStops;
   out->main_m99 = ctx->mainM99;

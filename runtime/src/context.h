@@ -4,9 +4,11 @@
 #pragma once
 
 #include <mbc/alarm.h>
+#include <mbc/compiled.h>
 #include <mbc/runtime.h>
 #include <mbc/value.h>
 
+#include <algorithm>
 #include <array>
 #include <cfloat>
 #include <cmath>
@@ -28,13 +30,9 @@ inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
 using Counts = std::int64_t;
 using AxisCounts = std::array<Counts, MBRT_MAX_AXES>;
 
-/// One macro call level's #1..#33. Bit i of adpMask: #(i+1) was set from an
-/// argument written without decimal point (ADP gives the literal back).
-struct LocalLevel {
-  LocalLevel() { values.fill(vacant()); }
-
-  std::array<Num, kLocalCount> values{};
-  std::uint64_t adpMask = 0;
+/// One macro call level: the C struct compiled code addresses directly.
+struct LocalLevel : mbrt_level {
+  LocalLevel() : mbrt_level{} { std::fill_n(value, kLocalCount, vacant()); }
 };
 
 /// One active call (G65 or M98): nesting checks, #4115 and the call stack of
@@ -114,11 +112,9 @@ struct mbrt_ctx {
   mbc::rt::ModalState modal;
   mbc::rt::AxisCounts machine{}; // machine position, the primary one
 
-  // The run.
-  const char* file = nullptr; // block being executed
-  int line = 0;
-  std::uint64_t blocks = 0;
-  std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks;
+  // The run: the block being executed and the count of blocks.
+  mbrt_block_state block{nullptr, 0, 0, mbc::rt::kDefaultMaxBlocks};
+  unsigned skipMask = 0; // optional block skip switches: bit n for /n
   std::uint64_t moves = 0;
   std::uint64_t optionalStops = 0;
   bool mainM99 = false;

@@ -99,8 +99,8 @@ void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center) {
   motion.center[0] = center.x / scale;
   motion.center[1] = center.y / scale;
   motion.decimals = ctx.decimals();
-  motion.file = ctx.file;
-  motion.line = ctx.line;
+  motion.file = ctx.block.file;
+  motion.line = ctx.block.line;
   motion.program = ctx.programName();
   ctx.motionSink.fn(ctx.motionSink.user, &motion);
 }

@@ -50,7 +50,7 @@ mbrt_status outOfRange(mbrt_ctx& ctx, long n) {
 mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out) {
   const long n = variableNumber(number);
   if (isLocal(n)) {
-    *out = ctx->locals().values[n - 1];
+    *out = ctx->locals().value[n - 1];
     return 0;
   }
   if (isCommon(*ctx, n)) {
@@ -72,8 +72,8 @@ mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
   const long n = variableNumber(number);
   if (isLocal(n)) {
     LocalLevel& level = ctx->locals();
-    level.values[n - 1] = value;
-    level.adpMask &= ~(std::uint64_t{1} << (n - 1));
+    level.value[n - 1] = value;
+    level.adp_mask &= ~(std::uint64_t{1} << (n - 1));
     return 0;
   }
   if (isCommon(*ctx, n)) {
@@ -93,8 +93,8 @@ mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
   const long n = variableNumber(number);
   if (isLocal(n)) {
     const LocalLevel& level = ctx->locals();
-    const Num value = level.values[n - 1];
-    const bool fromLiteral = (level.adpMask >> (n - 1)) & 1;
+    const Num value = level.value[n - 1];
+    const bool fromLiteral = (level.adp_mask >> (n - 1)) & 1;
     // The argument was literal / scale with an integer literal, so this
     // gives the literal back exactly.
     *out = fromLiteral ? roundHalfAway(value * ctx->scale()) : value;
@@ -103,8 +103,12 @@ mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
   return mbrt_read_var(ctx, number, out);
 }
 
-mbrt_num* mbrt_locals(mbrt_ctx* ctx) {
-  return ctx->locals().values.data();
+mbrt_level* mbrt_current_level(mbrt_ctx* ctx) {
+  return &ctx->locals();
+}
+
+mbrt_num* mbrt_common_base(mbrt_ctx* ctx) {
+  return ctx->commons.data();
 }
 
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {

@@ -110,7 +110,8 @@ private:
 };
 
 mbrt_status run(const Module& m, Machine& machine, unsigned skipMask = 0) {
-  return evaluate(m, 0, machine.ctx(), EvalOptions{MathParams{}, skipMask});
+  mbrt_set_block_skip(machine.ctx(), skipMask);
+  return evaluate(m, 0, machine.ctx(), EvalOptions{});
 }
 
 mbrt_stats stats(const Machine& machine) {

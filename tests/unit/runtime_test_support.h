@@ -3,6 +3,7 @@
 #pragma once
 
 #include <mbc/alarm.h>
+#include <mbc/compiled.h>
 #include <mbc/runtime.h>
 #include <mbc/toolpath_json.h>
 #include <mbc/value.h>

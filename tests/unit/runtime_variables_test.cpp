@@ -12,7 +12,7 @@ TEST(RuntimeVariables, LocalsStartVacantAndKeepWrites) {
   EXPECT_TRUE(isVacant(m.read(1)));
   EXPECT_EQ(m.write(33, 2.5), 0);
   EXPECT_EQ(m.read(33), 2.5);
-  EXPECT_EQ(mbrt_locals(m.ctx())[32], 2.5);
+  EXPECT_EQ(mbrt_current_level(m.ctx())->value[32], 2.5);
 }
 
 TEST(RuntimeVariables, NumberIsRoundedHalfAwayFromZero) {

@@ -86,9 +86,14 @@ void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
 /* A parameter of the machine profile (3401, 3410, 6001 or 6004; 0 for any
  * other number). Engines read 6004 bit 0 (NAT) for ASIN/ATAN. */
 double mbrt_parameter(const mbrt_ctx* ctx, int number);
-/* 1 when the optional block skip switch is on: blocks starting with '/' are
- * skipped by the engine. */
+/* 1 when the profile turns the optional block skip switch on: blocks
+ * starting with '/' are skipped. */
 int mbrt_block_skip(const mbrt_ctx* ctx);
+/* Turns optional block skip switches on: bit n for /n (bit 1 for plain '/'),
+ * on top of the profile's switch. */
+void mbrt_set_block_skip(mbrt_ctx* ctx, unsigned mask);
+/* 1 when switch /n is on (the profile's switch counts as /1). */
+int mbrt_skip_switch(const mbrt_ctx* ctx, int n);
 
 /* ---- Execution bookkeeping ----------------------------------------------
  */
@@ -132,9 +137,6 @@ mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
 /* ADP[#number]: a local set from a macro argument written without decimal
  * point gets its decimal point back (X10 -> 0.010 -> 10.0). */
 mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
-/* The current frame's #1..#33 (index 0 = #1). A write through the pointer
- * keeps the local's ADP flag; mbrt_write_var clears it. */
-mbrt_num* mbrt_locals(mbrt_ctx* ctx);
 /* A common variable (#100..#999) without side effects: 1 and *out when the
  * number is a common variable of this machine, else 0. */
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out);
@@ -204,6 +206,54 @@ mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program);
 void mbrt_return(mbrt_ctx* ctx);
 /* 0 in the main program. */
 int mbrt_call_depth(const mbrt_ctx* ctx);
+
+/* ---- Compiled programs ---------------------------------------------------
+ */
+
+/* A body returns this when the run ended (M02/M30, M99 or the end of the
+ * main program's text; mbrt_finish was called). */
+#define MBRT_STOP (-1)
+
+/* The code of one program, run at the current call level. Returns 0 when it
+ * leaves by M99 or the end of its text (leave->has_seq/seq tell M99 P),
+ * MBRT_STOP, or an alarm. user is the engine's. */
+typedef mbrt_status (*mbrt_body_fn)(mbrt_ctx* ctx, void* user,
+                                    mbrt_flow* leave);
+
+typedef struct mbrt_program {
+  const char* name; /* "O1000", "<NAME>" or "MAIN" */
+  int number;       /* O number, -1 for named and anonymous programs */
+  mbrt_body_fn body;
+} mbrt_program;
+
+/* The programs of one compiled object (`mbc compile --header` names it). */
+typedef struct mbrt_program_table {
+  const mbrt_program* programs;
+  size_t count;
+} mbrt_program_table;
+
+/* The program with this number or name ("O1000" also finds number 1000);
+ * NULL when there is none. */
+const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
+                                      int number, const char* name);
+
+/* A G65 (macro = 1) or M98 call of `body`, `repeat` times (none when <= 0):
+ * each time a new call level, the body, the return; an M99 P stops the
+ * repetitions and is passed on in out->has_seq/seq. */
+mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int macro,
+                          const mbrt_word* args, size_t count, long repeat,
+                          mbrt_body_fn body, void* user, mbrt_flow* out);
+
+/* Runs a program as the main program from the current state (after
+ * mbrt_start and any variable presets): 0 or the alarm that stopped it. */
+mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program);
+/* mbrt_start, the arguments into #1..#33 as G65 would pass them, then
+ * mbrt_run_body: one call of a compiled cycle. */
+mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
+                          const mbrt_word* args, size_t count);
+/* Back to the state mbrt_create gave: commons, offsets and part counters
+ * from the profile, power-on modal state, no alarm. Sinks and limits stay. */
+void mbrt_reset(mbrt_ctx* ctx);
 
 /* ---- Output statements ---------------------------------------------------
  */

@@ -1,0 +1,58 @@
+/* The part of the runtime's C ABI that only generated code uses (codegen/):
+ * the storage it addresses directly so that locals, commons and the block
+ * counter cost no call, and the operations it leaves to the runtime. Not for
+ * embedders: runtime.h is their interface. Every call takes the context, so
+ * compiled code stays thread-independent.
+ */
+#ifndef MBC_COMPILED_H
+#define MBC_COMPILED_H
+
+#include <mbc/runtime.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One call level's #1..#33. Bit i of adp_mask: #(i+1) was set from an
+ * argument written without decimal point (ADP gives the literal back); a
+ * program's own write clears it. */
+typedef struct mbrt_level {
+  mbrt_num value[33];
+  uint64_t adp_mask;
+} mbrt_level;
+
+/* What mbrt_begin_block keeps: generated code does the same inline and calls
+ * mbrt_block_limit once `blocks` passes `max_blocks`. */
+typedef struct mbrt_block_state {
+  const char* file;
+  int line;
+  uint64_t blocks;
+  uint64_t max_blocks;
+} mbrt_block_state;
+
+/* The current call level. Levels never move (the runtime reserves them for
+ * the deepest nesting), so the pointer stays valid while this level exists. */
+mbrt_level* mbrt_current_level(mbrt_ctx* ctx);
+/* Element n is common variable #n (100..199 and 500..999 always exist, 200..
+ * 499 only on machines with the extended set). Valid for the context's
+ * lifetime. */
+mbrt_num* mbrt_common_base(mbrt_ctx* ctx);
+mbrt_block_state* mbrt_block_state_of(mbrt_ctx* ctx);
+/* Raises MBC0002 for the block just counted past the limit. */
+mbrt_status mbrt_block_limit(mbrt_ctx* ctx);
+
+/* a op b for the operations of mbc/arith.h's BinOp, and the builtins of
+ * mbc/builtins.def (in their order), with the profile's NAT bit; an alarm is
+ * raised and returned. */
+mbrt_status mbrt_binary(mbrt_ctx* ctx, int op, double a, double b, double* out);
+mbrt_status mbrt_builtin(mbrt_ctx* ctx, int builtin, double a, double b,
+                         double* out);
+/* ROUND written directly in an address: to the letter's least increment. */
+mbrt_status mbrt_round_address(mbrt_ctx* ctx, int letter, double x,
+                               double* out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MBC_COMPILED_H */

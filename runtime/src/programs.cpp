@@ -1,0 +1,67 @@
+// Compiled programs: finding one in a table, running a call of one (G65 or
+// M98, with L repetitions) and running one as the main program. The IR
+// evaluator runs its calls through mbrt_run_call too, so every engine
+// repeats, nests and returns alike.
+#include <cstring>
+
+#include "context.h"
+
+const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
+                                      int number, const char* name) {
+  if (table == nullptr) {
+    return nullptr;
+  }
+  if (number < 0 && name != nullptr && name[0] == 'O' &&
+      mbc::rt::parseProgramNumber(name) > 0) {
+    number = mbc::rt::parseProgramNumber(name);
+  }
+  for (size_t i = 0; i < table->count; ++i) {
+    const mbrt_program& p = table->programs[i];
+    if ((number >= 0 && p.number == number) ||
+        (number < 0 && name != nullptr && std::strcmp(p.name, name) == 0)) {
+      return &p;
+    }
+  }
+  return nullptr;
+}
+
+mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int macro,
+                          const mbrt_word* args, size_t count, long repeat,
+                          mbrt_body_fn body, void* user, mbrt_flow* out) {
+  *out = mbrt_flow{};
+  for (; repeat > 0; --repeat) {
+    mbrt_status st = macro ? mbrt_call_macro(ctx, program, args, count)
+                           : mbrt_call_sub(ctx, program);
+    if (st) {
+      return st;
+    }
+    mbrt_flow leave{};
+    if ((st = body(ctx, user, &leave))) {
+      return st;
+    }
+    mbrt_return(ctx);
+    if (leave.has_seq) {
+      out->has_seq = 1;
+      out->seq = leave.seq;
+      return 0;
+    }
+  }
+  return 0;
+}
+
+mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program) {
+  mbrt_flow leave{};
+  const mbrt_status st = program->body(ctx, nullptr, &leave);
+  return st > 0 ? st : 0;
+}
+
+mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
+                          const mbrt_word* args, size_t count) {
+  mbrt_start(ctx, program->name);
+  if (count > 0) {
+    if (const mbrt_status st = mbrt_set_main_args(ctx, args, count)) {
+      return st;
+    }
+  }
+  return mbrt_run_body(ctx, program);
+}
