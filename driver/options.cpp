@@ -98,8 +98,8 @@ bool setValueOption(Options& o, const std::string& name,
 bool checkOptions(const Options& o, std::string& error) {
   if (o.files.empty()) {
     error = "no input file";
-  } else if (o.engine != "interp" && o.engine != "ir") {
-    error = fmt::format("unknown engine '{}' (interp or ir)", o.engine);
+  } else if (o.engine != "interp" && o.engine != "ir" && o.engine != "jit") {
+    error = fmt::format("unknown engine '{}' (interp, ir or jit)", o.engine);
   } else if (o.language != "nc" && o.language != "mbir") {
     error = fmt::format("unknown input language '{}' (nc or mbir)", o.language);
   } else if (o.language == "mbir" && o.command != "emit-ir") {
@@ -113,7 +113,8 @@ bool checkOptions(const Options& o, std::string& error) {
 } // namespace
 
 std::string usageText() {
-  return "usage: mbc run FILE... [--main O1234] [--engine interp|ir]\n"
+  return "usage: mbc run FILE... [--main O1234] [--engine jit|interp|ir] "
+         "[-O0..3]\n"
          "                [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n"
          "                [--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n"
          "                [--max-blocks N] [--block-skip[=N]] [--trace]\n"
@@ -156,6 +157,9 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     };
     if (name == "--trace") {
       o.trace = true;
+    } else if (a.size() == 3 && a.starts_with("-O") && a[2] >= '0' &&
+               a[2] <= '3') {
+      o.optLevel = a[2] - '0';
     } else if (name == "--no-opt") {
       o.noOpt = true;
     } else if (name == "--verify-each") {

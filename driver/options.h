@@ -12,7 +12,8 @@ struct Options {
   std::string command; // "run", "check" or "emit-ir"
   std::vector<std::string> files;
   std::string mainProgram; // --main O1234 / <NAME>
-  std::string engine = "interp";
+  std::string engine = "jit";
+  int optLevel = 2; // -O0 ... -O3: the LLVM pipeline (jit, compile, build)
   std::string toolpathPath;
   std::string dprntPath;
   std::string varsOutPath;

@@ -1,6 +1,7 @@
 // `mbc run` and its summary line.
 #include "driver/run_command.h"
 
+#include "codegen/jit.h"
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
 #include "driver/output_files.h"
@@ -92,9 +93,18 @@ int runCommand(const Options& o) {
     return 2;
   }
   ir::Module module;
-  if (o.engine == "ir" &&
+  if (o.engine != "interp" &&
       (!buildModule(cu, o, module) || !optimizeModule(module, o))) {
     return 4;
+  }
+  std::unique_ptr<codegen::Jit> jit;
+  if (o.engine == "jit") {
+    std::string error;
+    jit = codegen::Jit::compile(module, o.optLevel, error);
+    if (!jit) {
+      std::fprintf(stderr, "mbc: internal error: %s\n", error.c_str());
+      return 4;
+    }
   }
   CtxPtr ctx = createContext(o);
   if (!ctx) {
@@ -143,7 +153,9 @@ int runCommand(const Options& o) {
     mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
     MathParams math;
     math.nat = (static_cast<long>(mbrt_parameter(ctx.get(), 6004)) & 1) != 0;
-    if (o.engine == "ir") {
+    if (jit) {
+      st = mbrt_run_body(ctx.get(), &jit->programs()->programs[mainIndex]);
+    } else if (o.engine == "ir") {
       ir::EvalOptions eo{math};
       st = ir::evaluate(module, mainIndex, ctx.get(), eo);
     } else {

@@ -28,7 +28,7 @@ run() { # engine out-dir
 }
 run interp "$work/interp"
 fail=0
-for engine in ir; do
+for engine in ir jit; do
   run "$engine" "$work/$engine"
   for f in stderr status toolpath.jsonl dprnt vars.json; do
     [ -f "$work/interp/$f" ] || [ -f "$work/$engine/$f" ] || continue

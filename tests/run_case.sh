@@ -7,9 +7,10 @@
 #                 expected outputs of `mbc run`
 # CASE.check      expected standard error of `mbc check` (its exit status is
 #                 CASE.status) -- for programs that must be diagnosed
-# MBC_ENGINE=ir runs the case under another engine: the expected outputs are
-# the same files, since every engine must give byte-identical output. The IR
-# is then verified after every pass (--verify-each).
+# MBC_ENGINE=interp|ir|jit picks the engine (default: mbc's, jit): the
+# expected outputs are the same files, since every engine must give
+# byte-identical output. Under ir the IR is verified after every pass
+# (--verify-each).
 # MBC_EXTRA_ARGS: more `mbc run` arguments, split at spaces (for instance
 # "--disable-pass dce").
 # Paths are printed relative to the case's folder, so the case runs from there.

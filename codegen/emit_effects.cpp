@@ -1,0 +1,347 @@
+// Emission of variables and effects: locals and commons as direct loads and
+// stores in the context, other variables through the runtime, the block
+// counter inline, and NC blocks, G65 calls, DPRNT/BPRNT and trace lines as
+// runtime calls (ir/evaluator_ops.cpp does the same one by one).
+#include "codegen/emitter.h"
+#include <mbc/alarm.h>
+#include <mbc/runtime.h>
+
+namespace mbc::codegen::detail {
+
+namespace {
+
+constexpr int kLocalCount = 33;
+
+bool isLocal(std::int64_t n) {
+  return n >= 1 && n <= kLocalCount;
+}
+
+// Commons every machine has; #200..#499 depend on the profile and go
+// through the runtime.
+bool isFixedCommon(std::int64_t n) {
+  return (n >= 100 && n <= 199) || (n >= 500 && n <= 999);
+}
+
+} // namespace
+
+llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
+  switch (inst.op) {
+    case ir::Op::LdVar:
+      return emitLoadVar(static_cast<int>(inst.attr));
+    case ir::Op::StVar:
+      emitStoreVar(inst, static_cast<int>(inst.attr), values_[inst.ops[0]]);
+      return nullptr;
+    case ir::Op::LdInd:
+      return emitLoadIndirect(numOperand(inst, 0));
+    case ir::Op::StInd:
+      emitStoreIndirect(inst, numOperand(inst, 0), values_[inst.ops[1]]);
+      return nullptr;
+    case ir::Op::Adp:
+      return callStatusOut(Rt::mbrt_adp, {ctx_, numOperand(inst, 0)});
+    case ir::Op::Begin:
+      emitBegin(inst);
+      return nullptr;
+    case ir::Op::Nc:
+      return emitNc(inst);
+    case ir::Op::CallMacro:
+      return emitCallMacro(inst);
+    case ir::Op::Dprnt:
+    case ir::Op::Bprnt:
+      emitPrint(inst);
+      return nullptr;
+    case ir::Op::Popen:
+      check(b_.CreateCall(abi_.fn(Rt::mbrt_popen), {ctx_}));
+      return nullptr;
+    case ir::Op::Pclos:
+      check(b_.CreateCall(abi_.fn(Rt::mbrt_pclos), {ctx_}));
+      return nullptr;
+    case ir::Op::Trace:
+      emitTrace(inst);
+      return nullptr;
+    default:
+      raise(static_cast<int>(AlarmId::Unsupported),
+            "compiled code: unexpected operation");
+      b_.SetInsertPoint(newBlock("dead"));
+      return nullptr;
+  }
+}
+
+// mbrt_begin_block inline: where alarms and motion are reported, and the
+// execution limit.
+void FunctionEmitter::emitBegin(const ir::Inst& inst) {
+  b_.CreateStore(file_,
+                 b_.CreateStructGEP(abi_.blockState, blockState_, kBlockFile));
+  b_.CreateStore(llvm::ConstantInt::get(abi_.i32, inst.attr),
+                 b_.CreateStructGEP(abi_.blockState, blockState_, kBlockLine));
+  llvm::Value* countSlot =
+      b_.CreateStructGEP(abi_.blockState, blockState_, kBlockCount);
+  llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, countSlot),
+                                    llvm::ConstantInt::get(abi_.i64, 1));
+  b_.CreateStore(count, countSlot);
+  llvm::Value* max = b_.CreateLoad(
+      abi_.i64, b_.CreateStructGEP(abi_.blockState, blockState_, kBlockMax));
+  llvm::BasicBlock* rest = splitIf(b_.CreateICmpUGT(count, max), true);
+  leave(b_.CreateCall(abi_.fn(Rt::mbrt_block_limit), {ctx_}));
+  b_.SetInsertPoint(rest);
+}
+
+llvm::Value* FunctionEmitter::localSlot(llvm::Value* index) {
+  return b_.CreateInBoundsGEP(abi_.level, level_,
+                              {llvm::ConstantInt::get(abi_.i32, 0),
+                               llvm::ConstantInt::get(abi_.i32, kLevelValue),
+                               index});
+}
+
+// A program's own write of a local clears its ADP flag.
+void FunctionEmitter::clearAdp(llvm::Value* index) {
+  llvm::Value* slot = b_.CreateStructGEP(abi_.level, level_, kLevelAdpMask);
+  llvm::Value* bit = b_.CreateShl(llvm::ConstantInt::get(abi_.i64, 1), index);
+  b_.CreateStore(b_.CreateAnd(b_.CreateLoad(abi_.i64, slot), b_.CreateNot(bit)),
+                 slot);
+}
+
+llvm::Value* FunctionEmitter::commonSlot(llvm::Value* number) {
+  return b_.CreateInBoundsGEP(abi_.f64, commons_, number);
+}
+
+llvm::Value* FunctionEmitter::message(const ir::Inst& inst) {
+  if (inst.str == 0 || inst.str > m_.ir.strings.size() ||
+      m_.ir.strings[inst.str - 1].empty()) {
+    return llvm::ConstantPointerNull::get(abi_.ptr);
+  }
+  return m_.cstring(m_.ir.strings[inst.str - 1]);
+}
+
+llvm::Value* FunctionEmitter::emitLoadVar(int number) {
+  if (isLocal(number)) {
+    return b_.CreateLoad(
+        abi_.f64, localSlot(llvm::ConstantInt::get(abi_.i64, number - 1)));
+  }
+  if (isFixedCommon(number)) {
+    return b_.CreateLoad(abi_.f64,
+                         commonSlot(llvm::ConstantInt::get(abi_.i64, number)));
+  }
+  return callStatusOut(Rt::mbrt_read_var, {ctx_, constant(number)});
+}
+
+void FunctionEmitter::emitStoreVar(const ir::Inst& inst, int number,
+                                   llvm::Value* value) {
+  if (isLocal(number)) {
+    llvm::Value* index = llvm::ConstantInt::get(abi_.i64, number - 1);
+    b_.CreateStore(value, localSlot(index));
+    clearAdp(index);
+    return;
+  }
+  if (isFixedCommon(number)) {
+    b_.CreateStore(value, commonSlot(llvm::ConstantInt::get(abi_.i64, number)));
+    return;
+  }
+  check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
+                      {ctx_, constant(number), value, message(inst)}));
+}
+
+namespace {
+
+/// Where #[x] lives: n is the rounded number (-1 beyond any variable).
+struct IndirectCases {
+  llvm::Value* n;
+  llvm::Value* isLocal;
+  llvm::Value* isCommon;
+};
+
+IndirectCases classify(llvm::IRBuilder<>& b, const Abi& abi, llvm::Value* x) {
+  llvm::Value* r = b.CreateUnaryIntrinsic(llvm::Intrinsic::round, x);
+  llvm::Value* small =
+      b.CreateFCmpOLT(b.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, r),
+                      llvm::ConstantFP::get(abi.f64, 1e9));
+  llvm::Value* n = b.CreateSelect(small, b.CreateFPToSI(r, abi.i64),
+                                  llvm::ConstantInt::get(abi.i64, -1));
+  auto within = [&](std::int64_t lo, std::int64_t count) {
+    return b.CreateICmpULT(b.CreateSub(n, llvm::ConstantInt::get(abi.i64, lo)),
+                           llvm::ConstantInt::get(abi.i64, count));
+  };
+  return {n, within(1, kLocalCount),
+          b.CreateOr(within(100, 100), within(500, 500))};
+}
+
+} // namespace
+
+// #[x]: locals and commons inline, every other number through the runtime
+// (which rounds and range-checks it again).
+llvm::Value* FunctionEmitter::emitLoadIndirect(llvm::Value* x) {
+  IndirectCases c = classify(b_, abi_, x);
+  llvm::BasicBlock* local = newBlock("ldlocal");
+  llvm::BasicBlock* other = newBlock("ldother");
+  llvm::BasicBlock* common = newBlock("ldcommon");
+  llvm::BasicBlock* slow = newBlock("ldslow");
+  llvm::BasicBlock* done = newBlock("ld");
+  b_.CreateCondBr(c.isLocal, local, other);
+  b_.SetInsertPoint(local);
+  llvm::Value* fromLocal = b_.CreateLoad(
+      abi_.f64,
+      localSlot(b_.CreateSub(c.n, llvm::ConstantInt::get(abi_.i64, 1))));
+  b_.CreateBr(done);
+  b_.SetInsertPoint(other);
+  b_.CreateCondBr(c.isCommon, common, slow);
+  b_.SetInsertPoint(common);
+  llvm::Value* fromCommon = b_.CreateLoad(abi_.f64, commonSlot(c.n));
+  b_.CreateBr(done);
+  b_.SetInsertPoint(slow);
+  llvm::Value* fromRuntime = callStatusOut(Rt::mbrt_read_var, {ctx_, x});
+  llvm::BasicBlock* slowEnd = b_.GetInsertBlock();
+  b_.CreateBr(done);
+  b_.SetInsertPoint(done);
+  llvm::PHINode* v = b_.CreatePHI(abi_.f64, 3);
+  v->addIncoming(fromLocal, local);
+  v->addIncoming(fromCommon, common);
+  v->addIncoming(fromRuntime, slowEnd);
+  return v;
+}
+
+void FunctionEmitter::emitStoreIndirect(const ir::Inst& inst, llvm::Value* x,
+                                        llvm::Value* value) {
+  IndirectCases c = classify(b_, abi_, x);
+  llvm::BasicBlock* local = newBlock("stlocal");
+  llvm::BasicBlock* other = newBlock("stother");
+  llvm::BasicBlock* common = newBlock("stcommon");
+  llvm::BasicBlock* slow = newBlock("stslow");
+  llvm::BasicBlock* done = newBlock("st");
+  b_.CreateCondBr(c.isLocal, local, other);
+  b_.SetInsertPoint(local);
+  llvm::Value* index = b_.CreateSub(c.n, llvm::ConstantInt::get(abi_.i64, 1));
+  b_.CreateStore(value, localSlot(index));
+  clearAdp(index);
+  b_.CreateBr(done);
+  b_.SetInsertPoint(other);
+  b_.CreateCondBr(c.isCommon, common, slow);
+  b_.SetInsertPoint(common);
+  b_.CreateStore(value, commonSlot(c.n));
+  b_.CreateBr(done);
+  b_.SetInsertPoint(slow);
+  check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
+                      {ctx_, x, value, message(inst)}));
+  b_.CreateBr(done);
+  b_.SetInsertPoint(done);
+}
+
+// One buffer per struct type serves every statement of the function: the
+// runtime reads it during the call only. Its size is fixed in emit().
+llvm::Value* FunctionEmitter::scratch(llvm::Type* type, std::size_t count) {
+  auto it = scratch_.find(type);
+  if (it == scratch_.end()) {
+    llvm::IRBuilder<> entry(entry_, entry_->begin());
+    llvm::AllocaInst* slot =
+        entry.CreateAlloca(type, llvm::ConstantInt::get(abi_.i32, 1));
+    it = scratch_.emplace(type, std::make_pair(slot, std::size_t{0})).first;
+  }
+  it->second.second = std::max(it->second.second, count);
+  return it->second.first;
+}
+
+llvm::Value* FunctionEmitter::loadFlow() {
+  return b_.CreateLoad(abi_.flow, flowSlot_);
+}
+
+// The words of nc (first = 0) or call.macro (first = 2: after P and L): a
+// bare vacant variable drops its word (spec §2.3a), any other value reads
+// vacant as 0. Returns the number of words written to the word buffer.
+llvm::Value* FunctionEmitter::buildWords(const ir::Inst& inst,
+                                         std::size_t first) {
+  std::size_t skip = inst.cases.size() == inst.ops.size() ? 0 : first;
+  llvm::Value* words = scratch(abi_.word, inst.ops.size());
+  llvm::Value* count = llvm::ConstantInt::get(abi_.i64, 0);
+  for (std::size_t k = first; k < inst.ops.size(); ++k) {
+    std::int64_t desc = inst.cases[k - skip];
+    ir::WordKind kind = ir::wordKind(desc);
+    bool bare = kind == ir::WordKind::Var || kind == ir::WordKind::NegVar;
+    llvm::Value* value = values_[inst.ops[k]];
+    int runtimeKind = kind == ir::WordKind::Int   ? MBRT_WORD_INT_LITERAL
+                      : kind == ir::WordKind::Dec ? MBRT_WORD_DEC_LITERAL
+                                                  : MBRT_WORD_VALUE;
+    if (!bare) {
+      value = numOperand(inst, k);
+    } else if (kind == ir::WordKind::NegVar) {
+      value = b_.CreateFSub(constant(0), value); // vacant stays NaN
+    }
+    llvm::Value* slot = b_.CreateInBoundsGEP(abi_.word, words, count);
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i8, ir::wordLetter(desc)),
+                   b_.CreateStructGEP(abi_.word, slot, kWordLetter));
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i8, runtimeKind),
+                   b_.CreateStructGEP(abi_.word, slot, kWordKind));
+    b_.CreateStore(value, b_.CreateStructGEP(abi_.word, slot, kWordValue));
+    llvm::Value* present =
+        bare && fn_.insts[inst.ops[k]].type == ir::Type::VNum
+            ? b_.CreateZExt(b_.CreateNot(isVacant(value)), abi_.i64)
+            : llvm::ConstantInt::get(abi_.i64, 1);
+    count = b_.CreateAdd(count, present);
+  }
+  return count;
+}
+
+llvm::Value* FunctionEmitter::emitNc(const ir::Inst& inst) {
+  llvm::Value* count = buildWords(inst, 0);
+  check(b_.CreateCall(abi_.fn(Rt::mbrt_nc_block),
+                      {ctx_, scratch(abi_.word, 0), count, flowSlot_}));
+  return loadFlow();
+}
+
+// G65 (evaluator execCallMacro): P and L are operands 0 and 1. The call's
+// flow is NEXT, with has_seq/seq when the callee left by M99 P.
+llvm::Value* FunctionEmitter::emitCallMacro(const ir::Inst& inst) {
+  llvm::Value* p = numOperand(inst, 0);
+  llvm::Value* l = numOperand(inst, 1);
+  llvm::Value* count = buildWords(inst, 2);
+  llvm::Value* words = scratch(abi_.word, 0);
+  b_.CreateCall(abi_.fn(Rt::mbrt_trace_call), {ctx_, p, l, words, count});
+  check(
+      b_.CreateCall(m_.dispatch, {ctx_, p, llvm::ConstantInt::get(abi_.i32, 1),
+                                  words, count, l, flowSlot_}));
+  return b_.CreateInsertValue(
+      loadFlow(), llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_NEXT), kFlowKind);
+}
+
+// Items: a text item is str << 1 (str indexes Module::strings), a value
+// item (c * 10 + d) << 1 | 1 and takes the next operand.
+void FunctionEmitter::emitPrint(const ir::Inst& inst) {
+  llvm::Value* items = scratch(abi_.printItem, inst.cases.size());
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
+    std::int64_t item = inst.cases[i];
+    llvm::Value* slot = b_.CreateConstInBoundsGEP1_64(abi_.printItem, items, i);
+    llvm::Value* text = llvm::ConstantPointerNull::get(abi_.ptr);
+    llvm::Value* value = constant(0);
+    int format = 0;
+    if (item & 1) {
+      format = static_cast<int>(item >> 1);
+      value = values_[inst.ops[next++]];
+    } else {
+      text = m_.cstring(m_.ir.strings[static_cast<std::size_t>(item >> 1)]);
+    }
+    b_.CreateStore(text, b_.CreateStructGEP(abi_.printItem, slot, kItemText));
+    b_.CreateStore(value, b_.CreateStructGEP(abi_.printItem, slot, kItemValue));
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, format / 10),
+                   b_.CreateStructGEP(abi_.printItem, slot, kItemIntDigits));
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, format % 10),
+                   b_.CreateStructGEP(abi_.printItem, slot, kItemFracDigits));
+  }
+  Rt f = inst.op == ir::Op::Dprnt ? Rt::mbrt_dprnt : Rt::mbrt_bprnt;
+  check(b_.CreateCall(
+      abi_.fn(f),
+      {ctx_, items, llvm::ConstantInt::get(abi_.i64, inst.cases.size())}));
+}
+
+void FunctionEmitter::emitTrace(const ir::Inst& inst) {
+  llvm::Value* values = scratch(abi_.f64, inst.ops.size());
+  for (std::size_t i = 0; i < inst.ops.size(); ++i) {
+    llvm::Value* v = values_[inst.ops[i]];
+    if (v->getType() == abi_.i1) {
+      v = b_.CreateUIToFP(v, abi_.f64);
+    }
+    b_.CreateStore(v, b_.CreateConstInBoundsGEP1_64(abi_.f64, values, i));
+  }
+  b_.CreateCall(abi_.fn(Rt::mbrt_trace_values),
+                {ctx_, message(inst), values,
+                 llvm::ConstantInt::get(abi_.i64, inst.ops.size())});
+}
+
+} // namespace mbc::codegen::detail

@@ -1,0 +1,32 @@
+// IR -> LLVM IR: one module per mbc module. Every program becomes an
+// internal body with the mbrt_body_fn signature; a table of them (an
+// mbrt_program_table named by EmitOptions::tableName) and one C entry point
+// per numbered program (`mbrt_status mbc_O1000(mbrt_ctx*, const mbrt_word*,
+// size_t)`, which runs it as the main program) are what other code links to.
+#pragma once
+
+#include "ir/ir.h"
+
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+
+#include <memory>
+#include <string>
+
+namespace mbc::codegen {
+
+struct EmitOptions {
+  std::string moduleName = "mbc";
+  std::string tableName = "mbc_programs";
+  /// mbc_O<number> entry points for the numbered programs.
+  bool entryPoints = true;
+};
+
+std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
+                                         llvm::LLVMContext& context,
+                                         const EmitOptions& options);
+
+/// The C name of a numbered program's entry point ("mbc_O1000").
+std::string entryPointName(int number);
+
+} // namespace mbc::codegen

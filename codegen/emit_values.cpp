@@ -1,0 +1,200 @@
+// Emission of values: constants, FANUC arithmetic with its alarms,
+// comparisons that tell vacant from 0, and the builtins (the cheap ones
+// inline, the others through the runtime), mirroring mbc/arith.h exactly so
+// that every engine computes the same bits.
+#include "codegen/emitter.h"
+#include <mbc/alarm.h>
+#include <mbc/arith.h>
+#include <mbc/value.h>
+
+#include <llvm/IR/Intrinsics.h>
+
+#include <limits>
+
+namespace mbc::codegen::detail {
+
+namespace {
+
+int alarm(AlarmId id) {
+  return static_cast<int>(id);
+}
+
+} // namespace
+
+llvm::Value* FunctionEmitter::constant(double x) {
+  return llvm::ConstantFP::get(abi_.f64, x);
+}
+
+llvm::Value* FunctionEmitter::isVacant(llvm::Value* x) {
+  return b_.CreateFCmpUNO(x, x); // vacant is the only NaN a value can be
+}
+
+llvm::Value* FunctionEmitter::toNum(llvm::Value* x) {
+  return b_.CreateSelect(isVacant(x), constant(0), x);
+}
+
+llvm::Value* FunctionEmitter::numOperand(const ir::Inst& inst, std::size_t i) {
+  ir::ValueId v = inst.ops[i];
+  return fn_.insts[v].type == ir::Type::VNum ? toNum(values_[v]) : values_[v];
+}
+
+// No macro value is ever -0.0 (mbc/arith.cpp): x + 0.0 turns -0.0 into
+// +0.0 and leaves everything else alone.
+llvm::Value* FunctionEmitter::positiveZero(llvm::Value* x) {
+  return b_.CreateFAdd(x, constant(0));
+}
+
+llvm::Value* FunctionEmitter::roundHalfAway(llvm::Value* x) {
+  return b_.CreateUnaryIntrinsic(llvm::Intrinsic::round, x);
+}
+
+// Arithmetic on finite operands overflows to infinity, never to NaN: PS0111.
+llvm::Value* FunctionEmitter::finite(llvm::Value* result) {
+  llvm::Value* magnitude =
+      b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, result);
+  alarmIf(b_.CreateFCmpOEQ(magnitude,
+                           constant(std::numeric_limits<double>::infinity())),
+          alarm(AlarmId::FloatOverflow));
+  return result;
+}
+
+llvm::Value* FunctionEmitter::callStatusOut(Rt f,
+                                            std::vector<llvm::Value*> args) {
+  args.push_back(outSlot_);
+  check(b_.CreateCall(abi_.fn(f), args));
+  return b_.CreateLoad(abi_.f64, outSlot_);
+}
+
+void FunctionEmitter::emitInst(ir::ValueId id) {
+  const ir::Inst& inst = fn_.insts[id];
+  values_[id] =
+      inst.op <= ir::Op::BlockSkip ? emitValue(inst) : emitEffect(inst);
+}
+
+llvm::Value* FunctionEmitter::emitValue(const ir::Inst& inst) {
+  switch (inst.op) {
+    case ir::Op::Const:
+      return constant(inst.imm);
+    case ir::Op::Vacant:
+      return llvm::ConstantFP::get(abi_.context,
+                                   llvm::APFloat(llvm::APFloat::IEEEdouble(),
+                                                 llvm::APInt(64, kVacantBits)));
+    case ir::Op::Add:
+    case ir::Op::Sub:
+    case ir::Op::Mul:
+    case ir::Op::Div:
+      return emitArith(inst);
+    case ir::Op::Mod:
+    case ir::Op::BitAnd:
+    case ir::Op::BitOr:
+    case ir::Op::BitXor:
+      return emitRuntimeArith(inst);
+    case ir::Op::Neg: // 0 - x is -x without -0.0
+      return b_.CreateFSub(constant(0), numOperand(inst, 0));
+    case ir::Op::ToNum:
+      return toNum(values_[inst.ops[0]]);
+    case ir::Op::Fn:
+      return emitFn(inst);
+    case ir::Op::RoundAddr:
+      return callStatusOut(Rt::mbrt_round_address,
+                           {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr),
+                            numOperand(inst, 0)});
+    case ir::Op::LogAnd:
+      return b_.CreateAnd(values_[inst.ops[0]], values_[inst.ops[1]]);
+    case ir::Op::LogOr:
+      return b_.CreateOr(values_[inst.ops[0]], values_[inst.ops[1]]);
+    case ir::Op::LogXor:
+      return b_.CreateXor(values_[inst.ops[0]], values_[inst.ops[1]]);
+    case ir::Op::BlockSkip:
+      return b_.CreateICmpNE(
+          b_.CreateCall(abi_.fn(Rt::mbrt_skip_switch),
+                        {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr)}),
+          llvm::ConstantInt::get(abi_.i32, 0));
+    default:
+      return emitCompare(inst);
+  }
+}
+
+// evalBinary's + - * / inline: the same IEEE operations, then its checks.
+llvm::Value* FunctionEmitter::emitArith(const ir::Inst& inst) {
+  llvm::Value* a = numOperand(inst, 0);
+  llvm::Value* b = numOperand(inst, 1);
+  switch (inst.op) {
+    case ir::Op::Add: // the sum of two values that are not -0.0 is not -0.0
+      return finite(b_.CreateFAdd(a, b));
+    case ir::Op::Sub:
+      return finite(b_.CreateFSub(a, b));
+    case ir::Op::Mul:
+      return finite(positiveZero(b_.CreateFMul(a, b)));
+    default:
+      alarmIf(b_.CreateFCmpOEQ(b, constant(0)), alarm(AlarmId::ZeroDivide));
+      return finite(positiveZero(b_.CreateFDiv(a, b)));
+  }
+}
+
+llvm::Value* FunctionEmitter::emitRuntimeArith(const ir::Inst& inst) {
+  auto op = static_cast<int>(inst.op) - static_cast<int>(ir::Op::Add);
+  return callStatusOut(Rt::mbrt_binary,
+                       {ctx_, llvm::ConstantInt::get(abi_.i32, op),
+                        numOperand(inst, 0), numOperand(inst, 1)});
+}
+
+// evalCompare: EQ and NE tell vacant from 0 (vacant EQ vacant); a num is
+// never vacant, so an ordered compare suffices unless both may be.
+llvm::Value* FunctionEmitter::emitCompare(const ir::Inst& inst) {
+  if (inst.op == ir::Op::Eq || inst.op == ir::Op::Ne) {
+    llvm::Value* a = values_[inst.ops[0]];
+    llvm::Value* b = values_[inst.ops[1]];
+    llvm::Value* equal = b_.CreateFCmpOEQ(a, b);
+    if (fn_.insts[inst.ops[0]].type == ir::Type::VNum &&
+        fn_.insts[inst.ops[1]].type == ir::Type::VNum) {
+      equal = b_.CreateOr(equal, b_.CreateAnd(isVacant(a), isVacant(b)));
+    }
+    return inst.op == ir::Op::Eq ? equal : b_.CreateNot(equal);
+  }
+  llvm::Value* a = numOperand(inst, 0);
+  llvm::Value* b = numOperand(inst, 1);
+  switch (inst.op) {
+    case ir::Op::Gt:
+      return b_.CreateFCmpOGT(a, b);
+    case ir::Op::Ge:
+      return b_.CreateFCmpOGE(a, b);
+    case ir::Op::Lt:
+      return b_.CreateFCmpOLT(a, b);
+    default:
+      return b_.CreateFCmpOLE(a, b);
+  }
+}
+
+// The rounding functions, ABS and SQRT inline (exact IEEE operations, as in
+// evalBuiltin); the trigonometric and other functions through the runtime.
+llvm::Value* FunctionEmitter::emitFn(const ir::Inst& inst) {
+  auto f = static_cast<Builtin>(inst.attr);
+  llvm::Value* x = numOperand(inst, 0);
+  switch (f) {
+    case Builtin::Abs:
+      return b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, x);
+    case Builtin::Round:
+      return positiveZero(roundHalfAway(x));
+    case Builtin::Fix:
+      return positiveZero(b_.CreateUnaryIntrinsic(llvm::Intrinsic::trunc, x));
+    case Builtin::Fup:
+      return b_.CreateSelect(b_.CreateFCmpOLT(x, constant(0)),
+                             b_.CreateUnaryIntrinsic(llvm::Intrinsic::floor, x),
+                             b_.CreateUnaryIntrinsic(llvm::Intrinsic::ceil, x));
+    case Builtin::Sqrt:
+      alarmIf(b_.CreateFCmpOLT(x, constant(0)),
+              alarm(AlarmId::ArgumentOutOfRange));
+      return b_.CreateUnaryIntrinsic(llvm::Intrinsic::sqrt, x);
+    case Builtin::Adp:
+      return x;
+    default: {
+      llvm::Value* y = inst.ops.size() > 1 ? numOperand(inst, 1) : constant(0);
+      return callStatusOut(
+          Rt::mbrt_builtin,
+          {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr), x, y});
+    }
+  }
+}
+
+} // namespace mbc::codegen::detail

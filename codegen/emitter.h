@@ -1,0 +1,135 @@
+// Internals of IR -> LLVM IR emission (emit_module.h is the interface):
+// the module-wide state every function emitter shares, and the emitter of
+// one function. emit_control.cpp holds blocks, phis, terminators and
+// returns; emit_values.cpp arithmetic and comparisons; emit_effects.cpp
+// variables, NC blocks, calls and output.
+#pragma once
+
+#include "codegen/abi.h"
+#include "codegen/emit_module.h"
+#include "ir/ir.h"
+
+#include <llvm/IR/IRBuilder.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mbc::codegen::detail {
+
+/// What every function emitter of a module shares.
+struct ModuleState {
+  const ir::Module& ir;
+  Abi abi;
+  const EmitOptions& options;
+  std::vector<llvm::Function*> bodies; // by IR function index
+  llvm::Function* dispatch = nullptr;  // mbc.call, see emit_module.cpp
+  std::map<std::string, llvm::Constant*> strings;
+
+  ModuleState(const ir::Module& m, llvm::Module& out, const EmitOptions& o)
+      : ir(m), abi(out), options(o) {}
+
+  /// A NUL-terminated constant string (one global per distinct text).
+  llvm::Constant* cstring(const std::string& text);
+};
+
+class FunctionEmitter {
+public:
+  FunctionEmitter(ModuleState& m, const ir::Function& fn, llvm::Function* body);
+
+  void emit();
+
+private:
+  // Control (emit_control.cpp).
+  void emitPrologue();
+  void emitBlock(ir::BlockId b);
+  void fillPhis();
+  void emitTerminator(const ir::Inst& inst);
+  void emitResume(const ir::Inst& inst);
+  void emitSubCall(const ir::Inst& inst, llvm::Value* flow);
+  void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
+  void emitSwitch(const ir::Inst& inst);
+  void emitCaseSwitch(const ir::Inst& inst, llvm::Value* seq,
+                      std::size_t offset);
+  void emitRet();
+  void jump(ir::BlockId target);
+  /// Goes on in a new block when `status` is 0, else leaves with it.
+  void check(llvm::Value* status);
+  void leave(llvm::Value* status);
+  void leaveStopped(int endKind);
+  void raise(int alarmId, const char* detail);
+  /// Leaves with alarm `alarmId` when `cond` holds (the unlikely way).
+  void alarmIf(llvm::Value* cond, int alarmId);
+  /// Branches on `cond` to a new block (returned, with the insert point in
+  /// it) and goes on in another when it does not hold.
+  llvm::BasicBlock* splitIf(llvm::Value* cond, bool unlikely);
+  llvm::BasicBlock* newBlock(const char* name);
+
+  // Values (emit_values.cpp).
+  void emitInst(ir::ValueId id);
+  llvm::Value* emitValue(const ir::Inst& inst);
+  llvm::Value* emitArith(const ir::Inst& inst);
+  llvm::Value* emitRuntimeArith(const ir::Inst& inst);
+  llvm::Value* emitCompare(const ir::Inst& inst);
+  llvm::Value* emitFn(const ir::Inst& inst);
+  llvm::Value* finite(llvm::Value* result);
+  llvm::Value* positiveZero(llvm::Value* x);
+  llvm::Value* isVacant(llvm::Value* x);
+  llvm::Value* toNum(llvm::Value* x);
+  /// Operand i as a number: vacant reads as 0 when its type is vnum.
+  llvm::Value* numOperand(const ir::Inst& inst, std::size_t i);
+  llvm::Value* roundHalfAway(llvm::Value* x);
+  llvm::Value* constant(double x);
+  llvm::Value* callStatusOut(Rt f, std::vector<llvm::Value*> args);
+
+  // Effects (emit_effects.cpp).
+  llvm::Value* emitEffect(const ir::Inst& inst);
+  void emitBegin(const ir::Inst& inst);
+  llvm::Value* emitLoadVar(int number);
+  void emitStoreVar(const ir::Inst& inst, int number, llvm::Value* value);
+  llvm::Value* emitLoadIndirect(llvm::Value* number);
+  void emitStoreIndirect(const ir::Inst& inst, llvm::Value* number,
+                         llvm::Value* value);
+  llvm::Value* localSlot(llvm::Value* index);
+  void clearAdp(llvm::Value* index);
+  llvm::Value* commonSlot(llvm::Value* number);
+  llvm::Value* emitNc(const ir::Inst& inst);
+  llvm::Value* emitCallMacro(const ir::Inst& inst);
+  llvm::Value* buildWords(const ir::Inst& inst, std::size_t first);
+  void emitPrint(const ir::Inst& inst);
+  void emitTrace(const ir::Inst& inst);
+  llvm::Value* message(const ir::Inst& inst);
+  llvm::Value* loadFlow();
+  llvm::Value* scratch(llvm::Type* type, std::size_t count);
+
+  ModuleState& m_;
+  const Abi& abi_;
+  const ir::Function& fn_;
+  llvm::Function* body_;
+  llvm::IRBuilder<> b_;
+  std::vector<llvm::Value*> values_;      // by ValueId
+  std::vector<llvm::BasicBlock*> blocks_; // by IR block: its first block
+
+  struct Edge {
+    llvm::BasicBlock* from;
+    ir::BlockId pred;
+  };
+
+  std::vector<std::vector<Edge>> incoming_; // by IR block
+  ir::BlockId current_ = 0;
+  llvm::BasicBlock* entry_ = nullptr;
+  llvm::BasicBlock* exit_ = nullptr;
+  llvm::PHINode* exitStatus_ = nullptr;
+  llvm::Value* ctx_ = nullptr;
+  llvm::Value* leave_ = nullptr;
+  llvm::Value* level_ = nullptr;
+  llvm::Value* commons_ = nullptr;
+  llvm::Value* blockState_ = nullptr;
+  llvm::Value* file_ = nullptr;
+  llvm::Value* name_ = nullptr;
+  llvm::Value* flowSlot_ = nullptr;
+  llvm::Value* outSlot_ = nullptr;
+  std::map<llvm::Type*, std::pair<llvm::AllocaInst*, std::size_t>> scratch_;
+};
+
+} // namespace mbc::codegen::detail

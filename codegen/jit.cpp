@@ -1,0 +1,132 @@
+// ORC LLJIT: the runtime's functions are given to the JIT by address from
+// runtime_functions.def (the mbc executable exports no symbols), the C
+// library's from the process.
+#include "codegen/jit.h"
+
+#include "codegen/abi.h"
+#include "codegen/emit_module.h"
+#include "codegen/optimize.h"
+#include "codegen/verify.h"
+#include <mbc/compiled.h>
+
+#include <llvm/Config/llvm-config.h>
+#include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/Support/TargetSelect.h>
+
+#include <mutex>
+
+namespace mbc::codegen {
+
+namespace {
+
+struct RuntimeSymbol {
+  const char* name;
+  void* address;
+};
+
+const RuntimeSymbol kRuntimeSymbols[] = {
+#define RT(Name, ...) {#Name, reinterpret_cast<void*>(&Name)},
+#include "codegen/runtime_functions.def"
+};
+
+void initializeNativeTarget() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    llvm::InitializeNativeTarget();
+    llvm::InitializeNativeTargetAsmPrinter();
+  });
+}
+
+std::string message(llvm::Error e) {
+  return llvm::toString(std::move(e));
+}
+
+llvm::Error defineRuntime(llvm::orc::LLJIT& jit) {
+  llvm::orc::MangleAndInterner mangle(jit.getExecutionSession(),
+                                      jit.getDataLayout());
+  llvm::orc::SymbolMap symbols;
+  for (const RuntimeSymbol& s : kRuntimeSymbols) {
+#if LLVM_VERSION_MAJOR >= 17
+    symbols[mangle(s.name)] = {llvm::orc::ExecutorAddr::fromPtr(s.address),
+                               llvm::JITSymbolFlags::Exported};
+#else
+    symbols[mangle(s.name)] =
+        llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(s.address),
+                                 llvm::JITSymbolFlags::Exported);
+#endif
+  }
+  llvm::orc::JITDylib& lib = jit.getMainJITDylib();
+  if (llvm::Error e = lib.define(llvm::orc::absoluteSymbols(symbols))) {
+    return e;
+  }
+  auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+      jit.getDataLayout().getGlobalPrefix());
+  if (!process) {
+    return process.takeError();
+  }
+  lib.addGenerator(std::move(*process));
+  return llvm::Error::success();
+}
+
+} // namespace
+
+Jit::~Jit() = default;
+
+std::unique_ptr<Jit> Jit::compile(const ir::Module& module, int optLevel,
+                                  std::string& error) {
+  initializeNativeTarget();
+  auto builder = llvm::orc::JITTargetMachineBuilder::detectHost();
+  if (!builder) {
+    error = message(builder.takeError());
+    return nullptr;
+  }
+  builder->setCodeGenOptLevel(codeGenLevel(optLevel));
+  auto tm = builder->createTargetMachine();
+  if (!tm) {
+    error = message(tm.takeError());
+    return nullptr;
+  }
+  auto context = makeContext();
+  EmitOptions emit;
+  emit.entryPoints = false;
+  std::unique_ptr<llvm::Module> m = emitModule(module, *context, emit);
+  m->setDataLayout((*tm)->createDataLayout());
+  m->setTargetTriple((*tm)->getTargetTriple().str());
+  if (!verifyEmitted(*m, error)) {
+    return nullptr;
+  }
+  optimize(*m, **tm, optLevel);
+
+  auto lljit =
+      llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(*builder).create();
+  if (!lljit) {
+    error = message(lljit.takeError());
+    return nullptr;
+  }
+  if (llvm::Error e = defineRuntime(**lljit)) {
+    error = message(std::move(e));
+    return nullptr;
+  }
+  if (llvm::Error e = (*lljit)->addIRModule(
+          llvm::orc::ThreadSafeModule(std::move(m), std::move(context)))) {
+    error = message(std::move(e));
+    return nullptr;
+  }
+  auto symbol = (*lljit)->lookup(emit.tableName);
+  if (!symbol) {
+    error = message(symbol.takeError());
+    return nullptr;
+  }
+  std::unique_ptr<Jit> jit(new Jit);
+#if LLVM_VERSION_MAJOR >= 15
+  jit->table_ = symbol->toPtr<const mbrt_program_table*>();
+#else
+  jit->table_ = llvm::jitTargetAddressToPointer<const mbrt_program_table*>(
+      symbol->getAddress());
+#endif
+  jit->jit_ = std::move(*lljit);
+  return jit;
+}
+
+} // namespace mbc::codegen
