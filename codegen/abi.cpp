@@ -60,7 +60,7 @@ Abi::Abi(llvm::Module& m)
                                   "mbrt_flow");
   level = llvm::StructType::create(
       context, {llvm::ArrayType::get(f64, 33), i64}, "mbrt_level");
-  blockState = llvm::StructType::create(context, {ptr, i32, i64, i64},
+  blockState = llvm::StructType::create(context, {ptr, i32, i32, i64, i64},
                                         "mbrt_block_state");
   program = llvm::StructType::create(context, {ptr, i32, ptr}, "mbrt_program");
   table = llvm::StructType::create(context, {ptr, i64}, "mbrt_program_table");

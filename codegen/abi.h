@@ -34,7 +34,13 @@ enum FlowField {
 
 enum LevelField { kLevelValue, kLevelAdpMask };
 
-enum BlockField { kBlockFile, kBlockLine, kBlockCount, kBlockMax };
+enum BlockField {
+  kBlockFile,
+  kBlockLine,
+  kBlockTracing,
+  kBlockCount,
+  kBlockMax
+};
 
 /// A context whose pointers are opaque (LLVM 14 still defaults to typed
 /// ones; later versions have only opaque pointers).

@@ -75,6 +75,19 @@ llvm::Function* emitDispatch(ModuleState& m) {
   return fn;
 }
 
+// int main(int argc, char** argv) { return mbc_aot_main(argc, argv, &table); }
+void emitAotMain(ModuleState& m, llvm::GlobalVariable* table) {
+  const Abi& abi = m.abi;
+  llvm::FunctionCallee runner = abi.module.getOrInsertFunction(
+      "mbc_aot_main",
+      llvm::FunctionType::get(abi.i32, {abi.i32, abi.ptr, abi.ptr}, false));
+  auto* fn = llvm::Function::Create(
+      llvm::FunctionType::get(abi.i32, {abi.i32, abi.ptr}, false),
+      llvm::GlobalValue::ExternalLinkage, "main", abi.module);
+  llvm::IRBuilder<> b(llvm::BasicBlock::Create(abi.context, "entry", fn));
+  b.CreateRet(b.CreateCall(runner, {fn->getArg(0), fn->getArg(1), table}));
+}
+
 llvm::GlobalVariable* emitTable(ModuleState& m) {
   const Abi& abi = m.abi;
   std::vector<llvm::Constant*> rows;
@@ -88,11 +101,14 @@ llvm::GlobalVariable* emitTable(ModuleState& m) {
   auto* programs = new llvm::GlobalVariable(
       abi.module, arrayType, true, llvm::GlobalValue::PrivateLinkage,
       llvm::ConstantArray::get(arrayType, rows), "mbc.programs");
-  new llvm::GlobalVariable(
+  auto* table = new llvm::GlobalVariable(
       abi.module, abi.table, true, llvm::GlobalValue::ExternalLinkage,
       llvm::ConstantStruct::get(
           abi.table, {programs, llvm::ConstantInt::get(abi.i64, rows.size())}),
       m.options.tableName);
+  if (m.options.aotMain) {
+    emitAotMain(m, table);
+  }
   return programs;
 }
 

@@ -20,6 +20,9 @@ struct EmitOptions {
   std::string tableName = "mbc_programs";
   /// mbc_O<number> entry points for the numbered programs.
   bool entryPoints = true;
+  /// A C `main` that hands its arguments and the table to mbc_aot_main
+  /// (driver/aot_main.h): the executables of `mbc build`.
+  bool aotMain = false;
 };
 
 std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,

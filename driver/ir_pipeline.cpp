@@ -56,7 +56,7 @@ bool parseIrFile(const std::vector<std::string>& files, ir::Module& out) {
 } // namespace
 
 bool buildModule(const CompiledUnit& cu, const Options& o, ir::Module& out) {
-  out = ir::lower(cu.unit, cu.sources, ir::LowerOptions{o.trace});
+  out = ir::lower(cu.unit, cu.sources, ir::LowerOptions{o.run.trace});
   return reportProblems(ir::verify(out), "internal error: invalid IR");
 }
 
@@ -74,23 +74,24 @@ bool optimizeModule(ir::Module& m, const Options& o) {
                         "internal error: invalid IR after the passes");
 }
 
-int emitIrCommand(const Options& o) {
-  ir::Module module;
+bool loadModule(const Options& o, ir::Module& out) {
   if (o.language == "mbir") {
-    if (!parseIrFile(o.files, module)) {
-      return 1;
+    if (!parseIrFile(o.files, out)) {
+      return false;
     }
   } else {
     CompiledUnit cu;
-    if (!loadUnit(o.files, false, cu)) {
-      return 1;
-    }
-    if (!buildModule(cu, o, module)) {
-      return 4;
+    if (!loadUnit(o.files, false, cu) || !buildModule(cu, o, out)) {
+      return false;
     }
   }
-  if (!optimizeModule(module, o)) {
-    return 4;
+  return optimizeModule(out, o);
+}
+
+int emitIrCommand(const Options& o) {
+  ir::Module module;
+  if (!loadModule(o, module)) {
+    return 1;
   }
   std::string text = ir::print(module);
   std::fwrite(text.data(), 1, text.size(), stdout);

@@ -17,6 +17,10 @@ bool buildModule(const CompiledUnit& cu, const Options& o, ir::Module& out);
 /// verifies once more. Prints what went wrong and returns false on failure.
 bool optimizeModule(ir::Module& m, const Options& o);
 
+/// The optimised module of the input files (Macro B, or IR text with -x
+/// mbir). Diagnostics and problems are printed; false when there were any.
+bool loadModule(const Options& o, ir::Module& out);
+
 /// `mbc emit-ir`: prints the module to standard output. Exit status.
 int emitIrCommand(const Options& o);
 

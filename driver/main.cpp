@@ -1,5 +1,7 @@
 // The mbc command: `mbc run` executes a Macro B program, `mbc check` only
-// reports diagnostics, `mbc emit-ir` prints the (optimised) IR.
+// reports diagnostics, `mbc emit-ir` prints the (optimised) IR, `mbc compile`
+// writes an object and `mbc build` an executable.
+#include "driver/compile_command.h"
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
 #include "driver/options.h"
@@ -18,6 +20,12 @@ int main(int argc, char** argv) {
   }
   if (options->command == "emit-ir") {
     return emitIrCommand(*options);
+  }
+  if (options->command == "compile") {
+    return compileCommand(*options);
+  }
+  if (options->command == "build") {
+    return buildCommand(*options);
   }
   if (options->command == "check") {
     CompiledUnit cu;

@@ -1,56 +1,23 @@
-// Command-line parsing for the mbc driver. Numbers are read with from_chars so
-// that the locale never changes their meaning.
+// Command-line parsing for the mbc driver: the run options (run_options.h)
+// plus those of the compiler.
 #include "driver/options.h"
 
 #include "ir/pass_manager.h"
 
 #include <fmt/format.h>
 
-#include <charconv>
-#include <cstring>
-
 namespace mbc::driver {
 
 namespace {
 
-bool parseNumber(std::string_view text, double& out) {
-  if (!text.empty() && text[0] == '+') {
-    text.remove_prefix(1);
-  }
-  auto res = std::from_chars(text.data(), text.data() + text.size(), out);
-  return res.ec == std::errc() && res.ptr == text.data() + text.size();
+bool isCommand(const std::string& c) {
+  return c == "run" || c == "check" || c == "emit-ir" || c == "compile" ||
+         c == "build";
 }
 
-// "#N=V" (the '#' is optional)
-bool parsePreset(std::string_view text, std::pair<double, double>& out) {
-  if (!text.empty() && text[0] == '#') {
-    text.remove_prefix(1);
-  }
-  auto eq = text.find('=');
-  return eq != std::string_view::npos &&
-         parseNumber(text.substr(0, eq), out.first) &&
-         parseNumber(text.substr(eq + 1), out.second);
-}
-
-// "A=1.5"
-bool parseArg(std::string_view text, std::pair<char, double>& out) {
-  if (text.size() < 3 || text[1] != '=') {
-    return false;
-  }
-  char c = text[0];
-  if (c >= 'a' && c <= 'z') {
-    c = static_cast<char>(c - 'a' + 'A');
-  }
-  out.first = c;
-  return c >= 'A' && c <= 'Z' && parseNumber(text.substr(2), out.second);
-}
-
-// An option that takes a value (`--set '#1=2'`, `--set='#1=2'`).
 bool setValueOption(Options& o, const std::string& name,
                     const std::string& value, std::string& error) {
-  if (name == "--main") {
-    o.mainProgram = value;
-  } else if (name == "--disable-pass") {
+  if (name == "--disable-pass") {
     if (!ir::isPassName(value)) {
       error = fmt::format("unknown pass '{}' (passes: {})", value,
                           ir::passNameList());
@@ -61,49 +28,57 @@ bool setValueOption(Options& o, const std::string& name,
     o.language = value;
   } else if (name == "--engine") {
     o.engine = value;
-  } else if (name == "--toolpath") {
-    o.toolpathPath = value;
-  } else if (name == "--dprnt") {
-    o.dprntPath = value;
-  } else if (name == "--vars-out") {
-    o.varsOutPath = value;
-  } else if (name == "--machine") {
-    o.machinePath = value;
-  } else if (name == "--set") {
-    std::pair<double, double> p;
-    if (!parsePreset(value, p)) {
-      error = fmt::format("--set expects '#N=V', got '{}'", value);
-      return false;
-    }
-    o.presets.push_back(p);
-  } else if (name == "--arg") {
-    std::pair<char, double> p;
-    if (!parseArg(value, p)) {
-      error = fmt::format("--arg expects LETTER=VALUE, got '{}'", value);
-      return false;
-    }
-    o.args.push_back(p);
+  } else if (name == "-o") {
+    o.outputPath = value;
+  } else if (name == "--header") {
+    o.headerPath = value;
+  } else if (name == "--emit") {
+    o.emit = value;
   } else {
-    double n = 0;
-    if (!parseNumber(value, n) || n < 1) {
-      error = fmt::format("--max-blocks expects a positive number");
+    o.tableName = value;
+  }
+  return true;
+}
+
+bool isValueOption(const std::string& name) {
+  return name == "--disable-pass" || name == "-x" || name == "--engine" ||
+         name == "-o" || name == "--header" || name == "--emit" ||
+         name == "--table";
+}
+
+bool isCIdentifier(const std::string& s) {
+  if (s.empty() || (s[0] >= '0' && s[0] <= '9')) {
+    return false;
+  }
+  for (char c : s) {
+    bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+              (c >= '0' && c <= '9') || c == '_';
+    if (!ok) {
       return false;
     }
-    o.maxBlocks = static_cast<std::uint64_t>(n);
   }
   return true;
 }
 
 // The combinations of options that make no sense.
 bool checkOptions(const Options& o, std::string& error) {
+  bool producesFile = o.command == "compile" || o.command == "build";
   if (o.files.empty()) {
     error = "no input file";
   } else if (o.engine != "interp" && o.engine != "ir" && o.engine != "jit") {
-    error = fmt::format("unknown engine '{}' (interp, ir or jit)", o.engine);
+    error = fmt::format("unknown engine '{}' (jit, interp or ir)", o.engine);
   } else if (o.language != "nc" && o.language != "mbir") {
     error = fmt::format("unknown input language '{}' (nc or mbir)", o.language);
-  } else if (o.language == "mbir" && o.command != "emit-ir") {
-    error = "-x mbir is only available with emit-ir";
+  } else if (o.language == "mbir" && o.command != "emit-ir" &&
+             o.command != "compile") {
+    error = "-x mbir is only available with emit-ir and compile";
+  } else if (producesFile && o.outputPath.empty()) {
+    error = fmt::format("mbc {} needs -o OUTPUT", o.command);
+  } else if (o.emit != "obj" && o.emit != "asm" && o.emit != "llvm" &&
+             o.emit != "ir") {
+    error = fmt::format("unknown --emit '{}' (ir, llvm, asm or obj)", o.emit);
+  } else if (!o.tableName.empty() && !isCIdentifier(o.tableName)) {
+    error = fmt::format("--table '{}' is not a C identifier", o.tableName);
   } else {
     return true;
   }
@@ -113,15 +88,15 @@ bool checkOptions(const Options& o, std::string& error) {
 } // namespace
 
 std::string usageText() {
-  return "usage: mbc run FILE... [--main O1234] [--engine jit|interp|ir] "
-         "[-O0..3]\n"
-         "                [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n"
-         "                [--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n"
-         "                [--max-blocks N] [--block-skip[=N]] [--trace]\n"
-         "                [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
+  return "usage: mbc run FILE... [--engine jit|interp|ir] [-O0..-O3]\n" +
+         runOptionsUsage(8) +
+         "        [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc check FILE...\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
-         "                [--disable-pass NAME]... [--verify-each]\n"
+         "        [--disable-pass NAME]... [--verify-each]\n"
+         "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"
+         "        [--emit=ir|llvm|asm|obj] [--table NAME] [-O0..-O3] [-g]\n"
+         "       mbc build FILE... -o EXE [-O0..-O3] [-g]\n"
          "passes: " +
          ir::passNameList() + "\n";
 }
@@ -133,54 +108,35 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
     return std::nullopt;
   }
   o.command = argv[1];
-  if (o.command != "run" && o.command != "check" && o.command != "emit-ir") {
+  if (!isCommand(o.command)) {
     error = fmt::format("unknown command '{}'", o.command);
     return std::nullopt;
   }
-  for (int i = 2; i < argc; ++i) {
-    std::string a = argv[i];
-    std::string value;
-    auto eq = a.find('=');
-    bool inlineValue = a.starts_with("--") && eq != std::string::npos;
-    std::string name = inlineValue ? a.substr(0, eq) : a;
-    auto needValue = [&]() -> bool {
-      if (inlineValue) {
-        value = a.substr(eq + 1);
-        return true;
-      }
-      if (i + 1 >= argc) {
-        error = fmt::format("option {} needs a value", name);
-        return false;
-      }
-      value = argv[++i];
-      return true;
-    };
-    if (name == "--trace") {
-      o.trace = true;
-    } else if (a.size() == 3 && a.starts_with("-O") && a[2] >= '0' &&
-               a[2] <= '3') {
+  ArgReader args(argc, argv, 2);
+  while (args.advance()) {
+    const std::string& a = args.arg();
+    const std::string& name = args.name();
+    OptionStatus run = readRunOption(args, o.run, error);
+    if (run == OptionStatus::Error) {
+      return std::nullopt;
+    }
+    if (run == OptionStatus::Taken) {
+      continue;
+    }
+    if (a.size() == 3 && a.starts_with("-O") && a[2] >= '0' && a[2] <= '3') {
       o.optLevel = a[2] - '0';
-    } else if (name == "--no-opt") {
+    } else if (a == "-g") {
+      o.debugInfo = true;
+    } else if (a == "-c") {
+      // compile only: what `mbc compile` always does (as with cc -c)
+    } else if (a == "--no-opt") {
       o.noOpt = true;
-    } else if (name == "--verify-each") {
+    } else if (a == "--verify-each") {
       o.verifyEach = true;
-    } else if (name == "--block-skip") {
-      double n = 1;
-      if (inlineValue &&
-          (!parseNumber(a.substr(eq + 1), n) || n < 1 || n > 9)) {
-        error = "--block-skip takes a switch number 1 to 9";
-        return std::nullopt;
-      }
-      o.blockSkipMask |= 1U << static_cast<unsigned>(n);
-    } else if (name == "--main" || name == "--engine" || name == "--toolpath" ||
-               name == "--dprnt" || name == "--vars-out" ||
-               name == "--machine" || name == "--set" || name == "--arg" ||
-               name == "--max-blocks" || name == "--disable-pass" ||
-               name == "-x") {
-      if (!needValue()) {
-        return std::nullopt;
-      }
-      if (!setValueOption(o, name, value, error)) {
+    } else if (isValueOption(name)) {
+      std::string value;
+      if (!args.takeValue(value, error) ||
+          !setValueOption(o, name, value, error)) {
         return std::nullopt;
       }
     } else if (a.starts_with("-") && a != "-") {

@@ -1,7 +1,9 @@
-// Command-line options of `mbc run`, `mbc check` and `mbc emit-ir`.
+// Command-line options of `mbc run`, `mbc check`, `mbc emit-ir`,
+// `mbc compile` and `mbc build`.
 #pragma once
 
-#include <cstdint>
+#include "driver/run_options.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,24 +11,20 @@
 namespace mbc::driver {
 
 struct Options {
-  std::string command; // "run", "check" or "emit-ir"
+  std::string command; // run, check, emit-ir, compile, build
   std::vector<std::string> files;
-  std::string mainProgram; // --main O1234 / <NAME>
+  RunOptions run;
   std::string engine = "jit";
-  int optLevel = 2; // -O0 ... -O3: the LLVM pipeline (jit, compile, build)
-  std::string toolpathPath;
-  std::string dprntPath;
-  std::string varsOutPath;
-  std::string machinePath;
-  std::vector<std::pair<double, double>> presets; // --set '#N=V'
-  std::vector<std::pair<char, double>> args;      // --arg A=1.5
-  std::uint64_t maxBlocks = 0;
-  unsigned blockSkipMask = 0;
-  bool trace = false;
-  bool noOpt = false;      // emit-ir, run --engine ir: no passes
-  bool verifyEach = false; // verify the IR after every pass
+  int optLevel = 2;                        // -O0 ... -O3: the LLVM pipeline
+  bool debugInfo = false;                  // -g
+  bool noOpt = false;                      // no IR passes
+  bool verifyEach = false;                 // verify the IR after every pass
   std::vector<std::string> disabledPasses; // --disable-pass NAME
   std::string language = "nc";             // -x nc|mbir (emit-ir)
+  std::string outputPath;                  // -o (compile, build)
+  std::string headerPath;                  // --header (compile)
+  std::string emit = "obj";                // --emit=ir|llvm|asm|obj
+  std::string tableName;                   // --table (compile)
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message

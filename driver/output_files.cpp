@@ -41,6 +41,35 @@ void OutputFile::writeMotion(void* self, const mbrt_motion* motion) {
   std::fwrite(line.data(), 1, line.size(), out->file_);
 }
 
+bool replaceFile(const std::string& path, const std::string& content) {
+  // Only a regular file (or a new one) is replaced through a temporary file
+  // and rename; a pipe, a terminal, a symlink such as /dev/stdout or "-" is
+  // written in place (appending, so a redirected stdout keeps its content).
+  struct stat info;
+  if (path == "-" ||
+      (lstat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))) {
+    std::FILE* out = path == "-" ? stdout : std::fopen(path.c_str(), "ab");
+    if (!out) {
+      return false;
+    }
+    bool ok =
+        std::fwrite(content.data(), 1, content.size(), out) == content.size();
+    return (out == stdout ? std::fflush(out) : std::fclose(out)) == 0 && ok;
+  }
+  std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) {
+    return false;
+  }
+  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  ok = (std::fclose(f) == 0) && ok;
+  ok = ok && std::rename(tmp.c_str(), path.c_str()) == 0;
+  if (!ok) {
+    std::remove(tmp.c_str());
+  }
+  return ok;
+}
+
 bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
   std::string json = "{";
   bool first = true;
@@ -53,27 +82,7 @@ bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
     first = false;
   }
   json += "}\n";
-  // Only a regular file (or a new one) is replaced through a temporary file
-  // and rename; a pipe, a terminal, a symlink such as /dev/stdout or "-" is
-  // written in place (appending, so a redirected stdout keeps its content).
-  struct stat info;
-  if (path == "-" ||
-      (lstat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))) {
-    std::FILE* out = path == "-" ? stdout : std::fopen(path.c_str(), "ab");
-    if (!out) {
-      return false;
-    }
-    bool ok = std::fwrite(json.data(), 1, json.size(), out) == json.size();
-    return (out == stdout ? std::fflush(out) : std::fclose(out)) == 0 && ok;
-  }
-  std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) {
-    return false;
-  }
-  bool ok = std::fwrite(json.data(), 1, json.size(), f) == json.size();
-  ok = (std::fclose(f) == 0) && ok;
-  return ok && std::rename(tmp.c_str(), path.c_str()) == 0;
+  return replaceFile(path, json);
 }
 
 } // namespace mbc::driver

@@ -32,6 +32,10 @@ private:
   bool owned_ = false;
 };
 
+/// Writes `content` to `path` so that a reader never sees half of it: a
+/// regular file is replaced by rename; "-" is standard output.
+bool replaceFile(const std::string& path, const std::string& content);
+
 /// Writes every common variable that is not vacant as a JSON object.
 bool writeVariables(const mbrt_ctx* ctx, const std::string& path);
 

@@ -7,7 +7,8 @@
 #                 expected outputs of `mbc run`
 # CASE.check      expected standard error of `mbc check` (its exit status is
 #                 CASE.status) -- for programs that must be diagnosed
-# MBC_ENGINE=interp|ir|jit picks the engine (default: mbc's, jit): the
+# MBC_ENGINE=interp|ir|jit|aot picks the engine (default: mbc's, jit; aot:
+# an executable made by `mbc build`, run with the same options): the
 # expected outputs are the same files, since every engine must give
 # byte-identical output. Under ir the IR is verified after every pass
 # (--verify-each).
@@ -51,13 +52,29 @@ else
   if [ -f "$name.args" ]; then
     mapfile -t args < <(grep -v '^[[:space:]]*$' "$name.args")
   fi
-  engine=()
-  [ -n "${MBC_ENGINE:-}" ] && engine=(--engine "$MBC_ENGINE")
-  [ "${MBC_ENGINE:-}" = ir ] && engine+=(--verify-each)
   read -r -a extra <<<"${MBC_EXTRA_ARGS:-}"
-  "$mbc" run "$name.nc" "${args[@]}" "${engine[@]}" "${extra[@]}" --toolpath "$work/toolpath.jsonl" \
-    --dprnt "$work/dprnt" --vars-out "$work/vars.json" 2>"$work/stderr"
-  status=$?
+  outputs=(--toolpath "$work/toolpath.jsonl" --dprnt "$work/dprnt" --vars-out "$work/vars.json")
+  if [ "${MBC_ENGINE:-}" = aot ]; then
+    # An executable of `mbc build`: the .nc arguments are compiled in, the
+    # others are its run options.
+    inputs=()
+    run_args=()
+    for a in "${args[@]}"; do
+      case $a in
+        *.nc) inputs+=("$a") ;;
+        *) run_args+=("$a") ;;
+      esac
+    done
+    "$mbc" build "$name.nc" "${inputs[@]}" "${extra[@]}" -o "$work/program" 2>"$work/stderr" &&
+      "$work/program" "${run_args[@]}" "${outputs[@]}" 2>>"$work/stderr"
+    status=$?
+  else
+    engine=()
+    [ -n "${MBC_ENGINE:-}" ] && engine=(--engine "$MBC_ENGINE")
+    [ "${MBC_ENGINE:-}" = ir ] && engine+=(--verify-each)
+    "$mbc" run "$name.nc" "${args[@]}" "${engine[@]}" "${extra[@]}" "${outputs[@]}" 2>"$work/stderr"
+    status=$?
+  fi
   for f in toolpath.jsonl dprnt vars.json stderr; do
     if [ -f "$name.$f" ] || { [ -n "$bless" ] && [ -s "$work/$f" ]; }; then
       [ -f "$work/$f" ] || : >"$work/$f"

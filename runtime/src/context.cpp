@@ -217,6 +217,7 @@ void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
 
 void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
   ctx->traceSink = {fn, user};
+  ctx->block.tracing = fn != nullptr ? 1 : 0;
 }
 
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {

@@ -113,7 +113,7 @@ struct mbrt_ctx {
   mbc::rt::AxisCounts machine{}; // machine position, the primary one
 
   // The run: the block being executed and the count of blocks.
-  mbrt_block_state block{nullptr, 0, 0, mbc::rt::kDefaultMaxBlocks};
+  mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
   std::uint64_t moves = 0;
   std::uint64_t optionalStops = 0;

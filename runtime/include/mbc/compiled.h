@@ -22,10 +22,12 @@ typedef struct mbrt_level {
 } mbrt_level;
 
 /* What mbrt_begin_block keeps: generated code does the same inline and calls
- * mbrt_block_limit once `blocks` passes `max_blocks`. */
+ * mbrt_block_limit once `blocks` passes `max_blocks`. `tracing` is 1 while a
+ * trace sink is set: compiled trace statements test it first. */
 typedef struct mbrt_block_state {
   const char* file;
   int line;
+  int tracing;
   uint64_t blocks;
   uint64_t max_blocks;
 } mbrt_block_state;

@@ -1,0 +1,163 @@
+// `mbc compile` and `mbc build` (see compile_command.h). build links the
+// object with the run support and the runtime (static libraries of this
+// build, paths from build_paths.h) by the system C++ compiler driver ($CXX,
+// default c++).
+#include "driver/compile_command.h"
+
+#include "codegen/c_header.h"
+#include "codegen/object_file.h"
+#include "driver/ir_pipeline.h"
+#include "driver/output_files.h"
+#include "ir/printer.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "build_paths.h"
+
+extern char** environ;
+
+namespace mbc::driver {
+
+namespace {
+
+// "out/cycle.o" -> "cycle": letters, digits and '_' of the file's stem.
+std::string identifierStem(const std::string& path) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  std::string id;
+  for (char c : stem) {
+    bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+              (c >= '0' && c <= '9');
+    id += ok ? c : '_';
+  }
+  return id;
+}
+
+codegen::FileKind fileKind(const std::string& emit) {
+  if (emit == "llvm") {
+    return codegen::FileKind::LlvmIr;
+  }
+  return emit == "asm" ? codegen::FileKind::Assembly
+                       : codegen::FileKind::Object;
+}
+
+int reportFailure(const std::string& error) {
+  std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
+  return 4;
+}
+
+// Runs argv[0] (searched in PATH) and waits: its exit status, or -1.
+int runProcess(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) {
+    argv.push_back(const_cast<char*>(a.c_str()));
+  }
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) !=
+      0) {
+    return -1;
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+int compileCommand(const Options& o) {
+  ir::Module module;
+  if (!loadModule(o, module)) {
+    return 1;
+  }
+  std::string table = o.tableName;
+  if (table.empty()) {
+    table = o.outputPath == "-"
+                ? "mbc_programs"
+                : "mbc_programs_" + identifierStem(o.outputPath);
+  }
+  if (o.emit == "ir") {
+    if (!replaceFile(o.outputPath, ir::print(module))) {
+      return reportFailure("cannot write '" + o.outputPath + "'");
+    }
+  } else {
+    codegen::ObjectOptions opts;
+    opts.emit.tableName = table;
+    opts.optLevel = o.optLevel;
+    std::string error;
+    if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
+                                error)) {
+      return reportFailure(error);
+    }
+  }
+  if (!o.headerPath.empty()) {
+    std::string guard = "MBC_" + identifierStem(o.headerPath) + "_H";
+    for (char& c : guard) {
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    if (!replaceFile(o.headerPath, codegen::cHeader(module, table, guard))) {
+      return reportFailure("cannot write '" + o.headerPath + "'");
+    }
+  }
+  return 0;
+}
+
+int buildCommand(const Options& options) {
+  // The executable takes --trace like `mbc run`: its code has the trace
+  // statements, which cost a test each while no trace sink is set.
+  Options o = options;
+  o.run.trace = true;
+  ir::Module module;
+  if (!loadModule(o, module)) {
+    return 1;
+  }
+  std::string dir =
+      (std::filesystem::temp_directory_path() / "mbc-build-XXXXXX").string();
+  if (mkdtemp(dir.data()) == nullptr) {
+    return reportFailure("cannot create a temporary directory");
+  }
+  std::string object = dir + "/program.o";
+  codegen::ObjectOptions opts;
+  opts.emit.entryPoints = false;
+  opts.emit.aotMain = true;
+  opts.optLevel = o.optLevel;
+  std::string error;
+  int status = 0;
+  if (!codegen::writeCompiled(module, opts, codegen::FileKind::Object, object,
+                              error)) {
+    status = reportFailure(error);
+  } else {
+    const char* cxx = std::getenv("CXX");
+    std::string tmp = o.outputPath + ".tmp";
+    std::vector<std::string> link = {cxx != nullptr && *cxx ? cxx : "c++",
+                                     "-o",
+                                     tmp,
+                                     object,
+                                     MBC_RUNNER_LIB,
+                                     MBC_RUNTIME_LIB,
+                                     "-lfmt",
+                                     "-lm"};
+    int linked = runProcess(link);
+    if (linked != 0) {
+      std::remove(tmp.c_str());
+      status = reportFailure(
+          linked < 0 ? fmt::format("cannot run the linker '{}'", link[0])
+                     : fmt::format("linking '{}' failed ({} exited with {})",
+                                   o.outputPath, link[0], linked));
+    } else if (std::rename(tmp.c_str(), o.outputPath.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      status = reportFailure("cannot replace '" + o.outputPath + "'");
+    }
+  }
+  std::filesystem::remove_all(dir);
+  return status;
+}
+
+} // namespace mbc::driver

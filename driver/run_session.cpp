@@ -1,0 +1,130 @@
+// A run and its summary line (see run_session.h).
+#include "driver/run_session.h"
+
+#include "driver/output_files.h"
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+namespace mbc::driver {
+
+namespace {
+
+struct CtxDeleter {
+  void operator()(mbrt_ctx* c) const { mbrt_destroy(c); }
+};
+
+using CtxPtr = std::unique_ptr<mbrt_ctx, CtxDeleter>;
+
+void writeStderr(void*, const char* data, std::size_t size) {
+  std::fwrite(data, 1, size, stderr);
+}
+
+CtxPtr createContext(const RunOptions& o) {
+  char err[512] = {0};
+  mbrt_ctx* ctx =
+      o.machinePath.empty()
+          ? mbrt_create(nullptr, err, sizeof err)
+          : mbrt_create_from_file(o.machinePath.c_str(), err, sizeof err);
+  if (!ctx) {
+    std::fprintf(stderr, "mbc: error: machine profile: %s\n", err);
+  }
+  return CtxPtr(ctx);
+}
+
+void printSummary(const mbrt_ctx* ctx, const std::string& program,
+                  bool alarmed) {
+  mbrt_stats st{};
+  mbrt_get_stats(ctx, &st);
+  std::fprintf(stderr, "mbc: %s: %llu blocks, %llu moves, %d alarm%s\n",
+               program.c_str(), static_cast<unsigned long long>(st.blocks),
+               static_cast<unsigned long long>(st.moves), alarmed ? 1 : 0,
+               alarmed ? "" : "s");
+  if (st.optional_stops) {
+    std::fprintf(stderr, "mbc: note: %llu M00/M01 stop(s) passed through\n",
+                 static_cast<unsigned long long>(st.optional_stops));
+  }
+  if (st.main_m99) {
+    std::fprintf(stderr, "mbc: note: M99 in the main program ended the run "
+                         "(a control would start it again)\n");
+  }
+}
+
+bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, OutputFile& toolpath,
+                 OutputFile& dprnt) {
+  if (!o.toolpathPath.empty()) {
+    if (!toolpath.open(o.toolpathPath)) {
+      std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                   o.toolpathPath.c_str());
+      return false;
+    }
+    mbrt_set_motion_sink(ctx, &OutputFile::writeMotion, &toolpath);
+  }
+  if (o.dprntPath.empty()) {
+    dprnt.useStdout();
+  } else if (!dprnt.open(o.dprntPath)) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                 o.dprntPath.c_str());
+    return false;
+  }
+  mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
+  return true;
+}
+
+mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
+  for (auto [number, value] : o.presets) {
+    if (mbrt_status st = mbrt_write_var(ctx, number, value, nullptr)) {
+      return st;
+    }
+  }
+  if (o.args.empty()) {
+    return 0;
+  }
+  std::vector<mbrt_word> words;
+  for (auto [letter, value] : o.args) {
+    words.push_back({letter, MBRT_WORD_VALUE, value});
+  }
+  return mbrt_set_main_args(ctx, words.data(), words.size());
+}
+
+} // namespace
+
+int runSession(const RunOptions& o, const std::string& mainName,
+               const Engine& engine) {
+  CtxPtr ctx = createContext(o);
+  if (!ctx) {
+    return 2;
+  }
+  OutputFile toolpath, dprnt;
+  if (!openOutputs(o, ctx.get(), toolpath, dprnt)) {
+    return 2;
+  }
+  mbrt_set_message_sink(ctx.get(), &writeStderr, nullptr);
+  if (o.trace) {
+    mbrt_set_trace_sink(ctx.get(), &writeStderr, nullptr);
+  }
+  if (o.maxBlocks) {
+    mbrt_set_max_blocks(ctx.get(), o.maxBlocks);
+  }
+  mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
+  mbrt_start(ctx.get(), mainName.c_str());
+  mbrt_status st = presetAndPass(o, ctx.get());
+  if (!st) {
+    st = engine(ctx.get());
+  }
+  if (st) {
+    char report[4096];
+    mbrt_alarm_report(ctx.get(), report, sizeof report);
+    std::fflush(stdout);
+    std::fputs(report, stderr);
+  }
+  if (!o.varsOutPath.empty() && !writeVariables(ctx.get(), o.varsOutPath)) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                 o.varsOutPath.c_str());
+  }
+  printSummary(ctx.get(), mainName, st != 0);
+  return st ? 3 : 0;
+}
+
+} // namespace mbc::driver
