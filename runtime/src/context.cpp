@@ -94,6 +94,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.mainM99 = false;
   ctx.clockMs = 0.0;
   ctx.alarm = PendingAlarm{};
+  ctx.motionBuffer.clear();
   takeDateAndTime(ctx);
 }
 
@@ -129,6 +130,11 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
     alarm.stack.push_back(CallSite{
         call->program, call->file != nullptr ? call->file : "", call->line});
+  }
+  if (ctx.alarmSink.fn != nullptr) {
+    std::string report(mbrt_alarm_report(&ctx, nullptr, 0), '\0');
+    mbrt_alarm_report(&ctx, report.data(), report.size() + 1);
+    ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
   }
   return static_cast<mbrt_status>(id);
 }

@@ -13,6 +13,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -121,6 +122,9 @@ struct mbrt_ctx {
   mbc::rt::PendingAlarm alarm;
   std::string scratch; // reused output buffer
 
+  mbc::rt::Sink<mbrt_text_fn> alarmSink;
+  std::vector<mbrt_motion> motionBuffer; // mbrt_buffer_motions
+  std::set<std::string> bufferedNames;   // their program names, stable
   mbc::rt::Sink<mbrt_motion_fn> motionSink;
   mbc::rt::Sink<mbrt_text_fn> printSink;
   mbc::rt::Sink<mbrt_text_fn> messageSink;

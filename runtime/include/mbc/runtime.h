@@ -77,6 +77,16 @@ void mbrt_set_print_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
 void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
 /* --trace lines ("file:line: text\n"); fn NULL switches tracing off. */
 void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* Alarms as they are raised: fn gets the text mbrt_alarm_report gives. The
+ * call that raised it then returns the alarm id, which unwinds to the
+ * caller of the program. */
+void mbrt_set_alarm_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* Instead of a motion sink: the context keeps every motion of a run (on =
+ * 1), read with mbrt_buffered_motions. */
+void mbrt_buffer_motions(mbrt_ctx* ctx, int on);
+/* The motions buffered since the run started (mbrt_start and mbrt_run_main
+ * empty the buffer); valid until the next run or mbrt_destroy. */
+const mbrt_motion* mbrt_buffered_motions(const mbrt_ctx* ctx, size_t* count);
 /* Blocks a run may execute before alarm MBC0002 (0 = the default limit). */
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
 

@@ -1,0 +1,32 @@
+// What embedders get beyond the plain sinks: an alarm callback and a
+// toolpath buffer in the context, for callers that would rather read the
+// motions of a run than receive them one by one.
+#include "context.h"
+
+namespace {
+
+void bufferMotion(void* user, const mbrt_motion* motion) {
+  auto* ctx = static_cast<mbrt_ctx*>(user);
+  mbrt_motion copy = *motion;
+  // The caller's program name lives in its call record, which is gone
+  // after the call returns.
+  copy.program = ctx->bufferedNames.insert(motion->program).first->c_str();
+  ctx->motionBuffer.push_back(copy);
+}
+
+} // namespace
+
+void mbrt_set_alarm_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
+  ctx->alarmSink = {fn, user};
+}
+
+void mbrt_buffer_motions(mbrt_ctx* ctx, int on) {
+  ctx->motionSink = on ? mbc::rt::Sink<mbrt_motion_fn>{bufferMotion, ctx}
+                       : mbc::rt::Sink<mbrt_motion_fn>{};
+  ctx->motionBuffer.clear();
+}
+
+const mbrt_motion* mbrt_buffered_motions(const mbrt_ctx* ctx, size_t* count) {
+  *count = ctx->motionBuffer.size();
+  return ctx->motionBuffer.data();
+}
