@@ -18,6 +18,21 @@ FunctionEmitter::FunctionEmitter(ModuleState& m, const ir::Function& fn,
     : m_(m), abi_(m.abi), fn_(fn), body_(body), b_(m.abi.context) {
 }
 
+void FunctionEmitter::at(std::uint32_t line) {
+  if (scope_ != nullptr) {
+    b_.SetCurrentDebugLocation(m_.debug->location(line, scope_));
+  }
+}
+
+// Instructions that passes made up without a line of their own (hoisted
+// loads, say) belong to the program as a whole.
+std::uint32_t FunctionEmitter::lineOf(const ir::Inst& inst) const {
+  if (inst.op == ir::Op::Begin && inst.attr > 0) {
+    return static_cast<std::uint32_t>(inst.attr);
+  }
+  return inst.line != 0 ? inst.line : firstLine_;
+}
+
 llvm::BasicBlock* FunctionEmitter::newBlock(const char* name) {
   return llvm::BasicBlock::Create(abi_.context, name, body_);
 }
@@ -25,6 +40,11 @@ llvm::BasicBlock* FunctionEmitter::newBlock(const char* name) {
 void FunctionEmitter::emit() {
   values_.assign(fn_.insts.size(), nullptr);
   incoming_.assign(fn_.blocks.size(), {});
+  if (m_.debug) {
+    scope_ = m_.debug->subprogram(body_, fn_);
+    firstLine_ = DebugInfo::firstLine(fn_);
+  }
+  at(firstLine_);
   entry_ = newBlock("entry");
   for (std::size_t i = 0; i < fn_.blocks.size(); ++i) {
     blocks_.push_back(newBlock("b"));
@@ -80,6 +100,7 @@ void FunctionEmitter::emitBlock(ir::BlockId b) {
   b_.SetInsertPoint(blocks_[b]);
   for (ir::ValueId id : fn_.blocks[b].insts) {
     const ir::Inst& inst = fn_.insts[id];
+    at(lineOf(inst));
     if (inst.op == ir::Op::Phi) {
       llvm::Type* type = inst.type == ir::Type::Bool ? abi_.i1 : abi_.f64;
       values_[id] = b_.CreatePHI(type, static_cast<unsigned>(inst.ops.size()));

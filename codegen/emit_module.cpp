@@ -29,6 +29,21 @@ llvm::Constant* ModuleState::cstring(const std::string& text) {
 
 namespace {
 
+// Glue calls bodies, which the inliner may merge into it: with -g it needs
+// a subprogram and locations of its own. Code that serves no one program
+// is put at the start of the first, as a C compiler's would be in its main
+// file: line 0 would make debuggers show the line before it in the file.
+void attribute(ModuleState& m, llvm::Function* fn, llvm::IRBuilder<>& b,
+               const ir::Function* program) {
+  if (program == nullptr && !m.ir.functions.empty()) {
+    program = &m.ir.functions[0];
+  }
+  if (m.debug) {
+    llvm::DISubprogram* sp = m.debug->artificial(fn, program);
+    b.SetCurrentDebugLocation(m.debug->location(sp->getLine(), sp));
+  }
+}
+
 // i32 mbc.call(ptr ctx, double p, i32 macro, ptr args, i64 count,
 //              double repeat, ptr out): the program numbered round(p), called
 // round(repeat) times, or PS0076 (evaluator findProgram and call).
@@ -46,6 +61,7 @@ llvm::Function* emitDispatch(ModuleState& m) {
   auto* lookup = llvm::BasicBlock::Create(abi.context, "lookup", fn);
   auto* missing = llvm::BasicBlock::Create(abi.context, "missing", fn);
   llvm::IRBuilder<> b(entry);
+  attribute(m, fn, b, nullptr);
   llvm::Value* n = b.CreateUnaryIntrinsic(llvm::Intrinsic::round, p);
   llvm::Value* valid =
       b.CreateAnd(b.CreateFCmpOGE(n, llvm::ConstantFP::get(abi.f64, 0)),
@@ -85,6 +101,7 @@ void emitAotMain(ModuleState& m, llvm::GlobalVariable* table) {
       llvm::FunctionType::get(abi.i32, {abi.i32, abi.ptr}, false),
       llvm::GlobalValue::ExternalLinkage, "main", abi.module);
   llvm::IRBuilder<> b(llvm::BasicBlock::Create(abi.context, "entry", fn));
+  attribute(m, fn, b, nullptr);
   b.CreateRet(b.CreateCall(runner, {fn->getArg(0), fn->getArg(1), table}));
 }
 
@@ -126,6 +143,7 @@ void emitEntryPoints(ModuleState& m, llvm::GlobalVariable* programs) {
                                       entryPointName(f.number), abi.module);
     fn->addFnAttr(llvm::Attribute::NoUnwind);
     llvm::IRBuilder<> b(llvm::BasicBlock::Create(abi.context, "entry", fn));
+    attribute(m, fn, b, &f);
     llvm::Value* row =
         b.CreateConstInBoundsGEP2_64(programs->getValueType(), programs, 0, i);
     b.CreateRet(
@@ -147,6 +165,9 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
                                          const EmitOptions& options) {
   auto out = std::make_unique<llvm::Module>(options.moduleName, context);
   detail::ModuleState m(module, *out, options);
+  if (options.debugInfo) {
+    m.debug = std::make_unique<DebugInfo>(*out, module);
+  }
   for (const ir::Function& f : module.functions) {
     auto* body =
         llvm::Function::Create(m.abi.body, llvm::GlobalValue::InternalLinkage,
@@ -161,6 +182,9 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
   llvm::GlobalVariable* programs = detail::emitTable(m);
   if (options.entryPoints) {
     detail::emitEntryPoints(m, programs);
+  }
+  if (m.debug) {
+    m.debug->finalize();
   }
   return out;
 }

@@ -23,6 +23,8 @@ struct EmitOptions {
   /// A C `main` that hands its arguments and the table to mbc_aot_main
   /// (driver/aot_main.h): the executables of `mbc build`.
   bool aotMain = false;
+  /// DWARF that maps the code to the .nc lines of its IR (`-g`).
+  bool debugInfo = false;
 };
 
 std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,

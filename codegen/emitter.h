@@ -6,12 +6,14 @@
 #pragma once
 
 #include "codegen/abi.h"
+#include "codegen/debug_info.h"
 #include "codegen/emit_module.h"
 #include "ir/ir.h"
 
 #include <llvm/IR/IRBuilder.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ struct ModuleState {
   std::vector<llvm::Function*> bodies; // by IR function index
   llvm::Function* dispatch = nullptr;  // mbc.call, see emit_module.cpp
   std::map<std::string, llvm::Constant*> strings;
+  std::unique_ptr<DebugInfo> debug; // with EmitOptions::debugInfo only
 
   ModuleState(const ir::Module& m, llvm::Module& out, const EmitOptions& o)
       : ir(m), abi(out), options(o) {}
@@ -41,6 +44,10 @@ public:
 
 private:
   // Control (emit_control.cpp).
+  /// Attributes what is emitted next to `line` of the program's file.
+  void at(std::uint32_t line);
+  /// The line an IR instruction stands for.
+  std::uint32_t lineOf(const ir::Inst& inst) const;
   void emitPrologue();
   void emitBlock(ir::BlockId b);
   void fillPhis();
@@ -107,6 +114,8 @@ private:
   const ir::Function& fn_;
   llvm::Function* body_;
   llvm::IRBuilder<> b_;
+  llvm::DISubprogram* scope_ = nullptr; // with debug info only
+  std::uint32_t firstLine_ = 0;
   std::vector<llvm::Value*> values_;      // by ValueId
   std::vector<llvm::BasicBlock*> blocks_; // by IR block: its first block
 

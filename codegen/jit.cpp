@@ -10,8 +10,11 @@
 #include <mbc/compiled.h>
 
 #include <llvm/Config/llvm-config.h>
+#include <llvm/ExecutionEngine/JITEventListener.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/RTDyldObjectLinkingLayer.h>
+#include <llvm/ExecutionEngine/SectionMemoryManager.h>
 #include <llvm/Support/TargetSelect.h>
 
 #include <mutex>
@@ -69,12 +72,30 @@ llvm::Error defineRuntime(llvm::orc::LLJIT& jit) {
   return llvm::Error::success();
 }
 
+// RuntimeDyld with gdb's JIT registration: gdb then reads the DWARF of
+// the objects it is told about. The creator's and the memory manager's
+// parameters differ between LLVM versions and are not needed here.
+auto debuggableObjectLayer =
+    [](llvm::orc::ExecutionSession& session,
+       auto&&...) -> llvm::Expected<std::unique_ptr<llvm::orc::ObjectLayer>> {
+  auto layer = std::make_unique<llvm::orc::RTDyldObjectLinkingLayer>(
+      session,
+      [](auto&&...) -> std::unique_ptr<llvm::RuntimeDyld::MemoryManager> {
+        return std::make_unique<llvm::SectionMemoryManager>();
+      });
+  layer->registerJITEventListener(
+      *llvm::JITEventListener::createGDBRegistrationListener());
+  return layer;
+};
+
 } // namespace
 
 Jit::~Jit() = default;
 
-std::unique_ptr<Jit> Jit::compile(const ir::Module& module, int optLevel,
+std::unique_ptr<Jit> Jit::compile(const ir::Module& module,
+                                  const JitOptions& options,
                                   std::string& error) {
+  int optLevel = options.optLevel;
   initializeNativeTarget();
   auto builder = llvm::orc::JITTargetMachineBuilder::detectHost();
   if (!builder) {
@@ -90,6 +111,7 @@ std::unique_ptr<Jit> Jit::compile(const ir::Module& module, int optLevel,
   auto context = makeContext();
   EmitOptions emit;
   emit.entryPoints = false;
+  emit.debugInfo = options.debugInfo;
   std::unique_ptr<llvm::Module> m = emitModule(module, *context, emit);
   m->setDataLayout((*tm)->createDataLayout());
   m->setTargetTriple((*tm)->getTargetTriple().str());
@@ -98,8 +120,12 @@ std::unique_ptr<Jit> Jit::compile(const ir::Module& module, int optLevel,
   }
   optimize(*m, **tm, optLevel);
 
-  auto lljit =
-      llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(*builder).create();
+  llvm::orc::LLJITBuilder jitBuilder;
+  jitBuilder.setJITTargetMachineBuilder(*builder);
+  if (options.debugInfo) {
+    jitBuilder.setObjectLinkingLayerCreator(debuggableObjectLayer);
+  }
+  auto lljit = jitBuilder.create();
   if (!lljit) {
     error = message(lljit.takeError());
     return nullptr;

@@ -15,13 +15,21 @@ class LLJIT;
 
 namespace mbc::codegen {
 
+struct JitOptions {
+  int optLevel = 2; // 0..3
+  /// DWARF line tables, registered with gdb's JIT interface so that a
+  /// debugger attached to `mbc run` sees the .nc lines.
+  bool debugInfo = false;
+};
+
 class Jit {
 public:
   ~Jit();
 
-  /// Compiles `module` at optimisation level `optLevel` (0..3). Returns
-  /// nullptr with the reason in `error` when LLVM fails.
-  static std::unique_ptr<Jit> compile(const ir::Module& module, int optLevel,
+  /// Compiles `module`. Returns nullptr with the reason in `error` when
+  /// LLVM fails.
+  static std::unique_ptr<Jit> compile(const ir::Module& module,
+                                      const JitOptions& options,
                                       std::string& error);
 
   /// The compiled programs, valid while this object lives.

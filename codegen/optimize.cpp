@@ -1,6 +1,7 @@
 // The LLVM pass pipeline (new pass manager).
 #include "codegen/optimize.h"
 
+#include <llvm/Config/llvm-config.h>
 #include <llvm/Passes/PassBuilder.h>
 
 namespace mbc::codegen {
@@ -14,7 +15,14 @@ llvm::OptimizationLevel passLevel(int level) {
     case 2:
       return llvm::OptimizationLevel::O2;
     default:
+      // LLVM 14's O3 pipeline adds ArgumentPromotion, which crashes on
+      // opaque pointers; -O3 keeps the O2 passes and the aggressive code
+      // generator there.
+#if LLVM_VERSION_MAJOR < 15
+      return llvm::OptimizationLevel::O2;
+#else
       return llvm::OptimizationLevel::O3;
+#endif
   }
 }
 

@@ -90,6 +90,7 @@ int compileCommand(const Options& o) {
   } else {
     codegen::ObjectOptions opts;
     opts.emit.tableName = table;
+    opts.emit.debugInfo = o.debugInfo;
     opts.optLevel = o.optLevel;
     std::string error;
     if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
@@ -127,6 +128,7 @@ int buildCommand(const Options& options) {
   codegen::ObjectOptions opts;
   opts.emit.entryPoints = false;
   opts.emit.aotMain = true;
+  opts.emit.debugInfo = o.debugInfo;
   opts.optLevel = o.optLevel;
   std::string error;
   int status = 0;

@@ -66,7 +66,10 @@ int runCommand(const Options& o) {
   std::unique_ptr<codegen::Jit> jit;
   if (o.engine == "jit") {
     std::string error;
-    jit = codegen::Jit::compile(module, o.optLevel, error);
+    codegen::JitOptions jo;
+    jo.optLevel = o.optLevel;
+    jo.debugInfo = o.debugInfo;
+    jit = codegen::Jit::compile(module, jo, error);
     if (!jit) {
       std::fprintf(stderr, "mbc: internal error: %s\n", error.c_str());
       return 4;
