@@ -68,6 +68,7 @@ void FunctionEmitter::emit() {
       b_.CreateUnreachable();
     }
   }
+  finishLandings();
   fillPhis();
   for (auto& [type, slot] : scratch_) {
     slot.first->setOperand(
@@ -124,15 +125,24 @@ void FunctionEmitter::fillPhis() {
       }
       auto* node = llvm::cast<llvm::PHINode>(values_[id]);
       for (const Edge& e : incoming_[b]) {
-        for (std::size_t k = 0; k < phi.targets.size(); ++k) {
-          if (phi.targets[k] == e.pred) {
-            node->addIncoming(values_[phi.ops[k]], e.from);
-            break;
-          }
+        llvm::Value* v = e.landing >= 0 ? landingInput(e.landing, phi)
+                                        : inputFrom(phi, e.pred);
+        if (v != nullptr) {
+          node->addIncoming(v, e.from);
         }
       }
     }
   }
+}
+
+llvm::Value* FunctionEmitter::inputFrom(const ir::Inst& phi,
+                                        ir::BlockId pred) const {
+  for (std::size_t k = 0; k < phi.targets.size(); ++k) {
+    if (phi.targets[k] == pred) {
+      return values_[phi.ops[k]];
+    }
+  }
+  return nullptr;
 }
 
 void FunctionEmitter::jump(ir::BlockId target) {
@@ -221,133 +231,6 @@ void FunctionEmitter::emitRet() {
   leaveStopped(MBRT_END_PROGRAM);
   b_.SetInsertPoint(called);
   leave(llvm::ConstantInt::get(abi_.i32, 0));
-}
-
-// Computed GOTO (evaluator switchTo).
-void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
-  llvm::Value* target = numOperand(inst, 0);
-  llvm::Value* n = roundHalfAway(target);
-  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
-                                      b_.CreateFCmpOLE(n, constant(99999)));
-  llvm::BasicBlock* bad = newBlock("badgoto");
-  llvm::BasicBlock* good = newBlock("goto");
-  b_.CreateCondBr(inRange, good, bad);
-  b_.SetInsertPoint(bad);
-  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
-                      {ctx_, m_.cstring("GOTO "), target, name_}));
-  b_.SetInsertPoint(good);
-  emitCaseSwitch(inst, n, 0);
-}
-
-// M99 P from a callee: resume at that N of this function (evaluator
-// jumpToSeq).
-void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
-  llvm::Value* n = roundHalfAway(seq);
-  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
-                                      b_.CreateFCmpOLE(n, constant(99999)));
-  llvm::BasicBlock* bad = newBlock("badseq");
-  llvm::BasicBlock* good = newBlock("seq");
-  b_.CreateCondBr(inRange, good, bad);
-  b_.SetInsertPoint(bad);
-  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
-                      {ctx_, m_.cstring("M99 P"), seq, name_}));
-  b_.SetInsertPoint(good);
-  emitCaseSwitch(inst, n, 1);
-}
-
-// cases[i] goes to targets[i + offset]; a number without a case is PS0128.
-// `n` is a whole number in 1..99999.
-void FunctionEmitter::emitCaseSwitch(const ir::Inst& inst, llvm::Value* n,
-                                     std::size_t offset) {
-  llvm::BasicBlock* missing = newBlock("noseq");
-  llvm::SwitchInst* sw =
-      b_.CreateSwitch(b_.CreateFPToSI(n, abi_.i32), missing,
-                      static_cast<unsigned>(inst.cases.size()));
-  std::set<std::int64_t> seen;
-  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    if (i + offset >= inst.targets.size() ||
-        !seen.insert(inst.cases[i]).second) {
-      continue;
-    }
-    ir::BlockId target = inst.targets[i + offset];
-    sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
-                blocks_[target]);
-    incoming_[target].push_back({sw->getParent(), current_});
-  }
-  b_.SetInsertPoint(missing);
-  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
-                      {ctx_, m_.cstring(""), n, name_}));
-}
-
-// What an NC block or a call asks for next (evaluator resume, resumeNc). A
-// call's flow is NEXT with has_seq for M99 P; so is an NC block's NEXT.
-void FunctionEmitter::emitResume(const ir::Inst& inst) {
-  llvm::Value* flow = values_[inst.ops[0]];
-  llvm::Value* kind = b_.CreateExtractValue(flow, kFlowKind);
-  llvm::BasicBlock* next = newBlock("next");
-  llvm::BasicBlock* sub = newBlock("m98");
-  llvm::BasicBlock* ret = newBlock("m99");
-  llvm::BasicBlock* end = newBlock("end");
-  llvm::SwitchInst* sw = b_.CreateSwitch(kind, next, 3);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_CALL_SUB), sub);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_RETURN), ret);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_END), end);
-
-  b_.SetInsertPoint(next);
-  llvm::BasicBlock* plain =
-      splitIf(b_.CreateICmpNE(b_.CreateExtractValue(flow, kFlowHasSeq),
-                              llvm::ConstantInt::get(abi_.i32, 0)),
-              false);
-  jumpToSeq(inst, b_.CreateExtractValue(flow, kFlowSeq));
-  b_.SetInsertPoint(plain);
-  jump(inst.targets[0]);
-
-  b_.SetInsertPoint(sub);
-  emitSubCall(inst, flow);
-
-  // M99 in the main program ends a batch run (spec Part A).
-  b_.SetInsertPoint(ret);
-  llvm::Value* depth = b_.CreateCall(abi_.fn(Rt::mbrt_call_depth), {ctx_});
-  llvm::BasicBlock* called = splitIf(
-      b_.CreateICmpEQ(depth, llvm::ConstantInt::get(abi_.i32, 0)), false);
-  leaveStopped(MBRT_END_MAIN_M99);
-  b_.SetInsertPoint(called);
-  b_.CreateStore(b_.CreateExtractValue(flow, kFlowHasSeq),
-                 b_.CreateStructGEP(abi_.flow, leave_, kFlowHasSeq));
-  b_.CreateStore(b_.CreateExtractValue(flow, kFlowSeq),
-                 b_.CreateStructGEP(abi_.flow, leave_, kFlowSeq));
-  leave(llvm::ConstantInt::get(abi_.i32, 0));
-
-  b_.SetInsertPoint(end);
-  llvm::Value* counts =
-      b_.CreateICmpNE(b_.CreateExtractValue(flow, kFlowCountsPart),
-                      llvm::ConstantInt::get(abi_.i32, 0));
-  b_.CreateCall(
-      abi_.fn(Rt::mbrt_finish),
-      {ctx_, b_.CreateSelect(
-                 counts, llvm::ConstantInt::get(abi_.i32, MBRT_END_M02_M30),
-                 llvm::ConstantInt::get(abi_.i32, MBRT_END_PROGRAM))});
-  leave(llvm::ConstantInt::get(abi_.i32, MBRT_STOP));
-}
-
-// M98 P L from an NC block: the subprogram on this call level.
-void FunctionEmitter::emitSubCall(const ir::Inst& inst, llvm::Value* flow) {
-  llvm::Value* program =
-      b_.CreateSIToFP(b_.CreateExtractValue(flow, kFlowProgram), abi_.f64);
-  llvm::Value* repeat =
-      b_.CreateSIToFP(b_.CreateExtractValue(flow, kFlowRepeat), abi_.f64);
-  check(b_.CreateCall(
-      m_.dispatch, {ctx_, program, llvm::ConstantInt::get(abi_.i32, 0),
-                    llvm::ConstantPointerNull::get(abi_.ptr),
-                    llvm::ConstantInt::get(abi_.i64, 0), repeat, flowSlot_}));
-  llvm::Value* out = loadFlow();
-  llvm::BasicBlock* plain =
-      splitIf(b_.CreateICmpNE(b_.CreateExtractValue(out, kFlowHasSeq),
-                              llvm::ConstantInt::get(abi_.i32, 0)),
-              false);
-  jumpToSeq(inst, b_.CreateExtractValue(out, kFlowSeq));
-  b_.SetInsertPoint(plain);
-  jump(inst.targets[0]);
 }
 
 } // namespace mbc::codegen::detail

@@ -4,6 +4,7 @@
 #include "codegen/emit_module.h"
 
 #include "codegen/emitter.h"
+#include <mbc/runtime.h>
 
 #include <fmt/format.h>
 #include <llvm/IR/Intrinsics.h>
@@ -105,6 +106,86 @@ void emitAotMain(ModuleState& m, llvm::GlobalVariable* table) {
   b.CreateRet(b.CreateCall(runner, {fn->getArg(0), fn->getArg(1), table}));
 }
 
+// i32 mbc.resume(ptr ctx, ptr flow, ptr leave): what an NC block's flow asks
+// for (evaluator resumeNc). Out of line, so that every NC block of a
+// program costs one call whatever its case table.
+llvm::Function* emitResume(ModuleState& m) {
+  const Abi& abi = m.abi;
+  auto* fn = llvm::Function::Create(
+      llvm::FunctionType::get(abi.i32, {abi.ptr, abi.ptr, abi.ptr}, false),
+      llvm::GlobalValue::InternalLinkage, "mbc.resume", abi.module);
+  fn->addFnAttr(llvm::Attribute::NoUnwind);
+  fn->addFnAttr(llvm::Attribute::NoInline);
+  llvm::Value* ctx = fn->getArg(0);
+  llvm::Value* flow = fn->getArg(1);
+  auto block = [&](const char* name) {
+    return llvm::BasicBlock::Create(abi.context, name, fn);
+  };
+  llvm::BasicBlock* entry = block("entry");
+  llvm::BasicBlock* next = block("next");
+  llvm::BasicBlock* sub = block("m98");
+  llvm::BasicBlock* ret = block("m99");
+  llvm::BasicBlock* end = block("end");
+  llvm::IRBuilder<> b(entry);
+  attribute(m, fn, b, nullptr);
+  auto field = [&](llvm::Type* type, unsigned index) {
+    return b.CreateLoad(type, b.CreateStructGEP(abi.flow, flow, index));
+  };
+  auto i32 = [&](int v) { return llvm::ConstantInt::get(abi.i32, v); };
+  // NEXT, or after the M98 call: the M99 P of the subprogram, if any.
+  auto answerSeq = [&] {
+    b.CreateRet(
+        b.CreateSelect(b.CreateICmpNE(field(abi.i32, kFlowHasSeq), i32(0)),
+                       i32(kResumeSeq), i32(0)));
+  };
+  llvm::SwitchInst* sw = b.CreateSwitch(field(abi.i32, kFlowKind), next, 3);
+  sw->addCase(i32(MBRT_FLOW_CALL_SUB), sub);
+  sw->addCase(i32(MBRT_FLOW_RETURN), ret);
+  sw->addCase(i32(MBRT_FLOW_END), end);
+
+  b.SetInsertPoint(next);
+  answerSeq();
+
+  b.SetInsertPoint(sub);
+  llvm::Value* status = b.CreateCall(
+      m.dispatch, {ctx, b.CreateSIToFP(field(abi.i32, kFlowProgram), abi.f64),
+                   i32(0), llvm::ConstantPointerNull::get(abi.ptr),
+                   llvm::ConstantInt::get(abi.i64, 0),
+                   b.CreateSIToFP(field(abi.i64, kFlowRepeat), abi.f64), flow});
+  llvm::BasicBlock* called = block("called");
+  llvm::BasicBlock* failed = block("failed");
+  b.CreateCondBr(b.CreateICmpEQ(status, i32(0)), called, failed);
+  b.SetInsertPoint(failed);
+  b.CreateRet(status);
+  b.SetInsertPoint(called);
+  answerSeq();
+
+  // M99 in the main program ends a batch run (spec Part A).
+  b.SetInsertPoint(ret);
+  llvm::Value* depth = b.CreateCall(abi.fn(Rt::mbrt_call_depth), {ctx});
+  llvm::BasicBlock* inMain = block("main");
+  llvm::BasicBlock* inCall = block("call");
+  b.CreateCondBr(b.CreateICmpEQ(depth, i32(0)), inMain, inCall);
+  b.SetInsertPoint(inMain);
+  b.CreateCall(abi.fn(Rt::mbrt_finish), {ctx, i32(MBRT_END_MAIN_M99)});
+  b.CreateRet(i32(MBRT_STOP));
+  b.SetInsertPoint(inCall);
+  llvm::Value* leave = fn->getArg(2);
+  b.CreateStore(field(abi.i32, kFlowHasSeq),
+                b.CreateStructGEP(abi.flow, leave, kFlowHasSeq));
+  b.CreateStore(field(abi.f64, kFlowSeq),
+                b.CreateStructGEP(abi.flow, leave, kFlowSeq));
+  b.CreateRet(i32(kResumeLeave));
+
+  b.SetInsertPoint(end);
+  llvm::Value* counts = b.CreateICmpNE(field(abi.i32, kFlowCountsPart), i32(0));
+  b.CreateCall(abi.fn(Rt::mbrt_finish),
+               {ctx, b.CreateSelect(counts, i32(MBRT_END_M02_M30),
+                                    i32(MBRT_END_PROGRAM))});
+  b.CreateRet(i32(MBRT_STOP));
+  return fn;
+}
+
 llvm::GlobalVariable* emitTable(ModuleState& m) {
   const Abi& abi = m.abi;
   std::vector<llvm::Constant*> rows;
@@ -176,6 +257,7 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
     m.bodies.push_back(body);
   }
   m.dispatch = detail::emitDispatch(m);
+  m.resume = detail::emitResume(m);
   for (std::size_t i = 0; i < module.functions.size(); ++i) {
     detail::FunctionEmitter(m, module.functions[i], m.bodies[i]).emit();
   }

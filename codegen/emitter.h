@@ -1,8 +1,9 @@
 // Internals of IR -> LLVM IR emission (emit_module.h is the interface):
 // the module-wide state every function emitter shares, and the emitter of
 // one function. emit_control.cpp holds blocks, phis, terminators and
-// returns; emit_values.cpp arithmetic and comparisons; emit_effects.cpp
-// variables, NC blocks, calls and output.
+// returns; emit_transfers.cpp GOTO and M99 P by sequence number;
+// emit_values.cpp arithmetic and comparisons; emit_effects.cpp variables, NC
+// blocks, calls and output.
 #pragma once
 
 #include "codegen/abi.h"
@@ -19,6 +20,10 @@
 
 namespace mbc::codegen::detail {
 
+/// What mbc.resume answers besides 0 (go on), MBRT_STOP and alarms.
+inline constexpr int kResumeSeq = -2;   // M99 P from a subprogram: flow.seq
+inline constexpr int kResumeLeave = -3; // M99: the program returns (leave set)
+
 /// What every function emitter of a module shares.
 struct ModuleState {
   const ir::Module& ir;
@@ -26,6 +31,7 @@ struct ModuleState {
   const EmitOptions& options;
   std::vector<llvm::Function*> bodies; // by IR function index
   llvm::Function* dispatch = nullptr;  // mbc.call, see emit_module.cpp
+  llvm::Function* resume = nullptr;    // mbc.resume, see emit_module.cpp
   std::map<std::string, llvm::Constant*> strings;
   std::unique_ptr<DebugInfo> debug; // with EmitOptions::debugInfo only
 
@@ -52,12 +58,15 @@ private:
   void emitBlock(ir::BlockId b);
   void fillPhis();
   void emitTerminator(const ir::Inst& inst);
+  /// The input `phi` takes from IR block `pred` (nullptr: none).
+  llvm::Value* inputFrom(const ir::Inst& phi, ir::BlockId pred) const;
+
+  // Transfers by sequence number (emit_transfers.cpp).
   void emitResume(const ir::Inst& inst);
-  void emitSubCall(const ir::Inst& inst, llvm::Value* flow);
   void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
   void emitSwitch(const ir::Inst& inst);
-  void emitCaseSwitch(const ir::Inst& inst, llvm::Value* seq,
-                      std::size_t offset);
+  void finishLandings();
+  llvm::Value* landingInput(int landing, const ir::Inst& phi);
   void emitRet();
   void jump(ir::BlockId target);
   /// Goes on in a new block when `status` is 0, else leaves with it.
@@ -119,10 +128,27 @@ private:
   std::vector<llvm::Value*> values_;      // by ValueId
   std::vector<llvm::BasicBlock*> blocks_; // by IR block: its first block
 
+  /// An LLVM edge into an IR block: from an IR predecessor, or from a
+  /// landing (pred unused), which stands for all its sites.
   struct Edge {
     llvm::BasicBlock* from;
     ir::BlockId pred;
+    int landing = -1;
   };
+
+  /// The one M99 P dispatch of all resumes with the same case table: their
+  /// sites branch to `head` with the sequence number, so that the table is
+  /// emitted once per function, not once per call.
+  struct Landing {
+    const ir::Inst* resume; // one of them: its table
+    llvm::BasicBlock* head;
+    llvm::PHINode* seq;
+    std::vector<Edge> sites;
+    std::map<std::vector<llvm::Value*>, llvm::Value*> inputs; // landingInput
+  };
+
+  std::vector<Landing> landings_;
+  std::map<std::vector<std::int64_t>, int> landingOf_; // by cases + targets
 
   std::vector<std::vector<Edge>> incoming_; // by IR block
   ir::BlockId current_ = 0;

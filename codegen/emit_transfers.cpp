@@ -1,0 +1,162 @@
+// Emission of the transfers by sequence number: the computed GOTO, and the
+// resume after an NC block or a call (M98 through mbc.resume, M99 P back
+// into this program). Resumes share one landing per case table, so a
+// program with many calls and many N numbers gets code linear in their sum
+// (ir/evaluator.cpp's resume and jumpToSeq are the reference).
+#include "codegen/emitter.h"
+#include "ir/cfg.h"
+#include <mbc/runtime.h>
+
+#include <set>
+
+namespace mbc::codegen::detail {
+
+// Computed GOTO (evaluator switchTo): a number outside 1..99999 or without
+// an N is PS0128, worded by the runtime.
+void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
+  llvm::Value* target = numOperand(inst, 0);
+  llvm::Value* n = roundHalfAway(target);
+  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
+                                      b_.CreateFCmpOLE(n, constant(99999)));
+  llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
+                                     llvm::ConstantInt::get(abi_.i32, 0));
+  llvm::BasicBlock* missing = newBlock("badgoto");
+  llvm::SwitchInst* sw =
+      b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
+  std::set<std::int64_t> seen;
+  for (std::size_t i = 0; i < inst.cases.size() && i < inst.targets.size();
+       ++i) {
+    if (seen.insert(inst.cases[i]).second) {
+      sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
+                  blocks_[inst.targets[i]]);
+      incoming_[inst.targets[i]].push_back({sw->getParent(), current_});
+    }
+  }
+  b_.SetInsertPoint(missing);
+  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
+                      {ctx_, m_.cstring("GOTO "), target, name_}));
+}
+
+// M99 P back into this program: to the landing of this resume's case table
+// (an empty table can only raise PS0128).
+void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
+  if (inst.cases.empty()) {
+    leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
+                        {ctx_, m_.cstring("M99 P"), seq, name_}));
+    return;
+  }
+  std::vector<std::int64_t> key = inst.cases;
+  key.insert(key.end(), inst.targets.begin() + 1, inst.targets.end());
+  auto [it, added] =
+      landingOf_.emplace(std::move(key), static_cast<int>(landings_.size()));
+  if (added) {
+    Landing l{&inst, newBlock("m99p"), nullptr, {}, {}};
+    llvm::IRBuilder<> head(l.head);
+    l.seq = head.CreatePHI(abi_.f64, 2, "seq");
+    landings_.push_back(std::move(l));
+  }
+  Landing& l = landings_[static_cast<std::size_t>(it->second)];
+  l.seq->addIncoming(seq, b_.GetInsertBlock());
+  l.sites.push_back({b_.GetInsertBlock(), current_});
+  b_.CreateBr(l.head);
+}
+
+// A landing's table: cases[i] goes to targets[i + 1]; any other number is
+// PS0128 ("M99 P..." outside 1..99999, "N.. not found" inside).
+void FunctionEmitter::finishLandings() {
+  for (std::size_t k = 0; k < landings_.size(); ++k) {
+    Landing& l = landings_[k];
+    const ir::Inst& inst = *l.resume;
+    b_.SetInsertPoint(l.head);
+    llvm::Value* n = roundHalfAway(l.seq);
+    llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
+                                        b_.CreateFCmpOLE(n, constant(99999)));
+    llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
+                                       llvm::ConstantInt::get(abi_.i32, 0));
+    llvm::BasicBlock* missing = newBlock("noseq");
+    llvm::SwitchInst* sw =
+        b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
+    std::set<std::int64_t> seen;
+    for (std::size_t i = 0; i < inst.cases.size(); ++i) {
+      if (i + 1 >= inst.targets.size() || !seen.insert(inst.cases[i]).second) {
+        continue;
+      }
+      ir::BlockId target = inst.targets[i + 1];
+      sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
+                  blocks_[target]);
+      incoming_[target].push_back({l.head, ir::kNoBlock, static_cast<int>(k)});
+    }
+    b_.SetInsertPoint(missing);
+    leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
+                        {ctx_, m_.cstring("M99 P"), l.seq, name_}));
+  }
+}
+
+// What a phi of a target block takes from a landing: the input of each
+// site's IR block, through a phi in the landing when the sites differ (one
+// per distinct set of inputs, shared by all the phis that have it).
+llvm::Value* FunctionEmitter::landingInput(int landing, const ir::Inst& phi) {
+  Landing& l = landings_[static_cast<std::size_t>(landing)];
+  std::vector<llvm::Value*> inputs;
+  for (const Edge& site : l.sites) {
+    inputs.push_back(inputFrom(phi, site.pred));
+  }
+  auto it = l.inputs.find(inputs);
+  if (it != l.inputs.end()) {
+    return it->second;
+  }
+  llvm::Value* joined = inputs.empty() ? nullptr : inputs[0];
+  bool same = true;
+  for (llvm::Value* v : inputs) {
+    same = same && v == joined;
+  }
+  if (!same) {
+    llvm::IRBuilder<> head(l.head, l.head->getFirstInsertionPt());
+    llvm::PHINode* p =
+        head.CreatePHI(abi_.f64, static_cast<unsigned>(inputs.size()));
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      p->addIncoming(inputs[i], l.sites[i].from);
+    }
+    joined = p;
+  }
+  l.inputs.emplace(std::move(inputs), joined);
+  return joined;
+}
+
+// What an NC block or a call asks for next. A call's flow is NEXT, with
+// has_seq for M99 P; an NC block's goes to mbc.resume, which makes the M98
+// call, finishes the run or prepares this program's return.
+void FunctionEmitter::emitResume(const ir::Inst& inst) {
+  llvm::Value* flow = values_[inst.ops[0]];
+  if (fn_.insts[inst.ops[0]].op == ir::Op::CallMacro) {
+    llvm::BasicBlock* plain =
+        splitIf(b_.CreateICmpNE(b_.CreateExtractValue(flow, kFlowHasSeq),
+                                llvm::ConstantInt::get(abi_.i32, 0)),
+                false);
+    jumpToSeq(inst, b_.CreateExtractValue(flow, kFlowSeq));
+    b_.SetInsertPoint(plain);
+    jump(inst.targets[0]);
+    return;
+  }
+  b_.CreateStore(flow, flowSlot_);
+  llvm::Value* r = b_.CreateCall(m_.resume, {ctx_, flowSlot_, leave_});
+  llvm::BasicBlock* next = newBlock("next");
+  llvm::BasicBlock* seq = newBlock("m99p");
+  llvm::BasicBlock* ret = newBlock("m99");
+  llvm::BasicBlock* other = newBlock("stop");
+  llvm::SwitchInst* sw = b_.CreateSwitch(r, other, 3);
+  sw->addCase(llvm::ConstantInt::get(abi_.i32, 0), next);
+  sw->addCase(llvm::ConstantInt::get(abi_.i32, kResumeSeq), seq);
+  sw->addCase(llvm::ConstantInt::get(abi_.i32, kResumeLeave), ret);
+  b_.SetInsertPoint(next);
+  jump(inst.targets[0]);
+  b_.SetInsertPoint(seq);
+  jumpToSeq(inst, b_.CreateLoad(abi_.f64, b_.CreateStructGEP(
+                                              abi_.flow, flowSlot_, kFlowSeq)));
+  b_.SetInsertPoint(ret);
+  leave(llvm::ConstantInt::get(abi_.i32, 0));
+  b_.SetInsertPoint(other);
+  leave(r);
+}
+
+} // namespace mbc::codegen::detail
