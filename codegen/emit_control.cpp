@@ -94,6 +94,7 @@ void FunctionEmitter::emitPrologue() {
   name_ = m_.cstring(fn_.name);
   flowSlot_ = b_.CreateAlloca(abi_.flow, nullptr, "flow");
   outSlot_ = b_.CreateAlloca(abi_.f64, nullptr, "out");
+  retSeqSlot_ = b_.CreateAlloca(abi_.f64, nullptr, "retseq");
 }
 
 void FunctionEmitter::emitBlock(ir::BlockId b) {

@@ -13,6 +13,9 @@ namespace mbc::codegen {
 
 namespace detail {
 
+/// IR instructions in a program beyond which its body is not optimised.
+constexpr std::size_t kOptimizedSizeLimit = 3000;
+
 llvm::Constant* ModuleState::cstring(const std::string& text) {
   auto it = strings.find(text);
   if (it != strings.end()) {
@@ -56,6 +59,9 @@ llvm::Function* emitDispatch(ModuleState& m) {
   auto* fn = llvm::Function::Create(type, llvm::GlobalValue::InternalLinkage,
                                     "mbc.call", abi.module);
   fn->addFnAttr(llvm::Attribute::NoUnwind);
+  // A call costs a new call level in the runtime anyway; inlined at every
+  // G65 the dispatcher only made the optimiser's work grow with the calls.
+  fn->addFnAttr(llvm::Attribute::NoInline);
   llvm::Value* ctx = fn->getArg(0);
   llvm::Value* p = fn->getArg(1);
   auto* entry = llvm::BasicBlock::Create(abi.context, "entry", fn);
@@ -260,6 +266,14 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
   m.resume = detail::emitResume(m);
   for (std::size_t i = 0; i < module.functions.size(); ++i) {
     detail::FunctionEmitter(m, module.functions[i], m.bodies[i]).emit();
+    // LLVM's loop and value passes grow faster than linearly on one huge
+    // function (a long part program: thousands of NC blocks that M99 P
+    // landings make one loop), so such a body is compiled as at -O0; its
+    // time goes to the runtime's NC blocks anyway.
+    if (module.functions[i].insts.size() > detail::kOptimizedSizeLimit) {
+      m.bodies[i]->addFnAttr(llvm::Attribute::OptimizeNone);
+      m.bodies[i]->addFnAttr(llvm::Attribute::NoInline);
+    }
   }
   llvm::GlobalVariable* programs = detail::emitTable(m);
   if (options.entryPoints) {

@@ -11,8 +11,8 @@
 
 namespace mbc::codegen::detail {
 
-// Computed GOTO (evaluator switchTo): a number outside 1..99999 or without
-// an N is PS0128, worded by the runtime.
+// Computed GOTO (evaluator switchTo), and the switch of an M99 P landing: a
+// number outside 1..99999 or without an N is PS0128, worded by the runtime.
 void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
   llvm::Value* target = numOperand(inst, 0);
   llvm::Value* n = roundHalfAway(target);
@@ -33,13 +33,21 @@ void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
     }
   }
   b_.SetInsertPoint(missing);
-  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
-                      {ctx_, m_.cstring("GOTO "), target, name_}));
+  bool landing = fn_.insts[inst.ops[0]].op == ir::Op::RetSeq;
+  leave(b_.CreateCall(
+      abi_.fn(Rt::mbrt_raise_sequence),
+      {ctx_, m_.cstring(landing ? "M99 P" : "GOTO "), target, name_}));
 }
 
-// M99 P back into this program: to the landing of this resume's case table
-// (an empty table can only raise PS0128).
+// M99 P back into this program: to the IR's landing block (its retseq
+// reads the number), or to the landing of this resume's case table (an
+// empty table can only raise PS0128).
 void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
+  if (inst.cases.empty() && inst.targets.size() == 2) {
+    b_.CreateStore(seq, retSeqSlot_);
+    jump(inst.targets[1]);
+    return;
+  }
   if (inst.cases.empty()) {
     leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
                         {ctx_, m_.cstring("M99 P"), seq, name_}));

@@ -105,6 +105,8 @@ llvm::Value* FunctionEmitter::emitValue(const ir::Inst& inst) {
       return b_.CreateOr(values_[inst.ops[0]], values_[inst.ops[1]]);
     case ir::Op::LogXor:
       return b_.CreateXor(values_[inst.ops[0]], values_[inst.ops[1]]);
+    case ir::Op::RetSeq:
+      return b_.CreateLoad(abi_.f64, retSeqSlot_);
     case ir::Op::BlockSkip:
       return b_.CreateICmpNE(
           b_.CreateCall(abi_.fn(Rt::mbrt_skip_switch),

@@ -164,6 +164,7 @@ private:
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;
   llvm::Value* outSlot_ = nullptr;
+  llvm::Value* retSeqSlot_ = nullptr; // what retseq reads
   std::map<llvm::Type*, std::pair<llvm::AllocaInst*, std::size_t>> scratch_;
 };
 

@@ -102,7 +102,6 @@ std::unique_ptr<Jit> Jit::compile(const ir::Module& module,
     error = message(builder.takeError());
     return nullptr;
   }
-  builder->setCodeGenOptLevel(codeGenLevel(optLevel));
   auto tm = builder->createTargetMachine();
   if (!tm) {
     error = message(tm.takeError());
@@ -119,6 +118,7 @@ std::unique_ptr<Jit> Jit::compile(const ir::Module& module,
     return nullptr;
   }
   optimize(*m, **tm, optLevel);
+  builder->setCodeGenOptLevel(codeGenLevel(optLevel, *m));
 
   llvm::orc::LLJITBuilder jitBuilder;
   jitBuilder.setJITTargetMachineBuilder(*builder);

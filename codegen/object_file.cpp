@@ -57,7 +57,7 @@ std::unique_ptr<llvm::TargetMachine> hostTarget(const ObjectOptions& o,
   }
   std::unique_ptr<llvm::TargetMachine> tm(target->createTargetMachine(
       triple, cpu, features, llvm::TargetOptions(), llvm::Reloc::PIC_, {},
-      codeGenLevel(o.optLevel)));
+      llvm::CodeGenOpt::Default));
   if (!tm) {
     error = "cannot create a target machine for " + triple + " " + cpu;
   }
@@ -97,6 +97,7 @@ bool writeCompiled(const ir::Module& module, const ObjectOptions& options,
     return false;
   }
   optimize(*m, *tm, options.optLevel);
+  tm->setOptLevel(codeGenLevel(options.optLevel, *m));
   if (path == "-") {
     llvm::raw_fd_ostream& out = llvm::outs();
     return emitTo(*m, *tm, kind, out, error);

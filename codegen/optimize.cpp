@@ -3,6 +3,7 @@
 
 #include <llvm/Config/llvm-config.h>
 #include <llvm/Passes/PassBuilder.h>
+#include <llvm/Passes/StandardInstrumentations.h>
 
 namespace mbc::codegen {
 
@@ -28,7 +29,12 @@ llvm::OptimizationLevel passLevel(int level) {
 
 } // namespace
 
-llvm::CodeGenOpt::Level codeGenLevel(int level) {
+llvm::CodeGenOpt::Level codeGenLevel(int level, const llvm::Module& module) {
+  for (const llvm::Function& f : module) {
+    if (f.hasFnAttribute(llvm::Attribute::OptimizeNone)) {
+      return llvm::CodeGenOpt::None;
+    }
+  }
   switch (level) {
     case 0:
       return llvm::CodeGenOpt::None;
@@ -46,7 +52,17 @@ void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level) {
   llvm::FunctionAnalysisManager fam;
   llvm::CGSCCAnalysisManager cgam;
   llvm::ModuleAnalysisManager mam;
-  llvm::PassBuilder pb(&tm);
+  // The standard instrumentation is what makes passes skip functions
+  // marked optnone (emit_module.cpp marks the huge ones).
+  llvm::PassInstrumentationCallbacks pic;
+#if LLVM_VERSION_MAJOR >= 17
+  llvm::StandardInstrumentations si(module.getContext(), false);
+  si.registerCallbacks(pic, &mam);
+#else
+  llvm::StandardInstrumentations si(false);
+  si.registerCallbacks(pic, &fam);
+#endif
+  llvm::PassBuilder pb(&tm, llvm::PipelineTuningOptions(), {}, &pic);
   pb.registerModuleAnalyses(mam);
   pb.registerCGSCCAnalyses(cgam);
   pb.registerFunctionAnalyses(fam);

@@ -9,7 +9,10 @@ namespace mbc::codegen {
 /// Runs the default per-module pipeline for `level` (0..3) tuned for `tm`.
 void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level);
 
-/// The code generator's optimisation level for `level` (0..3).
-llvm::CodeGenOpt::Level codeGenLevel(int level);
+/// The code generator's optimisation level for `level` (0..3), or None
+/// when the module has a body too big to optimise (see emit_module.cpp):
+/// the register allocator of the higher levels grows faster than linearly
+/// on it.
+llvm::CodeGenOpt::Level codeGenLevel(int level, const llvm::Module& module);
 
 } // namespace mbc::codegen

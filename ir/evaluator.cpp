@@ -143,8 +143,10 @@ mbrt_status Evaluator::terminate(const Function& fn, Frame& frame, int depth,
     case Op::CondBr:
       next = frame.values[inst.ops[0]] != 0 ? inst.targets[0] : inst.targets[1];
       return 0;
-    case Op::Switch:
-      return switchTo(fn, inst, frame.values[inst.ops[0]], next);
+    case Op::Switch: // a landing's switch words its alarm as M99 P does
+      return switchTo(
+          fn, inst, frame.values[inst.ops[0]],
+          fn.insts[inst.ops[0]].op == Op::RetSeq ? "M99 P" : "GOTO ", next);
     case Op::Resume:
       return resume(fn, frame, depth, inst, next);
     case Op::Ret:
@@ -163,15 +165,27 @@ mbrt_status Evaluator::terminate(const Function& fn, Frame& frame, int depth,
   }
 }
 
-// Computed GOTO (interp execGoto/jumpTo).
+// Computed GOTO (interp execGoto/jumpTo), and a landing's M99 P.
 mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
-                                double value, BlockId& next) {
+                                double value, const char* jump, BlockId& next) {
   double target = numeric(value);
   double n = roundHalfAway(target);
   if (n < 1 || n > 99999) {
-    return mbrt_raise_sequence(ctx_, "GOTO ", target, fn.name.c_str());
+    return mbrt_raise_sequence(ctx_, jump, target, fn.name.c_str());
   }
   return caseTarget(fn, inst, static_cast<int>(n), 0, next);
+}
+
+// M99 P back into this activation: to the landing, or through the
+// resume's own case table.
+mbrt_status Evaluator::resumeAt(const Function& fn, Frame& frame,
+                                const Inst& inst, double seq, BlockId& next) {
+  if (inst.cases.empty() && inst.targets.size() == 2) {
+    frame.retSeq = seq;
+    next = inst.targets[1];
+    return 0;
+  }
+  return jumpToSeq(fn, inst, seq, next);
 }
 
 // M99 P from a callee: resume at that N of this function (interp leave).
@@ -203,7 +217,7 @@ mbrt_status Evaluator::resume(const Function& fn, Frame& frame, int depth,
     return resumeNc(fn, frame, depth, inst, next);
   }
   if (rec.flow.has_seq) {
-    return jumpToSeq(fn, inst, rec.flow.seq, next);
+    return resumeAt(fn, frame, inst, rec.flow.seq, next);
   }
   next = inst.targets[0];
   return 0;
@@ -225,7 +239,7 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
         return st;
       }
       if (out.flow.has_seq) {
-        return jumpToSeq(fn, inst, out.flow.seq, next);
+        return resumeAt(fn, frame, inst, out.flow.seq, next);
       }
       next = inst.targets[0];
       return 0;

@@ -31,6 +31,7 @@ struct Frame {
   std::vector<mbrt_word> args; // call.macro arguments, kept over the repeats
   bool hasSeq = false;         // how the activation left: M99 P seq
   double seq = 0;
+  double retSeq = 0; // the N an M99 P into this activation asked for
 };
 
 class Evaluator {
@@ -54,7 +55,9 @@ private:
   mbrt_status resumeNc(const Function& fn, Frame& frame, int depth,
                        const Inst& inst, BlockId& next);
   mbrt_status switchTo(const Function& fn, const Inst& inst, double value,
-                       BlockId& next);
+                       const char* jump, BlockId& next);
+  mbrt_status resumeAt(const Function& fn, Frame& frame, const Inst& inst,
+                       double seq, BlockId& next);
   mbrt_status jumpToSeq(const Function& fn, const Inst& inst, double seq,
                         BlockId& next);
   mbrt_status caseTarget(const Function& fn, const Inst& inst, int seq,

@@ -126,6 +126,9 @@ mbrt_status Evaluator::execLogic(const Inst& inst, Frame& frame, ValueId id) {
     case Op::LogXor:
       v[id] = truth((v[inst.ops[0]] != 0) != (v[inst.ops[1]] != 0));
       return 0;
+    case Op::RetSeq:
+      v[id] = frame.retSeq;
+      return 0;
     case Op::BlockSkip:
       v[id] = truth(mbrt_skip_switch(ctx_, static_cast<int>(inst.attr)) != 0);
       return 0;

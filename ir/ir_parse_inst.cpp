@@ -252,7 +252,11 @@ void OperandParser::parse() {
       inst_.ops.push_back(c_.value());
       c_.expect(',');
       inst_.targets.push_back(c_.block());
-      caseTable();
+      if (c_.accept(',')) {
+        inst_.targets.push_back(c_.block()); // the M99 P landing
+      } else {
+        caseTable();
+      }
       return;
     default:
       valueList();

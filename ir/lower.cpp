@@ -7,6 +7,7 @@
 #include "frontend/sema.h"
 #include "frontend/trace_text.h"
 
+#include <map>
 #include <set>
 
 namespace mbc::ir {
@@ -37,6 +38,7 @@ private:
   void lowerPrint(const Stmt& s);
   void resumeAfter(ValueId flow, int index);
   void addSequenceTable(Inst& inst, int from);
+  BlockId landing(int from);
   ValueId lowerExpr(const Expr& e, char roundLetter = 0);
   ValueId lowerNum(const Expr& e, char roundLetter = 0);
   ValueId lowerCall(const Expr& e, char roundLetter);
@@ -51,7 +53,11 @@ private:
   std::vector<BlockId> heads_; // head block of each source block, + exit
   BlockId cur_ = 0;
   std::uint32_t line_ = 0;
-  std::set<int> sequences_; // every N of the program
+  std::set<int> sequences_;          // every N of the program
+  std::map<int, int> sequenceBlock_; // N -> its (first) block
+  bool repeatedSequence_ = false;    // some N numbers two blocks
+  // The M99 P landings: one per distinct table (one unless N numbers repeat).
+  std::map<std::vector<BlockId>, BlockId> landings_;
 };
 
 BlockId FunctionLowering::newBlock() {
@@ -96,9 +102,13 @@ ValueId FunctionLowering::constant(double v) {
 
 void FunctionLowering::run() {
   auto n = static_cast<int>(program_.blocks.size());
-  for (const mbc::Block& b : program_.blocks) {
-    if (b.seq >= 0) {
-      sequences_.insert(b.seq);
+  for (int i = 0; i < n; ++i) {
+    int seq = program_.blocks[i].seq;
+    if (seq >= 0 && !sequences_.insert(seq).second) {
+      repeatedSequence_ = true;
+    }
+    if (seq >= 0) {
+      sequenceBlock_.emplace(seq, i);
     }
   }
   // The entry block has no predecessor, so that a GOTO to the first block
@@ -264,16 +274,51 @@ void FunctionLowering::lowerGoto(const Stmt& s, int index) {
   addSequenceTable(fn_.insts.back(), index);
 }
 
+// Where each N sends a jump from block `from`. Only a repeated N makes the
+// answer depend on `from` (the search goes forward from there).
 void FunctionLowering::addSequenceTable(Inst& inst, int from) {
   for (int seq : sequences_) {
+    int block = repeatedSequence_ ? findSequence(program_, seq, from)
+                                  : sequenceBlock_.at(seq);
     inst.cases.push_back(seq);
-    inst.targets.push_back(head(findSequence(program_, seq, from)));
+    inst.targets.push_back(head(block));
   }
 }
 
+// A call or an NC block goes on with the next block, or, when the callee
+// leaves by M99 P, at the landing that switches on the sequence number: one
+// table per program rather than one per call keeps the IR linear in the
+// number of calls and N numbers.
 void FunctionLowering::resumeAfter(ValueId flow, int index) {
-  terminate(Op::Resume, {head(index + 1)}, {flow});
-  addSequenceTable(fn_.insts.back(), index);
+  std::vector<BlockId> targets{head(index + 1)};
+  if (!sequences_.empty()) {
+    targets.push_back(landing(index));
+  }
+  terminate(Op::Resume, std::move(targets), {flow});
+}
+
+BlockId FunctionLowering::landing(int from) {
+  if (!repeatedSequence_ && !landings_.empty()) {
+    return landings_.begin()->second; // the one table every resume shares
+  }
+  Inst table;
+  addSequenceTable(table, from);
+  auto it = landings_.find(table.targets);
+  if (it != landings_.end()) {
+    return it->second;
+  }
+  BlockId saved = cur_;
+  std::uint32_t savedLine = line_;
+  BlockId land = newBlock();
+  cur_ = land;
+  ValueId seq = emit(Op::RetSeq);
+  terminate(Op::Switch, {}, {seq});
+  fn_.insts.back().cases = table.cases;
+  fn_.insts.back().targets = table.targets;
+  landings_.emplace(std::move(table.targets), land);
+  cur_ = saved;
+  line_ = savedLine;
+  return land;
 }
 
 void FunctionLowering::lowerWords(const std::vector<Word>& words, Inst& into,

@@ -224,7 +224,12 @@ void OperandPrinter::print() {
       operand(0);
       out_ += ", ";
       target(0);
-      caseTable(1);
+      if (inst_.cases.empty() && inst_.targets.size() == 2) {
+        out_ += ", ";
+        target(1); // the M99 P landing
+      } else {
+        caseTable(1);
+      }
       return;
     default:
       valueList(0);

@@ -90,8 +90,10 @@ std::size_t expectedTargets(const Inst& inst) {
       return 2;
     case Op::Switch:
       return inst.cases.size();
-    case Op::Resume:
-      return inst.cases.size() + 1; // NEXT, then one per case
+    case Op::Resume: // NEXT, then the M99 P landing or one per case
+      return inst.cases.empty() && inst.targets.size() == 2
+                 ? 2
+                 : inst.cases.size() + 1;
     case Op::Phi:
       return inst.ops.size();
     default:
@@ -132,6 +134,7 @@ private:
   void checkDominance(BlockId b, std::uint32_t index, ValueId id,
                       const Inst& inst, std::size_t i);
   void checkPhiInputs(BlockId b, ValueId id, const Inst& inst);
+  void checkLanding(BlockId b, ValueId id);
 
   const Module& module_;
   const Function& f_;
@@ -235,6 +238,40 @@ void FunctionVerifier::checkInst(BlockId b, std::uint32_t index, ValueId id) {
   checkOperands(b, index, id, inst);
   if (inst.op == Op::Phi) {
     checkPhiInputs(b, id, inst);
+  }
+  if (inst.op == Op::RetSeq) {
+    checkLanding(b, id);
+  }
+}
+
+// retseq reads the sequence number of the M99 P that entered its block, so
+// every way into the block must come from a resume's landing edge, maybe
+// through blocks that only branch on (mem2ssa's landing pads).
+void FunctionVerifier::checkLanding(BlockId b, ValueId id) {
+  std::vector<bool> seen(f_.blocks.size(), false);
+  std::vector<BlockId> work{b};
+  while (!work.empty()) {
+    BlockId into = work.back();
+    work.pop_back();
+    for (BlockId p : cfg_.preds[into]) {
+      const std::vector<ValueId>& ids = f_.blocks[p].insts;
+      const Inst* term = ids.empty() ? nullptr : &f_.insts[ids.back()];
+      if (term != nullptr && term->op == Op::Resume && term->cases.empty() &&
+          term->targets.size() == 2 && term->targets[1] == into &&
+          term->targets[0] != into) {
+        continue;
+      }
+      if (term != nullptr && term->op == Op::Br && p != b) {
+        if (!seen[p]) {
+          seen[p] = true;
+          work.push_back(p);
+        }
+        continue;
+      }
+      fail(b, id,
+           fmt::format("b{} enters b{} other than by an M99 P landing edge", p,
+                       into));
+    }
   }
 }
 

@@ -25,7 +25,7 @@ void simplifyBranches(Function& f) {
 void pruneResumeCases(Function& f) {
   for (BlockId b = 0; b < f.blocks.size(); ++b) {
     Inst& term = f.insts[terminatorOf(f, b)];
-    if (term.op != Op::Resume || term.cases.empty()) {
+    if (term.op != Op::Resume || term.targets.size() < 2) {
       continue;
     }
     const Inst& flow = f.insts[term.ops[0]];

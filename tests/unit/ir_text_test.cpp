@@ -67,10 +67,13 @@ b0:
   %1 = const 0.25
   %2 = const 2
   %3 = call.macro %1, %2
-  resume %3, b1 []
+  resume %3, b1, b2
 b1:
   begin 3
   ret
+b2:
+  %4 = retseq
+  switch %4 [3: b1]
 }
 )mbir";
 

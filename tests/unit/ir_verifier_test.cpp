@@ -49,6 +49,45 @@ TEST(IrVerifier, AcceptsLoopWithPhiAndUnreachableBlock) {
   EXPECT_EQ(verifyText(kLoop), Messages{});
 }
 
+// retseq reads the N of the M99 P that entered its block: only landing
+// edges (maybe through a pad that branches on) may enter it.
+TEST(IrVerifier, RetseqOnlyBehindLandingEdges) {
+  EXPECT_EQ(verifyText(R"mbir(func @O1 #1 "" {
+b0:
+  %0 = const 2
+  %1 = call.macro %0, %0
+  resume %1, b1, b3
+b1:
+  %2 = nc
+  resume %2, b2, b4
+b2:
+  ret
+b3:
+  br b4
+b4:
+  %3 = retseq
+  switch %3 [5: b2]
+}
+)mbir"),
+            Messages{});
+  Messages m = verifyText(R"mbir(func @O1 #1 "" {
+b0:
+  %0 = const 2
+  %1 = call.macro %0, %0
+  resume %1, b2, b2
+b1:
+  ret
+b2:
+  %3 = retseq
+  switch %3 [5: b1]
+}
+)mbir");
+  ASSERT_EQ(m.size(), 1U);
+  EXPECT_NE(m[0].find("b0 enters b2 other than by an M99 P landing edge"),
+            std::string::npos)
+      << m[0];
+}
+
 TEST(IrVerifier, AcceptsSwitchCasesSharingABlock) {
   EXPECT_EQ(verifyText(R"mbir(func @O1 "" {
 b0:

@@ -14,17 +14,15 @@ M30
 ; CHECK-LABEL: func @MAIN
 ; CHECK: [[M:%[0-9]+]] = mul
 ; CHECK: fn SQRT
-; CHECK: b2:
-; CHECK-NEXT: begin 12
+; CHECK: fn SQRT
+; CHECK: begin 12
 ; CHECK-NEXT: [[L:%[0-9]+]] = ldvar #101
 ; CHECK-NEXT: [[T:%[0-9]+]] = tonum [[L]]{{$}}
 ; CHECK-NEXT: [[S:%[0-9]+]] = add [[T]], [[M]]{{$}}
 ; CHECK-NEXT: [[SQ:%[0-9]+]] = mul [[S]], [[S]]{{$}}
 ; CHECK-NEXT: add [[M]], [[SQ]]{{$}}
-; CHECK: fn SQRT
 ; OFF-LABEL: func @MAIN
-; OFF: b2:
-; OFF-NEXT: begin 12
+; OFF: begin 12
 ; OFF-NEXT: tonum
 ; OFF-NEXT: const 2
 ; OFF-NEXT: mul
