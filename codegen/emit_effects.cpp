@@ -167,30 +167,34 @@ IndirectCases classify(llvm::IRBuilder<>& b, const Abi& abi, llvm::Value* x) {
 } // namespace
 
 // #[x]: locals and commons inline, every other number through the runtime
-// (which rounds and range-checks it again).
-llvm::Value* FunctionEmitter::emitLoadIndirect(llvm::Value* x) {
+// (which rounds and range-checks it again). Each way gives the value of a
+// load, or nullptr for a store.
+llvm::Value* FunctionEmitter::indirect(llvm::Value* x,
+                                       const IndirectWays& ways) {
   IndirectCases c = classify(b_, abi_, x);
-  llvm::BasicBlock* local = newBlock("ldlocal");
-  llvm::BasicBlock* other = newBlock("ldother");
-  llvm::BasicBlock* common = newBlock("ldcommon");
-  llvm::BasicBlock* slow = newBlock("ldslow");
-  llvm::BasicBlock* done = newBlock("ld");
+  llvm::BasicBlock* local = newBlock("local");
+  llvm::BasicBlock* other = newBlock("other");
+  llvm::BasicBlock* common = newBlock("common");
+  llvm::BasicBlock* slow = newBlock("runtime");
+  llvm::BasicBlock* done = newBlock("var");
   b_.CreateCondBr(c.isLocal, local, other);
   b_.SetInsertPoint(local);
-  llvm::Value* fromLocal = b_.CreateLoad(
-      abi_.f64,
-      localSlot(b_.CreateSub(c.n, llvm::ConstantInt::get(abi_.i64, 1))));
+  llvm::Value* fromLocal =
+      ways.local(b_.CreateSub(c.n, llvm::ConstantInt::get(abi_.i64, 1)));
   b_.CreateBr(done);
   b_.SetInsertPoint(other);
   b_.CreateCondBr(c.isCommon, common, slow);
   b_.SetInsertPoint(common);
-  llvm::Value* fromCommon = b_.CreateLoad(abi_.f64, commonSlot(c.n));
+  llvm::Value* fromCommon = ways.common(c.n);
   b_.CreateBr(done);
   b_.SetInsertPoint(slow);
-  llvm::Value* fromRuntime = callStatusOut(Rt::mbrt_read_var, {ctx_, x});
+  llvm::Value* fromRuntime = ways.runtime();
   llvm::BasicBlock* slowEnd = b_.GetInsertBlock();
   b_.CreateBr(done);
   b_.SetInsertPoint(done);
+  if (fromLocal == nullptr) {
+    return nullptr;
+  }
   llvm::PHINode* v = b_.CreatePHI(abi_.f64, 3);
   v->addIncoming(fromLocal, local);
   v->addIncoming(fromCommon, common);
@@ -198,30 +202,34 @@ llvm::Value* FunctionEmitter::emitLoadIndirect(llvm::Value* x) {
   return v;
 }
 
+llvm::Value* FunctionEmitter::emitLoadIndirect(llvm::Value* x) {
+  return indirect(x, {[&](llvm::Value* index) {
+                        return b_.CreateLoad(abi_.f64, localSlot(index));
+                      },
+                      [&](llvm::Value* n) {
+                        return b_.CreateLoad(abi_.f64, commonSlot(n));
+                      },
+                      [&] {
+                        return callStatusOut(Rt::mbrt_read_var, {ctx_, x});
+                      }});
+}
+
 void FunctionEmitter::emitStoreIndirect(const ir::Inst& inst, llvm::Value* x,
                                         llvm::Value* value) {
-  IndirectCases c = classify(b_, abi_, x);
-  llvm::BasicBlock* local = newBlock("stlocal");
-  llvm::BasicBlock* other = newBlock("stother");
-  llvm::BasicBlock* common = newBlock("stcommon");
-  llvm::BasicBlock* slow = newBlock("stslow");
-  llvm::BasicBlock* done = newBlock("st");
-  b_.CreateCondBr(c.isLocal, local, other);
-  b_.SetInsertPoint(local);
-  llvm::Value* index = b_.CreateSub(c.n, llvm::ConstantInt::get(abi_.i64, 1));
-  b_.CreateStore(value, localSlot(index));
-  clearAdp(index);
-  b_.CreateBr(done);
-  b_.SetInsertPoint(other);
-  b_.CreateCondBr(c.isCommon, common, slow);
-  b_.SetInsertPoint(common);
-  b_.CreateStore(value, commonSlot(c.n));
-  b_.CreateBr(done);
-  b_.SetInsertPoint(slow);
-  check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
-                      {ctx_, x, value, message(inst)}));
-  b_.CreateBr(done);
-  b_.SetInsertPoint(done);
+  indirect(x, {[&](llvm::Value* index) -> llvm::Value* {
+                 b_.CreateStore(value, localSlot(index));
+                 clearAdp(index);
+                 return nullptr;
+               },
+               [&](llvm::Value* n) -> llvm::Value* {
+                 b_.CreateStore(value, commonSlot(n));
+                 return nullptr;
+               },
+               [&]() -> llvm::Value* {
+                 check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
+                                     {ctx_, x, value, message(inst)}));
+                 return nullptr;
+               }});
 }
 
 // One buffer per struct type serves every statement of the function: the

@@ -15,28 +15,39 @@ namespace mbc::codegen::detail {
 // number outside 1..99999 or without an N is PS0128, worded by the runtime.
 void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
   llvm::Value* target = numOperand(inst, 0);
-  llvm::Value* n = roundHalfAway(target);
-  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
-                                      b_.CreateFCmpOLE(n, constant(99999)));
-  llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
-                                     llvm::ConstantInt::get(abi_.i32, 0));
-  llvm::BasicBlock* missing = newBlock("badgoto");
-  llvm::SwitchInst* sw =
-      b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
-  std::set<std::int64_t> seen;
-  for (std::size_t i = 0; i < inst.cases.size() && i < inst.targets.size();
-       ++i) {
-    if (seen.insert(inst.cases[i]).second) {
-      sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
-                  blocks_[inst.targets[i]]);
-      incoming_[inst.targets[i]].push_back({sw->getParent(), current_});
-    }
-  }
-  b_.SetInsertPoint(missing);
+  switchOnSequence(inst, target, 0, {nullptr, current_});
   bool landing = fn_.insts[inst.ops[0]].op == ir::Op::RetSeq;
   leave(b_.CreateCall(
       abi_.fn(Rt::mbrt_raise_sequence),
       {ctx_, m_.cstring(landing ? "M99 P" : "GOTO "), target, name_}));
+}
+
+llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
+                                                    llvm::Value* number,
+                                                    std::size_t offset,
+                                                    Edge edge) {
+  llvm::Value* n = roundHalfAway(number);
+  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
+                                      b_.CreateFCmpOLE(n, constant(99999)));
+  llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
+                                     llvm::ConstantInt::get(abi_.i32, 0));
+  llvm::BasicBlock* missing = newBlock("noseq");
+  llvm::SwitchInst* sw =
+      b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
+  edge.from = sw->getParent();
+  std::set<std::int64_t> seen;
+  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
+    if (i + offset >= inst.targets.size() ||
+        !seen.insert(inst.cases[i]).second) {
+      continue;
+    }
+    ir::BlockId target = inst.targets[i + offset];
+    sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
+                blocks_[target]);
+    incoming_[target].push_back(edge);
+  }
+  b_.SetInsertPoint(missing);
+  return missing;
 }
 
 // M99 P back into this program: to the IR's landing block (its retseq
@@ -74,27 +85,9 @@ void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
 void FunctionEmitter::finishLandings() {
   for (std::size_t k = 0; k < landings_.size(); ++k) {
     Landing& l = landings_[k];
-    const ir::Inst& inst = *l.resume;
     b_.SetInsertPoint(l.head);
-    llvm::Value* n = roundHalfAway(l.seq);
-    llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
-                                        b_.CreateFCmpOLE(n, constant(99999)));
-    llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
-                                       llvm::ConstantInt::get(abi_.i32, 0));
-    llvm::BasicBlock* missing = newBlock("noseq");
-    llvm::SwitchInst* sw =
-        b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
-    std::set<std::int64_t> seen;
-    for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-      if (i + 1 >= inst.targets.size() || !seen.insert(inst.cases[i]).second) {
-        continue;
-      }
-      ir::BlockId target = inst.targets[i + 1];
-      sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
-                  blocks_[target]);
-      incoming_[target].push_back({l.head, ir::kNoBlock, static_cast<int>(k)});
-    }
-    b_.SetInsertPoint(missing);
+    switchOnSequence(*l.resume, l.seq, 1,
+                     {nullptr, ir::kNoBlock, static_cast<int>(k)});
     leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
                         {ctx_, m_.cstring("M99 P"), l.seq, name_}));
   }

@@ -13,6 +13,7 @@
 
 #include <llvm/IR/IRBuilder.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -49,6 +50,14 @@ public:
   void emit();
 
 private:
+  /// An LLVM edge into an IR block: from an IR predecessor, or from a
+  /// landing (pred unused), which stands for all its sites.
+  struct Edge {
+    llvm::BasicBlock* from;
+    ir::BlockId pred;
+    int landing = -1;
+  };
+
   // Control (emit_control.cpp).
   /// Attributes what is emitted next to `line` of the program's file.
   void at(std::uint32_t line);
@@ -65,6 +74,11 @@ private:
   void emitResume(const ir::Inst& inst);
   void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
   void emitSwitch(const ir::Inst& inst);
+  /// Switches on round(number) in 1..99999: cases[i] go to
+  /// targets[i + offset], recorded as `edge` (its `from` is filled in).
+  /// Returns the block for every other number, with the insert point there.
+  llvm::BasicBlock* switchOnSequence(const ir::Inst& inst, llvm::Value* number,
+                                     std::size_t offset, Edge edge);
   void finishLandings();
   llvm::Value* landingInput(int landing, const ir::Inst& phi);
   void emitRet();
@@ -103,6 +117,16 @@ private:
   void emitBegin(const ir::Inst& inst);
   llvm::Value* emitLoadVar(int number);
   void emitStoreVar(const ir::Inst& inst, int number, llvm::Value* value);
+
+  /// What #[x] does with a local (by index from 0), a common (by number)
+  /// and any other variable (through the runtime).
+  struct IndirectWays {
+    std::function<llvm::Value*(llvm::Value*)> local;
+    std::function<llvm::Value*(llvm::Value*)> common;
+    std::function<llvm::Value*()> runtime;
+  };
+
+  llvm::Value* indirect(llvm::Value* x, const IndirectWays& ways);
   llvm::Value* emitLoadIndirect(llvm::Value* number);
   void emitStoreIndirect(const ir::Inst& inst, llvm::Value* number,
                          llvm::Value* value);
@@ -127,14 +151,6 @@ private:
   std::uint32_t firstLine_ = 0;
   std::vector<llvm::Value*> values_;      // by ValueId
   std::vector<llvm::BasicBlock*> blocks_; // by IR block: its first block
-
-  /// An LLVM edge into an IR block: from an IR predecessor, or from a
-  /// landing (pred unused), which stands for all its sites.
-  struct Edge {
-    llvm::BasicBlock* from;
-    ir::BlockId pred;
-    int landing = -1;
-  };
 
   /// The one M99 P dispatch of all resumes with the same case table: their
   /// sites branch to `head` with the sequence number, so that the table is
