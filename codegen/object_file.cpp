@@ -7,6 +7,7 @@
 
 #include <llvm/ADT/Triple.h>
 #include <llvm/IR/LegacyPassManager.h>
+#include <llvm/MC/MCSubtargetInfo.h>
 #include <llvm/MC/TargetRegistry.h>
 #include <llvm/Support/FileSystem.h>
 #include <llvm/Support/Host.h>
@@ -51,7 +52,15 @@ std::unique_ptr<llvm::TargetMachine> hostTarget(const ObjectOptions& o,
                     std::string(f.second ? "+" : "-") + f.first().str();
       }
     }
-  } else if (cpu.empty()) {
+  } else if (!cpu.empty()) {
+    std::unique_ptr<llvm::MCSubtargetInfo> sti(
+        target->createMCSubtargetInfo(triple, "", ""));
+    if (!sti || !sti->isCPUStringValid(cpu)) {
+      error = "unknown CPU '" + cpu + "' for " + triple +
+              " (try native, or a name llc -mcpu=help lists)";
+      return nullptr;
+    }
+  } else {
     cpu = llvm::Triple(triple).getArch() == llvm::Triple::x86_64 ? "x86-64"
                                                                  : "generic";
   }

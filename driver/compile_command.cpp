@@ -92,6 +92,8 @@ int compileCommand(const Options& o) {
     opts.emit.tableName = table;
     opts.emit.debugInfo = o.debugInfo;
     opts.optLevel = o.optLevel;
+    opts.cpu = o.cpu;
+    opts.cpu = o.cpu;
     std::string error;
     if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
                                 error)) {
@@ -130,6 +132,7 @@ int buildCommand(const Options& options) {
   opts.emit.aotMain = true;
   opts.emit.debugInfo = o.debugInfo;
   opts.optLevel = o.optLevel;
+  opts.cpu = o.cpu;
   std::string error;
   int status = 0;
   if (!codegen::writeCompiled(module, opts, codegen::FileKind::Object, object,

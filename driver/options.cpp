@@ -34,6 +34,8 @@ bool setValueOption(Options& o, const std::string& name,
     o.headerPath = value;
   } else if (name == "--emit") {
     o.emit = value;
+  } else if (name == "--cpu") {
+    o.cpu = value;
   } else {
     o.tableName = value;
   }
@@ -43,7 +45,7 @@ bool setValueOption(Options& o, const std::string& name,
 bool isValueOption(const std::string& name) {
   return name == "--disable-pass" || name == "-x" || name == "--engine" ||
          name == "-o" || name == "--header" || name == "--emit" ||
-         name == "--table";
+         name == "--table" || name == "--cpu";
 }
 
 bool isCIdentifier(const std::string& s) {
@@ -95,8 +97,9 @@ std::string usageText() {
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "        [--disable-pass NAME]... [--verify-each]\n"
          "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"
-         "        [--emit=ir|llvm|asm|obj] [--table NAME] [-O0..-O3] [-g]\n"
-         "       mbc build FILE... -o EXE [-O0..-O3] [-g]\n"
+         "        [--emit=ir|llvm|asm|obj] [--table NAME] [--cpu NAME]\n"
+         "        [-O0..-O3] [-g]\n"
+         "       mbc build FILE... -o EXE [--cpu NAME] [-O0..-O3] [-g]\n"
          "passes: " +
          ir::passNameList() + "\n";
 }

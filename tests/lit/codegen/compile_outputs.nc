@@ -6,9 +6,11 @@
 ; RUN: not %mbc compile %s 2>&1 | FileCheck %s --check-prefix=NO-OUTPUT
 ; RUN: not %mbc compile %s -o %t.x --emit=exe 2>&1 | FileCheck %s --check-prefix=BAD-EMIT
 ; RUN: not %mbc compile %s -o %t.o --table 9lives 2>&1 | FileCheck %s --check-prefix=BAD-TABLE
+; RUN: %mbc compile %s -o %t.native.o --cpu native
+; RUN: not %mbc compile %s -o %t.o --cpu bogus 2>&1 | FileCheck %s --check-prefix=BAD-CPU
 ; The outputs of mbc compile: an object and its header (the table is named
-; after the output file), assembly, IR text that compiles again, and the
-; usage errors.
+; after the output file), assembly, IR text that compiles again, an object
+; for this machine's CPU, and the usage errors.
 O0010
 G65 P9100 A1
 M30
@@ -25,3 +27,4 @@ M99
 ; NO-OUTPUT: mbc: error: mbc compile needs -o OUTPUT
 ; BAD-EMIT: mbc: error: unknown --emit 'exe' (ir, llvm, asm or obj)
 ; BAD-TABLE: mbc: error: --table '9lives' is not a C identifier
+; BAD-CPU: mbc: error: unknown CPU 'bogus' for {{.*}} (try native, or a name llc -mcpu=help lists)
