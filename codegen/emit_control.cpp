@@ -68,7 +68,6 @@ void FunctionEmitter::emit() {
       b_.CreateUnreachable();
     }
   }
-  finishLandings();
   fillPhis();
   for (auto& [type, slot] : scratch_) {
     slot.first->setOperand(
@@ -126,8 +125,7 @@ void FunctionEmitter::fillPhis() {
       }
       auto* node = llvm::cast<llvm::PHINode>(values_[id]);
       for (const Edge& e : incoming_[b]) {
-        llvm::Value* v = e.landing >= 0 ? landingInput(e.landing, phi)
-                                        : inputFrom(phi, e.pred);
+        llvm::Value* v = inputFrom(phi, e.pred);
         if (v != nullptr) {
           node->addIncoming(v, e.from);
         }

@@ -1,10 +1,9 @@
 // Emission of the transfers by sequence number: the computed GOTO, and the
 // resume after an NC block or a call (M98 through mbc.resume, M99 P back
-// into this program). Resumes share one landing per case table, so a
-// program with many calls and many N numbers gets code linear in their sum
-// (ir/evaluator.cpp's resume and jumpToSeq are the reference).
+// into this program through the IR's landing); ir/evaluator.cpp's resume
+// and jumpToSeq are the reference.
 #include "codegen/emitter.h"
-#include "ir/cfg.h"
+
 #include <mbc/runtime.h>
 
 #include <set>
@@ -15,7 +14,7 @@ namespace mbc::codegen::detail {
 // number outside 1..99999 or without an N is PS0128, worded by the runtime.
 void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
   llvm::Value* target = numOperand(inst, 0);
-  switchOnSequence(inst, target, 0, {nullptr, current_});
+  switchOnSequence(inst, target, 0);
   bool landing = fn_.insts[inst.ops[0]].op == ir::Op::RetSeq;
   leave(b_.CreateCall(
       abi_.fn(Rt::mbrt_raise_sequence),
@@ -24,8 +23,7 @@ void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
 
 llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
                                                     llvm::Value* number,
-                                                    std::size_t offset,
-                                                    Edge edge) {
+                                                    std::size_t offset) {
   llvm::Value* n = roundHalfAway(number);
   llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
                                       b_.CreateFCmpOLE(n, constant(99999)));
@@ -34,7 +32,6 @@ llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
   llvm::BasicBlock* missing = newBlock("noseq");
   llvm::SwitchInst* sw =
       b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
-  edge.from = sw->getParent();
   std::set<std::int64_t> seen;
   for (std::size_t i = 0; i < inst.cases.size(); ++i) {
     if (i + offset >= inst.targets.size() ||
@@ -44,15 +41,16 @@ llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
     ir::BlockId target = inst.targets[i + offset];
     sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
                 blocks_[target]);
-    incoming_[target].push_back(edge);
+    incoming_[target].push_back({sw->getParent(), current_});
   }
   b_.SetInsertPoint(missing);
   return missing;
 }
 
 // M99 P back into this program: to the IR's landing block (its retseq
-// reads the number), or to the landing of this resume's case table (an
-// empty table can only raise PS0128).
+// reads the number), or through the resume's own case table (hand-written
+// IR; lowering always gives the landing). An empty table can only raise
+// PS0128.
 void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
   if (inst.cases.empty() && inst.targets.size() == 2) {
     b_.CreateStore(seq, retSeqSlot_);
@@ -64,64 +62,9 @@ void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
                         {ctx_, m_.cstring("M99 P"), seq, name_}));
     return;
   }
-  std::vector<std::int64_t> key = inst.cases;
-  key.insert(key.end(), inst.targets.begin() + 1, inst.targets.end());
-  auto [it, added] =
-      landingOf_.emplace(std::move(key), static_cast<int>(landings_.size()));
-  if (added) {
-    Landing l{&inst, newBlock("m99p"), nullptr, {}, {}};
-    llvm::IRBuilder<> head(l.head);
-    l.seq = head.CreatePHI(abi_.f64, 2, "seq");
-    landings_.push_back(std::move(l));
-  }
-  Landing& l = landings_[static_cast<std::size_t>(it->second)];
-  l.seq->addIncoming(seq, b_.GetInsertBlock());
-  l.sites.push_back({b_.GetInsertBlock(), current_});
-  b_.CreateBr(l.head);
-}
-
-// A landing's table: cases[i] goes to targets[i + 1]; any other number is
-// PS0128 ("M99 P..." outside 1..99999, "N.. not found" inside).
-void FunctionEmitter::finishLandings() {
-  for (std::size_t k = 0; k < landings_.size(); ++k) {
-    Landing& l = landings_[k];
-    b_.SetInsertPoint(l.head);
-    switchOnSequence(*l.resume, l.seq, 1,
-                     {nullptr, ir::kNoBlock, static_cast<int>(k)});
-    leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
-                        {ctx_, m_.cstring("M99 P"), l.seq, name_}));
-  }
-}
-
-// What a phi of a target block takes from a landing: the input of each
-// site's IR block, through a phi in the landing when the sites differ (one
-// per distinct set of inputs, shared by all the phis that have it).
-llvm::Value* FunctionEmitter::landingInput(int landing, const ir::Inst& phi) {
-  Landing& l = landings_[static_cast<std::size_t>(landing)];
-  std::vector<llvm::Value*> inputs;
-  for (const Edge& site : l.sites) {
-    inputs.push_back(inputFrom(phi, site.pred));
-  }
-  auto it = l.inputs.find(inputs);
-  if (it != l.inputs.end()) {
-    return it->second;
-  }
-  llvm::Value* joined = inputs.empty() ? nullptr : inputs[0];
-  bool same = true;
-  for (llvm::Value* v : inputs) {
-    same = same && v == joined;
-  }
-  if (!same) {
-    llvm::IRBuilder<> head(l.head, l.head->getFirstInsertionPt());
-    llvm::PHINode* p =
-        head.CreatePHI(abi_.f64, static_cast<unsigned>(inputs.size()));
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-      p->addIncoming(inputs[i], l.sites[i].from);
-    }
-    joined = p;
-  }
-  l.inputs.emplace(std::move(inputs), joined);
-  return joined;
+  switchOnSequence(inst, seq, 1);
+  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
+                      {ctx_, m_.cstring("M99 P"), seq, name_}));
 }
 
 // What an NC block or a call asks for next. A call's flow is NEXT, with

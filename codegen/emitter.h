@@ -50,12 +50,10 @@ public:
   void emit();
 
 private:
-  /// An LLVM edge into an IR block: from an IR predecessor, or from a
-  /// landing (pred unused), which stands for all its sites.
+  /// An LLVM edge into an IR block from an IR predecessor.
   struct Edge {
     llvm::BasicBlock* from;
     ir::BlockId pred;
-    int landing = -1;
   };
 
   // Control (emit_control.cpp).
@@ -75,12 +73,10 @@ private:
   void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
   void emitSwitch(const ir::Inst& inst);
   /// Switches on round(number) in 1..99999: cases[i] go to
-  /// targets[i + offset], recorded as `edge` (its `from` is filled in).
-  /// Returns the block for every other number, with the insert point there.
+  /// targets[i + offset]. Returns the block for every other number, with
+  /// the insert point there.
   llvm::BasicBlock* switchOnSequence(const ir::Inst& inst, llvm::Value* number,
-                                     std::size_t offset, Edge edge);
-  void finishLandings();
-  llvm::Value* landingInput(int landing, const ir::Inst& phi);
+                                     std::size_t offset);
   void emitRet();
   void jump(ir::BlockId target);
   /// Goes on in a new block when `status` is 0, else leaves with it.
@@ -151,20 +147,6 @@ private:
   std::uint32_t firstLine_ = 0;
   std::vector<llvm::Value*> values_;      // by ValueId
   std::vector<llvm::BasicBlock*> blocks_; // by IR block: its first block
-
-  /// The one M99 P dispatch of all resumes with the same case table: their
-  /// sites branch to `head` with the sequence number, so that the table is
-  /// emitted once per function, not once per call.
-  struct Landing {
-    const ir::Inst* resume; // one of them: its table
-    llvm::BasicBlock* head;
-    llvm::PHINode* seq;
-    std::vector<Edge> sites;
-    std::map<std::vector<llvm::Value*>, llvm::Value*> inputs; // landingInput
-  };
-
-  std::vector<Landing> landings_;
-  std::map<std::vector<std::int64_t>, int> landingOf_; // by cases + targets
 
   std::vector<std::vector<Edge>> incoming_; // by IR block
   ir::BlockId current_ = 0;
