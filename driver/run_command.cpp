@@ -35,12 +35,6 @@ int findMain(const Unit& unit, const std::string& wanted) {
   return -1;
 }
 
-MathParams mathParams(const mbrt_ctx* ctx) {
-  MathParams math;
-  math.nat = (static_cast<long>(mbrt_parameter(ctx, 6004)) & 1) != 0;
-  return math;
-}
-
 } // namespace
 
 int runCommand(const Options& o) {
@@ -82,11 +76,9 @@ int runCommand(const Options& o) {
                             ctx, &jit->programs()->programs[mainIndex]);
                       }
                       if (o.engine == "ir") {
-                        return ir::evaluate(module, mainIndex, ctx,
-                                            ir::EvalOptions{mathParams(ctx)});
+                        return ir::evaluate(module, mainIndex, ctx);
                       }
-                      Interpreter interp(cu.unit, cu.sources, ctx,
-                                         InterpOptions{mathParams(ctx)});
+                      Interpreter interp(cu.unit, cu.sources, ctx);
                       return interp.run(mainIndex);
                     });
 }

@@ -79,7 +79,8 @@ mbrt_status Interpreter::evalCall(const Expr& e, Num& out,
     out = roundHalfAway(numeric(args[0]) / roundIncrement) * roundIncrement;
     return 0;
   }
-  return check(evalBuiltin(e.builtin, args, options_.math, &out));
+  return mbrt_builtin(ctx_, static_cast<int>(e.builtin), args[0], args[1],
+                      &out);
 }
 
 mbrt_status Interpreter::evalCond(const Expr& e, bool& out) {

@@ -9,8 +9,8 @@
 namespace mbc {
 
 Interpreter::Interpreter(const Unit& unit, const SourceManager& sources,
-                         mbrt_ctx* ctx, InterpOptions options)
-    : unit_(unit), sources_(sources), ctx_(ctx), options_(options) {
+                         mbrt_ctx* ctx)
+    : unit_(unit), sources_(sources), ctx_(ctx) {
   for (int i = 0; i < static_cast<int>(unit.programs.size()); ++i) {
     if (unit.programs[i].number >= 0) {
       byNumber_.emplace(unit.programs[i].number, i);

@@ -7,6 +7,7 @@
 #include "frontend/ast.h"
 #include "frontend/source.h"
 #include <mbc/arith.h>
+#include <mbc/compiled.h>
 #include <mbc/runtime.h>
 
 #include <fmt/format.h>
@@ -17,14 +18,10 @@
 
 namespace mbc {
 
-struct InterpOptions {
-  MathParams math;
-};
-
 class Interpreter {
 public:
-  Interpreter(const Unit& unit, const SourceManager& sources, mbrt_ctx* ctx,
-              InterpOptions options);
+  /// Machine settings (NAT, block skip) come from the context.
+  Interpreter(const Unit& unit, const SourceManager& sources, mbrt_ctx* ctx);
 
   /// Runs programs[mainIndex] to its end (after the caller's mbrt_start).
   /// Returns 0 or the alarm that stopped the run (its report is in the
@@ -71,7 +68,6 @@ private:
   const Unit& unit_;
   const SourceManager& sources_;
   mbrt_ctx* ctx_;
-  InterpOptions options_;
   std::map<int, int> byNumber_; // O number -> program index
   int prog_ = 0;
   int pc_ = 0;

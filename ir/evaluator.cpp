@@ -11,9 +11,8 @@ namespace mbc::ir {
 
 namespace detail {
 
-Evaluator::Evaluator(const Module& module, mbrt_ctx* ctx,
-                     const EvalOptions& options)
-    : module_(module), ctx_(ctx), options_(options) {
+Evaluator::Evaluator(const Module& module, mbrt_ctx* ctx)
+    : module_(module), ctx_(ctx) {
   for (int i = 0; i < static_cast<int>(module.functions.size()); ++i) {
     if (module.functions[i].number >= 0) {
       byNumber_.emplace(module.functions[i].number, i);
@@ -295,9 +294,8 @@ mbrt_status Evaluator::call(int callee, int depth, bool macro,
 
 } // namespace detail
 
-mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx,
-                     const EvalOptions& options) {
-  detail::Evaluator evaluator(module, ctx, options);
+mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx) {
+  detail::Evaluator evaluator(module, ctx);
   return evaluator.run(mainIndex);
 }
 

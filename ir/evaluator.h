@@ -5,18 +5,13 @@
 #pragma once
 
 #include "ir/ir.h"
-#include <mbc/arith.h>
 #include <mbc/runtime.h>
 
 namespace mbc::ir {
 
-struct EvalOptions {
-  MathParams math;
-};
-
 /// Runs module.functions[mainIndex] like the interpreter runs a program
 /// (after the caller's mbrt_start). Returns 0 or the alarm that stopped it.
-mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx,
-                     const EvalOptions& options);
+/// Machine settings (NAT, block skip) come from the context.
+mbrt_status evaluate(const Module& module, int mainIndex, mbrt_ctx* ctx);
 
 } // namespace mbc::ir

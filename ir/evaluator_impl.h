@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ir/evaluator.h"
+#include <mbc/arith.h>
 #include <mbc/compiled.h>
 
 #include <memory>
@@ -36,7 +37,7 @@ struct Frame {
 
 class Evaluator {
 public:
-  Evaluator(const Module& module, mbrt_ctx* ctx, const EvalOptions& options);
+  Evaluator(const Module& module, mbrt_ctx* ctx);
 
   mbrt_status run(int mainIndex);
 
@@ -86,7 +87,6 @@ private:
 
   const Module& module_;
   mbrt_ctx* ctx_;
-  EvalOptions options_;
   std::unordered_map<int, int> byNumber_;      // O number -> function index
   std::vector<std::unique_ptr<Frame>> frames_; // by call depth
   std::vector<mbrt_word> words_;               // nc words (no recursion)

@@ -143,8 +143,8 @@ mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
   for (std::size_t i = 0; i < inst.ops.size() && i < 2; ++i) {
     args[i] = frame.values[inst.ops[i]];
   }
-  return check(
-      evalBuiltin(static_cast<Builtin>(inst.attr), args, options_.math, &out));
+  return mbrt_builtin(ctx_, static_cast<int>(inst.attr), args[0], args[1],
+                      &out);
 }
 
 const char* Evaluator::message(const Inst& inst) const {

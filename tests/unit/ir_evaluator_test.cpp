@@ -111,7 +111,7 @@ private:
 
 mbrt_status run(const Module& m, Machine& machine, unsigned skipMask = 0) {
   mbrt_set_block_skip(machine.ctx(), skipMask);
-  return evaluate(m, 0, machine.ctx(), EvalOptions{});
+  return evaluate(m, 0, machine.ctx());
 }
 
 mbrt_stats stats(const Machine& machine) {

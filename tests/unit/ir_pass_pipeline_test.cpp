@@ -179,7 +179,7 @@ b8:
 // What a run leaves behind that any engine must reproduce, as text.
 std::string run(const Module& m) {
   Machine machine;
-  mbrt_status status = evaluate(m, 0, machine.ctx(), EvalOptions{});
+  mbrt_status status = evaluate(m, 0, machine.ctx());
   mbrt_stats stats{};
   mbrt_get_stats(machine.ctx(), &stats);
   std::string out = "status " + std::to_string(status) + ", " +
