@@ -3,7 +3,6 @@
 // into this program through the IR's landing); ir/evaluator.cpp's resume
 // and jumpToSeq are the reference.
 #include "codegen/emitter.h"
-
 #include <mbc/runtime.h>
 
 #include <set>

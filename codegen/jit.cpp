@@ -5,6 +5,7 @@
 
 #include "codegen/abi.h"
 #include "codegen/emit_module.h"
+#include "codegen/native_target.h"
 #include "codegen/optimize.h"
 #include "codegen/verify.h"
 #include <mbc/compiled.h>
@@ -15,9 +16,6 @@
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/RTDyldObjectLinkingLayer.h>
 #include <llvm/ExecutionEngine/SectionMemoryManager.h>
-#include <llvm/Support/TargetSelect.h>
-
-#include <mutex>
 
 namespace mbc::codegen {
 
@@ -32,14 +30,6 @@ const RuntimeSymbol kRuntimeSymbols[] = {
 #define RT(Name, ...) {#Name, reinterpret_cast<void*>(&Name)},
 #include "codegen/runtime_functions.def"
 };
-
-void initializeNativeTarget() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    llvm::InitializeNativeTarget();
-    llvm::InitializeNativeTargetAsmPrinter();
-  });
-}
 
 std::string message(llvm::Error e) {
   return llvm::toString(std::move(e));

@@ -2,6 +2,7 @@
 #include "codegen/object_file.h"
 
 #include "codegen/abi.h"
+#include "codegen/native_target.h"
 #include "codegen/optimize.h"
 #include "codegen/verify.h"
 
@@ -11,30 +12,19 @@
 #include <llvm/MC/TargetRegistry.h>
 #include <llvm/Support/FileSystem.h>
 #include <llvm/Support/Host.h>
-#include <llvm/Support/TargetSelect.h>
 #include <llvm/Support/raw_ostream.h>
 #include <llvm/Target/TargetMachine.h>
 #include <llvm/Target/TargetOptions.h>
 
 #include <cstdio>
-#include <mutex>
 
 namespace mbc::codegen {
 
 namespace {
 
-void initializeTargets() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    llvm::InitializeNativeTarget();
-    llvm::InitializeNativeTargetAsmPrinter();
-    llvm::InitializeNativeTargetAsmParser();
-  });
-}
-
 std::unique_ptr<llvm::TargetMachine> hostTarget(const ObjectOptions& o,
                                                 std::string& error) {
-  initializeTargets();
+  initializeNativeTarget();
   std::string triple = llvm::sys::getDefaultTargetTriple();
   const llvm::Target* target =
       llvm::TargetRegistry::lookupTarget(triple, error);
