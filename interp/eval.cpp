@@ -9,10 +9,10 @@ mbrt_status Interpreter::check(AlarmId id) {
                              : mbrt_raise(ctx_, static_cast<int>(id), nullptr);
 }
 
-// roundIncrement > 0: the expression is an NC address, where ROUND rounds
-// to the address's least increment (spec §3.4); it does not reach into a
-// variable number #[...].
-mbrt_status Interpreter::eval(const Expr& e, Num& out, double roundIncrement) {
+// roundLetter != 0: the expression is the value of that NC address, where
+// ROUND rounds to the address's least increment (mbrt_round_address, spec
+// §3.4); it does not reach into a variable number #[...].
+mbrt_status Interpreter::eval(const Expr& e, Num& out, char roundLetter) {
   switch (e.kind) {
     case ExprKind::Number:
       out = e.number;
@@ -28,7 +28,7 @@ mbrt_status Interpreter::eval(const Expr& e, Num& out, double roundIncrement) {
     }
     case ExprKind::Neg: {
       Num v;
-      if (mbrt_status st = eval(*e.args[0], v, roundIncrement)) {
+      if (mbrt_status st = eval(*e.args[0], v, roundLetter)) {
         return st;
       }
       out = negate(v);
@@ -36,16 +36,16 @@ mbrt_status Interpreter::eval(const Expr& e, Num& out, double roundIncrement) {
     }
     case ExprKind::Binary: {
       Num a, b;
-      if (mbrt_status st = eval(*e.args[0], a, roundIncrement)) {
+      if (mbrt_status st = eval(*e.args[0], a, roundLetter)) {
         return st;
       }
-      if (mbrt_status st = eval(*e.args[1], b, roundIncrement)) {
+      if (mbrt_status st = eval(*e.args[1], b, roundLetter)) {
         return st;
       }
       return check(evalBinary(e.binOp, a, b, &out));
     }
     case ExprKind::Call:
-      return evalCall(e, out, roundIncrement);
+      return evalCall(e, out, roundLetter);
     case ExprKind::Compare:
     case ExprKind::Logical:
       break;
@@ -53,8 +53,7 @@ mbrt_status Interpreter::eval(const Expr& e, Num& out, double roundIncrement) {
   return check(AlarmId::IllegalExpressionFormat);
 }
 
-mbrt_status Interpreter::evalCall(const Expr& e, Num& out,
-                                  double roundIncrement) {
+mbrt_status Interpreter::evalCall(const Expr& e, Num& out, char roundLetter) {
   if (e.builtin == Builtin::Adp) {
     const Expr& arg = *e.args[0];
     if (arg.isBareVariable()) {
@@ -71,13 +70,12 @@ mbrt_status Interpreter::evalCall(const Expr& e, Num& out,
   }
   Num args[2] = {0, 0};
   for (std::size_t i = 0; i < e.args.size() && i < 2; ++i) {
-    if (mbrt_status st = eval(*e.args[i], args[i], roundIncrement)) {
+    if (mbrt_status st = eval(*e.args[i], args[i], roundLetter)) {
       return st;
     }
   }
-  if (e.builtin == Builtin::Round && roundIncrement > 0) {
-    out = roundHalfAway(numeric(args[0]) / roundIncrement) * roundIncrement;
-    return 0;
+  if (e.builtin == Builtin::Round && roundLetter != 0) {
+    return mbrt_round_address(ctx_, roundLetter, args[0], &out);
   }
   return mbrt_builtin(ctx_, static_cast<int>(e.builtin), args[0], args[1],
                       &out);

@@ -55,9 +55,9 @@ private:
                         std::vector<mbrt_word>& out);
 
   // Expressions (eval.cpp).
-  mbrt_status eval(const Expr& e, Num& out, double roundIncrement = 0);
+  mbrt_status eval(const Expr& e, Num& out, char roundLetter = 0);
   mbrt_status evalCond(const Expr& e, bool& out);
-  mbrt_status evalCall(const Expr& e, Num& out, double roundIncrement);
+  mbrt_status evalCall(const Expr& e, Num& out, char roundLetter);
   mbrt_status check(AlarmId id);
 
   // The --trace line of a statement the interpreter runs itself

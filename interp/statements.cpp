@@ -74,7 +74,6 @@ mbrt_status Interpreter::evalWords(const std::vector<Word>& words,
                                    std::vector<mbrt_word>& out) {
   out.clear();
   for (const Word& w : words) {
-    double inc = mbrt_address_increment(ctx_, w.letter);
     Num v;
     if (w.bareVariable) {
       const Expr* ref = w.value.get();
@@ -82,7 +81,7 @@ mbrt_status Interpreter::evalWords(const std::vector<Word>& words,
       if (negative) {
         ref = ref->args[0].get();
       }
-      if (mbrt_status st = eval(*ref, v, inc)) {
+      if (mbrt_status st = eval(*ref, v, w.letter)) {
         return st;
       }
       if (isVacant(v)) {
@@ -91,7 +90,7 @@ mbrt_status Interpreter::evalWords(const std::vector<Word>& words,
       if (negative) {
         v = negate(v);
       }
-    } else if (mbrt_status st = eval(*w.value, v, inc)) {
+    } else if (mbrt_status st = eval(*w.value, v, w.letter)) {
       return st;
     }
     out.push_back({w.letter, wordKind(w.kind), numeric(v)});

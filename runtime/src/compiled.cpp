@@ -44,9 +44,6 @@ mbrt_status mbrt_builtin(mbrt_ctx* ctx, int builtin, double a, double b,
 mbrt_status mbrt_round_address(mbrt_ctx* ctx, int letter, double x,
                                double* out) {
   const double inc = mbrt_address_increment(ctx, static_cast<char>(letter));
-  if (inc > 0) {
-    *out = roundHalfAway(numeric(x) / inc) * inc;
-    return 0;
-  }
-  return mbrt_builtin(ctx, static_cast<int>(Builtin::Round), x, 0, out);
+  *out = roundHalfAway(numeric(x) / inc) * inc;
+  return 0;
 }
