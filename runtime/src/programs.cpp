@@ -11,9 +11,9 @@ const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
   if (table == nullptr) {
     return nullptr;
   }
-  if (number < 0 && name != nullptr && name[0] == 'O' &&
-      mbc::rt::parseProgramNumber(name) > 0) {
-    number = mbc::rt::parseProgramNumber(name);
+  if (number < 0 && name != nullptr) {
+    const int named = mbc::rt::parseProgramNumber(name); // "O12" -> 12
+    number = named > 0 ? named : -1;
   }
   for (size_t i = 0; i < table->count; ++i) {
     const mbrt_program& p = table->programs[i];
