@@ -56,8 +56,8 @@ Abi::Abi(llvm::Module& m)
   word = llvm::StructType::create(context, {i8, i8, f64}, "mbrt_word");
   printItem = llvm::StructType::create(context, {ptr, f64, i32, i32},
                                        "mbrt_print_item");
-  flow = llvm::StructType::create(context, {i32, i32, i64, i32, f64, i32},
-                                  "mbrt_flow");
+  flow = llvm::StructType::create(
+      context, {i32, i32, i64, i32, f64, i32, i32, ptr, i64}, "mbrt_flow");
   level = llvm::StructType::create(
       context, {llvm::ArrayType::get(f64, 33), i64}, "mbrt_level");
   blockState = llvm::StructType::create(context, {ptr, i32, i32, i64, i64},

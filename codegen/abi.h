@@ -29,7 +29,10 @@ enum FlowField {
   kFlowRepeat,
   kFlowHasSeq,
   kFlowSeq,
-  kFlowCountsPart
+  kFlowCountsPart,
+  kFlowCallKind,
+  kFlowArgs,
+  kFlowArgCount
 };
 
 enum LevelField { kLevelValue, kLevelAdpMask };

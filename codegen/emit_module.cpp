@@ -48,7 +48,7 @@ void attribute(ModuleState& m, llvm::Function* fn, llvm::IRBuilder<>& b,
   }
 }
 
-// i32 mbc.call(ptr ctx, double p, i32 macro, ptr args, i64 count,
+// i32 mbc.call(ptr ctx, double p, i32 kind, ptr args, i64 count,
 //              double repeat, ptr out): the program numbered round(p), called
 // round(repeat) times, or PS0076 (evaluator findProgram and call).
 llvm::Function* emitDispatch(ModuleState& m) {
@@ -129,7 +129,7 @@ llvm::Function* emitResume(ModuleState& m) {
   };
   llvm::BasicBlock* entry = block("entry");
   llvm::BasicBlock* next = block("next");
-  llvm::BasicBlock* sub = block("m98");
+  llvm::BasicBlock* sub = block("call");
   llvm::BasicBlock* ret = block("m99");
   llvm::BasicBlock* end = block("end");
   llvm::IRBuilder<> b(entry);
@@ -138,14 +138,14 @@ llvm::Function* emitResume(ModuleState& m) {
     return b.CreateLoad(type, b.CreateStructGEP(abi.flow, flow, index));
   };
   auto i32 = [&](int v) { return llvm::ConstantInt::get(abi.i32, v); };
-  // NEXT, or after the M98 call: the M99 P of the subprogram, if any.
+  // NEXT, or after the call: the M99 P of the callee, if any.
   auto answerSeq = [&] {
     b.CreateRet(
         b.CreateSelect(b.CreateICmpNE(field(abi.i32, kFlowHasSeq), i32(0)),
                        i32(kResumeSeq), i32(0)));
   };
   llvm::SwitchInst* sw = b.CreateSwitch(field(abi.i32, kFlowKind), next, 3);
-  sw->addCase(i32(MBRT_FLOW_CALL_SUB), sub);
+  sw->addCase(i32(MBRT_FLOW_CALL), sub);
   sw->addCase(i32(MBRT_FLOW_RETURN), ret);
   sw->addCase(i32(MBRT_FLOW_END), end);
 
@@ -155,8 +155,8 @@ llvm::Function* emitResume(ModuleState& m) {
   b.SetInsertPoint(sub);
   llvm::Value* status = b.CreateCall(
       m.dispatch, {ctx, b.CreateSIToFP(field(abi.i32, kFlowProgram), abi.f64),
-                   i32(0), llvm::ConstantPointerNull::get(abi.ptr),
-                   llvm::ConstantInt::get(abi.i64, 0),
+                   field(abi.i32, kFlowCallKind), field(abi.ptr, kFlowArgs),
+                   field(abi.i64, kFlowArgCount),
                    b.CreateSIToFP(field(abi.i64, kFlowRepeat), abi.f64), flow});
   llvm::BasicBlock* called = block("called");
   llvm::BasicBlock* failed = block("failed");

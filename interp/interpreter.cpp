@@ -148,15 +148,13 @@ mbrt_status Interpreter::jumpTo(int seq, int from) {
   return 0;
 }
 
-mbrt_status Interpreter::enter(int program, bool macro,
+mbrt_status Interpreter::enter(int program, int kind,
                                std::vector<mbrt_word> args, long repeat) {
   const char* name = unit_.programs[program].name.c_str();
-  mbrt_status st = macro ? mbrt_call_macro(ctx_, name, args.data(), args.size())
-                         : mbrt_call_sub(ctx_, name);
-  if (st) {
+  if (mbrt_status st = mbrt_call(ctx_, name, kind, args.data(), args.size())) {
     return st;
   }
-  stack_.push_back({prog_, pc_ + 1, repeat - 1, macro, std::move(args)});
+  stack_.push_back({prog_, pc_ + 1, repeat - 1, kind, std::move(args)});
   prog_ = program;
   pc_ = 0;
   return 0;
@@ -174,11 +172,8 @@ mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
   if (f.remaining > 0 && !hasSeq) {
     --f.remaining;
     const char* name = unit_.programs[prog_].name.c_str();
-    mbrt_status st =
-        f.macro ? mbrt_call_macro(ctx_, name, f.args.data(), f.args.size())
-                : mbrt_call_sub(ctx_, name);
     pc_ = 0;
-    return st;
+    return mbrt_call(ctx_, name, f.kind, f.args.data(), f.args.size());
   }
   prog_ = f.program;
   pc_ = f.returnBlock;

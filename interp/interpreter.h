@@ -33,14 +33,14 @@ private:
     int program;
     int returnBlock;
     long remaining; // repetitions still to run (L)
-    bool macro;     // G65 (new local level) or M98
+    int kind;       // mbrt_call_kind
     std::vector<mbrt_word> args;
   };
 
   // Control (interpreter.cpp).
   mbrt_status step(const Block& b);
   mbrt_status jumpTo(int seq, int from);
-  mbrt_status enter(int program, bool macro, std::vector<mbrt_word> args,
+  mbrt_status enter(int program, int kind, std::vector<mbrt_word> args,
                     long repeat);
   mbrt_status leave(bool hasSeq, double seq, bool& finished);
   int findProgram(double number) const;

@@ -1,5 +1,5 @@
 // Statement execution: assignments, GOTO, NC blocks (with the control flow
-// the runtime asks for: M98, M99, M02/M30), G65 calls and DPRNT/BPRNT.
+// the runtime asks for: calls, M99, M02/M30), G65 calls and DPRNT/BPRNT.
 #include "interp/interpreter.h"
 
 namespace mbc {
@@ -108,7 +108,7 @@ mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
     return st;
   }
   switch (flow.kind) {
-    case MBRT_FLOW_CALL_SUB: {
+    case MBRT_FLOW_CALL: {
       int target = findProgram(flow.program);
       if (target < 0) {
         return mbrt_raise_program_not_found(ctx_, flow.program);
@@ -117,7 +117,8 @@ mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
         ++pc_;
         return 0;
       }
-      return enter(target, false, {}, flow.repeat);
+      return enter(target, flow.call_kind,
+                   {flow.args, flow.args + flow.arg_count}, flow.repeat);
     }
     case MBRT_FLOW_RETURN: {
       if (stack_.empty()) {
@@ -163,7 +164,7 @@ mbrt_status Interpreter::execMacroCall(const Stmt& s) {
     ++pc_;
     return 0;
   }
-  return enter(target, true, std::move(args), repeat);
+  return enter(target, MBRT_CALL_MACRO, std::move(args), repeat);
 }
 
 mbrt_status Interpreter::execPrint(const Stmt& s) {

@@ -227,14 +227,14 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
                                 const Inst& inst, BlockId& next) {
   const mbrt_flow flow = frame.flows[inst.ops[0]].flow;
   switch (flow.kind) {
-    case MBRT_FLOW_CALL_SUB: {
+    case MBRT_FLOW_CALL: {
       int target = findProgram(flow.program);
       if (target < 0) {
         return mbrt_raise_program_not_found(ctx_, flow.program);
       }
       FlowRec out{};
-      if (mbrt_status st =
-              call(target, depth, false, nullptr, 0, flow.repeat, out)) {
+      if (mbrt_status st = call(target, depth, flow.call_kind, flow.args,
+                                flow.arg_count, flow.repeat, out)) {
         return st;
       }
       if (out.flow.has_seq) {
@@ -265,7 +265,7 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
 // A call of function `callee` (G65 with a new local level, or M98 on the
 // same one) through the runtime, which repeats it and returns like every
 // other engine. `out` is the call's flow: NEXT, with has_seq/seq for M99 P.
-mbrt_status Evaluator::call(int callee, int depth, bool macro,
+mbrt_status Evaluator::call(int callee, int depth, int kind,
                             const mbrt_word* args, std::size_t count,
                             long repeat, FlowRec& out) {
   struct Activation {
@@ -289,7 +289,7 @@ mbrt_status Evaluator::call(int callee, int depth, bool macro,
   out.fromCall = true;
   return mbrt_run_call(
       ctx_, module_.functions[static_cast<std::size_t>(callee)].name.c_str(),
-      macro ? 1 : 0, args, count, repeat, body, &activation, &out.flow);
+      kind, args, count, repeat, body, &activation, &out.flow);
 }
 
 } // namespace detail

@@ -63,7 +63,7 @@ private:
                         BlockId& next);
   mbrt_status caseTarget(const Function& fn, const Inst& inst, int seq,
                          std::size_t offset, BlockId& next);
-  mbrt_status call(int callee, int depth, bool macro, const mbrt_word* args,
+  mbrt_status call(int callee, int depth, int kind, const mbrt_word* args,
                    std::size_t count, long repeat, FlowRec& out);
   int findProgram(double number) const;
   mbrt_status internalError(const char* what);

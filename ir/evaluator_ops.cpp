@@ -259,8 +259,8 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
   if (repeat <= 0) {
     return 0;
   }
-  return call(target, depth, true, frame.args.data(), frame.args.size(), repeat,
-              out);
+  return call(target, depth, MBRT_CALL_MACRO, frame.args.data(),
+              frame.args.size(), repeat, out);
 }
 
 mbrt_status Evaluator::execTrace(const Inst& inst, const Frame& frame) {

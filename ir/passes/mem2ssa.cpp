@@ -102,7 +102,7 @@ bool sharesFrame(const Function& f, BlockId b) {
   }
   const Inst& flow = f.insts[term.ops[0]];
   return flow.op != Op::CallMacro &&
-         (flow.op != Op::Nc || ncMayGiveM(f, flow, {98, 99}));
+         (flow.op != Op::Nc || ncMayShareFrame(f, flow));
 }
 
 // Moves the phi inputs of `s` from the predecessors in `from` to a new phi

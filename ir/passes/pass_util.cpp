@@ -3,6 +3,7 @@
 
 #include "ir/cfg.h"
 #include <mbc/arith.h>
+#include <mbc/g_codes.h>
 
 #include <algorithm>
 
@@ -13,23 +14,57 @@ bool readCannotAlarm(std::int64_t n) {
          (n >= 500 && n <= 999);
 }
 
-bool ncMayGiveM(const Function& f, const Inst& nc,
-                std::initializer_list<double> codes) {
+namespace {
+
+/// A G word that may call: not a constant, or not a G code of FANUC's.
+bool mayCallByG(const Function& f, const Inst& nc, std::size_t i,
+                bool modalToo) {
+  const Inst& value = f.insts[nc.ops[i]];
+  if (value.op == Op::Vacant) {
+    return false;
+  }
+  if (value.op != Op::Const) {
+    return true;
+  }
+  const double tenths = roundHalfAway(value.imm * 10.0);
+  if (tenths < 0.0 || tenths > 99999.0) {
+    return false; // PS0010 at run time
+  }
+  const int code = static_cast<int>(tenths);
+  return !isFanucGCode(code) || (modalToo && (code == 660 || code == 661));
+}
+
+bool blockMayCallByG(const Function& f, const Inst& nc, bool modalToo) {
   for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
-    if (wordLetter(nc.cases[i]) != 'M') {
-      continue;
+    if (wordLetter(nc.cases[i]) == 'G' && mayCallByG(f, nc, i, modalToo)) {
+      return true;
     }
+  }
+  return false;
+}
+
+} // namespace
+
+bool ncMayShareFrame(const Function& f, const Inst& nc) {
+  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
+    const char letter = wordLetter(nc.cases[i]);
     const Inst& value = f.insts[nc.ops[i]];
     if (value.op == Op::Vacant) {
-      continue; // M0, or no word at all
+      continue; // a vacant word is no word
     }
-    if (value.op != Op::Const) {
+    if (letter == 'T' || letter == 'S' || letter == 'B') {
       return true;
     }
-    bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
-    double m = roundHalfAway(negated ? -value.imm : value.imm);
-    if (std::find(codes.begin(), codes.end(), m) != codes.end()) {
-      return true;
+    // M00, M01, M02 and M30 only stop or end (profiles cannot make them
+    // call); every other M code may be M98, M99 or a subprogram's code.
+    if (letter == 'M') {
+      bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
+      double m = value.op == Op::Const
+                     ? roundHalfAway(negated ? -value.imm : value.imm)
+                     : -1.0;
+      if (m != 0.0 && m != 1.0 && m != 2.0 && m != 30.0) {
+        return true;
+      }
     }
   }
   return false;
@@ -198,6 +233,21 @@ bool removeUnreachableBlocks(Function& f) {
   f.blocks = std::move(kept);
   renumberTargets(f, newId);
   return true;
+}
+
+bool ncMayCall(const Function& f, const Inst& nc) {
+  return ncMayShareFrame(f, nc) || blockMayCallByG(f, nc, false);
+}
+
+bool moduleMayCallByG(const Module& m) {
+  for (const Function& f : m.functions) {
+    for (const Inst& inst : f.insts) {
+      if (inst.op == Op::Nc && blockMayCallByG(f, inst, true)) {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 } // namespace mbc::ir

@@ -22,14 +22,22 @@ inline bool isTerminator(Op op) {
 /// some readers alarm (a tool offset beyond the profile's count).
 bool readCannotAlarm(std::int64_t n);
 
-/// Whether the flow of NC block `nc` may come from one of the M codes in
-/// `codes`: one of its M words is not a constant, or is one of them. The
-/// runtime's only flows for other M codes are NEXT and the END of the run
-/// (runtime/src/nc_block.cpp, decideFlow): only M98 runs a subprogram on
-/// this frame (whose M99 P may come back at a sequence number) and only M99
-/// returns. Custom M-code calls (parameters 6071-6089) will need a look here.
-bool ncMayGiveM(const Function& f, const Inst& nc,
-                std::initializer_list<double> codes);
+/// Whether NC block `nc` may run code on this frame: M98 or an M code
+/// subprogram (parameters 6071-6079), a T, S or B code subprogram, or M99,
+/// which returns to a caller that shares it. Every such block has an M, T,
+/// S or B word; the calls of other blocks (G66, custom G codes) are macros
+/// with a frame of their own.
+bool ncMayShareFrame(const Function& f, const Inst& nc);
+
+/// Whether NC block `nc` may call a program by one of its own words: an M,
+/// T, S or B word, or a G word that may be a custom G code (not a constant
+/// G code of FANUC's; the runtime refuses profiles that give one a macro).
+bool ncMayCall(const Function& f, const Inst& nc);
+
+/// Whether any NC block of `m` may make every later block call: a G66,
+/// G66.1 or modal custom G code, i.e. a G word that is not a constant G
+/// code of FANUC's other than G66 and G66.1.
+bool moduleMayCallByG(const Module& m);
 
 /// The terminator of `b` (its last instruction).
 ValueId terminatorOf(const Function& f, BlockId b);

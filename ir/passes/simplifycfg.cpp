@@ -2,8 +2,8 @@
 // jumps only to it and it has no other predecessor, and lets jumps go past
 // blocks that hold nothing but a `br`. Neither changes what runs: every
 // `begin` stays, in order, so blocks are counted and alarms located as
-// before. b0 keeps no predecessor. The case table of a resume whose NC block
-// cannot run an M98 subprogram goes: nothing can come back at an N there.
+// before. b0 keeps no predecessor. The landing of a resume whose NC block
+// cannot call a program goes: no M99 P can come back at an N there.
 #include "ir/cfg.h"
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
@@ -22,14 +22,14 @@ void simplifyBranches(Function& f) {
   }
 }
 
-void pruneResumeCases(Function& f) {
+void pruneResumeCases(Function& f, bool gCodesMayCall) {
   for (BlockId b = 0; b < f.blocks.size(); ++b) {
     Inst& term = f.insts[terminatorOf(f, b)];
     if (term.op != Op::Resume || term.targets.size() < 2) {
       continue;
     }
     const Inst& flow = f.insts[term.ops[0]];
-    if (flow.op != Op::Nc || ncMayGiveM(f, flow, {98})) {
+    if (flow.op != Op::Nc || gCodesMayCall || ncMayCall(f, flow)) {
       continue;
     }
     std::vector<BlockId> dropped(term.targets.begin() + 1, term.targets.end());
@@ -178,9 +178,10 @@ void threadJumps(Function& f) {
 } // namespace
 
 void runSimplifyCfg(Module& m) {
+  const bool gCodesMayCall = moduleMayCallByG(m);
   for (Function& f : m.functions) {
     simplifyBranches(f);
-    pruneResumeCases(f);
+    pruneResumeCases(f, gCodesMayCall);
     mergeChains(f);
     removeUnreachableBlocks(f);
     threadJumps(f);

@@ -1,6 +1,6 @@
-// Calls: G65 macro calls with their argument mapping (specification I and
-// II, spec §5.2-5.4), M98 subprogram calls, returns and the nesting limits
-// (PS0122, PS0077).
+// Calls: macro calls with their argument mapping (specification I and II,
+// spec §5.2-5.4; a G66.1 block's words), subprogram calls, returns and the
+// nesting limits (PS0122, PS0077).
 #include <fmt/format.h>
 
 #include "context.h"
@@ -38,10 +38,29 @@ bool scalesLiteral(const mbrt_ctx& ctx, char letter) {
          letter == 'K' || letter == 'R' || letter == 'Q';
 }
 
+/// A G66.1 block passes its G, L and P too: to the locals their letters
+/// leave free in specification I.
+int everyBlockLocal(char letter) {
+  switch (letter) {
+    case 'G':
+      return 10;
+    case 'L':
+      return 12;
+    case 'P':
+      return 16;
+    default:
+      return 0;
+  }
+}
+
 /// Which local an argument sets, or the alarm for a letter that is no
 /// argument.
-mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, IjkSets& sets,
-                          int* local) {
+mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, bool everyBlock,
+                          IjkSets& sets, int* local) {
+  if (everyBlock && everyBlockLocal(letter) != 0) {
+    *local = everyBlockLocal(letter);
+    return 0;
+  }
   if (letter == 'G') {
     return raise(ctx, AlarmId::GAsArgument);
   }
@@ -64,19 +83,19 @@ mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, IjkSets& sets,
 
 /// Fills a fresh level from the argument words; later words win.
 mbrt_status mapArguments(mbrt_ctx& ctx, const mbrt_word* args, size_t count,
-                         LocalLevel& level) {
+                         bool everyBlock, LocalLevel& level) {
   IjkSets sets;
   for (size_t i = 0; i < count; ++i) {
     const mbrt_word& word = args[i];
     int local = 0;
     if (const mbrt_status status =
-            argumentLocal(ctx, word.letter, sets, &local)) {
+            argumentLocal(ctx, word.letter, everyBlock, sets, &local)) {
       return status;
     }
     const std::uint64_t bit = std::uint64_t{1} << (local - 1);
     // X10 passes 0.010 mm (spec §5.4); ADP gives the 10 back.
     if (word.kind == MBRT_WORD_INT_LITERAL && scalesLiteral(ctx, word.letter) &&
-        !ctx.profile.decimalPointInput()) {
+        !ctx.profile.decimalPointInput) {
       level.value[local - 1] = word.value / ctx.scale();
       level.adp_mask |= bit;
     } else {
@@ -97,13 +116,56 @@ mbrt_status checkTotalNesting(mbrt_ctx& ctx) {
   return 0;
 }
 
-void pushCall(mbrt_ctx& ctx, const char* program, bool macro) {
+void pushCall(mbrt_ctx& ctx, const char* program, int kind) {
+  const std::size_t depth = ctx.calls.size();
   CallRecord& call = ctx.calls.emplace_back();
   call.program = program != nullptr ? program : "";
   call.programNumber = parseProgramNumber(program);
-  call.macro = macro;
+  call.kind = kind;
+  if ((kind & kCallModalBit) != 0 && depth < ctx.blockCalls.size()) {
+    call.modalId = ctx.blockCalls[depth].modalId;
+  }
   call.file = ctx.block.file;
   call.line = ctx.block.line;
+}
+
+mbrt_status enterMacro(mbrt_ctx& ctx, const char* program, int kind,
+                       const mbrt_word* args, size_t count) {
+  if (ctx.macroDepth + 1 > ctx.profile.macroNesting) {
+    return raise(ctx, AlarmId::TooManyMacroNesting,
+                 fmt::format("more than {} nested macro calls",
+                             ctx.profile.macroNesting));
+  }
+  if (const mbrt_status status = checkTotalNesting(ctx)) {
+    return status;
+  }
+  // A G66.1 block's words are its arguments, G, L and P included.
+  const bool everyBlock = (kind & kCallModalBit) != 0 &&
+                          ctx.calls.size() < ctx.blockCalls.size() &&
+                          ctx.blockCalls[ctx.calls.size()].everyBlock;
+  ctx.levels.emplace_back();
+  if (const mbrt_status status =
+          mapArguments(ctx, args, count, everyBlock, ctx.levels.back())) {
+    ctx.levels.pop_back();
+    return status;
+  }
+  ++ctx.macroDepth;
+  pushCall(ctx, program, kind);
+  return 0;
+}
+
+mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
+  if (ctx.subDepth + 1 > ctx.profile.subprogramNesting) {
+    return raise(ctx, AlarmId::TooManySubMacroNesting,
+                 fmt::format("more than {} nested subprogram calls",
+                             ctx.profile.subprogramNesting));
+  }
+  if (const mbrt_status status = checkTotalNesting(ctx)) {
+    return status;
+  }
+  ++ctx.subDepth;
+  pushCall(ctx, program, kind);
+  return 0;
 }
 
 } // namespace
@@ -113,46 +175,27 @@ void pushCall(mbrt_ctx& ctx, const char* program, bool macro) {
 using namespace mbc;
 using namespace mbc::rt;
 
+mbrt_status mbrt_call(mbrt_ctx* ctx, const char* program, int kind,
+                      const mbrt_word* args, size_t count) {
+  return (kind & kCallMacroBit) != 0
+             ? enterMacro(*ctx, program, kind, args, count)
+             : enterSub(*ctx, program, kind);
+}
+
 mbrt_status mbrt_call_macro(mbrt_ctx* ctx, const char* program,
                             const mbrt_word* args, size_t count) {
-  if (ctx->macroDepth + 1 > ctx->profile.macroNesting) {
-    return raise(*ctx, AlarmId::TooManyMacroNesting,
-                 fmt::format("more than {} nested macro calls",
-                             ctx->profile.macroNesting));
-  }
-  if (const mbrt_status status = checkTotalNesting(*ctx)) {
-    return status;
-  }
-  ctx->levels.emplace_back();
-  if (const mbrt_status status =
-          mapArguments(*ctx, args, count, ctx->levels.back())) {
-    ctx->levels.pop_back();
-    return status;
-  }
-  ++ctx->macroDepth;
-  pushCall(*ctx, program, true);
-  return 0;
+  return mbrt_call(ctx, program, MBRT_CALL_MACRO, args, count);
 }
 
 mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program) {
-  if (ctx->subDepth + 1 > ctx->profile.subprogramNesting) {
-    return raise(*ctx, AlarmId::TooManySubMacroNesting,
-                 fmt::format("more than {} nested subprogram calls",
-                             ctx->profile.subprogramNesting));
-  }
-  if (const mbrt_status status = checkTotalNesting(*ctx)) {
-    return status;
-  }
-  ++ctx->subDepth;
-  pushCall(*ctx, program, false);
-  return 0;
+  return mbrt_call(ctx, program, MBRT_CALL_SUB, nullptr, 0);
 }
 
 void mbrt_return(mbrt_ctx* ctx) {
   if (ctx->calls.empty()) {
     return;
   }
-  if (ctx->calls.back().macro) {
+  if ((ctx->calls.back().kind & kCallMacroBit) != 0) {
     ctx->levels.pop_back();
     --ctx->macroDepth;
   } else {
@@ -168,7 +211,8 @@ int mbrt_call_depth(const mbrt_ctx* ctx) {
 mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
                                size_t count) {
   LocalLevel level;
-  if (const mbrt_status status = mapArguments(*ctx, args, count, level)) {
+  if (const mbrt_status status =
+          mapArguments(*ctx, args, count, false, level)) {
     return status;
   }
   ctx->levels.front() = level;

@@ -15,7 +15,7 @@ namespace {
 
 MathParams mathParams(const mbrt_ctx& ctx) {
   MathParams params;
-  params.nat = (static_cast<long>(ctx.profile.param6004) & 1) != 0;
+  params.nat = ctx.profile.nat;
   return params;
 }
 

@@ -78,6 +78,8 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
   ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
   ctx.calls.clear();
+  ctx.modalCalls.clear();
+  ctx.blockCalls.clear();
   ctx.macroDepth = 0;
   ctx.subDepth = 0;
   ctx.levels.assign(1, LocalLevel{});
@@ -231,19 +233,7 @@ void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
 }
 
 double mbrt_parameter(const mbrt_ctx* ctx, int number) {
-  const Profile& profile = ctx->profile;
-  switch (number) {
-    case 3401:
-      return profile.param3401;
-    case 3410:
-      return profile.param3410;
-    case 6001:
-      return profile.param6001;
-    case 6004:
-      return profile.param6004;
-    default:
-      return 0.0;
-  }
+  return ctx->profile.parameter(number);
 }
 
 int mbrt_block_skip(const mbrt_ctx* ctx) {

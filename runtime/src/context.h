@@ -13,6 +13,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <set>
 #include <string>
 #include <string_view>
@@ -36,12 +37,17 @@ struct LocalLevel : mbrt_level {
   LocalLevel() : mbrt_level{} { std::fill_n(value, kLocalCount, vacant()); }
 };
 
-/// One active call (G65 or M98): nesting checks, #4115 and the call stack of
-/// alarm reports.
+inline constexpr int kCallMacroBit = 1; // mbrt_call_kind bits
+inline constexpr int kCallCodeBit = 2;
+inline constexpr int kCallModalBit = 4;
+
+/// One active call: nesting checks, #4115, the rules of calls by codes and
+/// modal calls, and the call stack of alarm reports.
 struct CallRecord {
   std::string program;
   int programNumber = 0;
-  bool macro = false;
+  int kind = MBRT_CALL_SUB;   // mbrt_call_kind
+  int modalId = 0;            // MBRT_CALL_MODAL: the G66 that called
   const char* file = nullptr; // the calling block
   int line = 0;
 };
@@ -71,6 +77,23 @@ struct ModalState {
   int workOffset = kFirstG54Offset;   // index into workOffsets
   double feed = 0.0;                  // modal F
   std::array<double, 30> lastWords{}; // #4101..#4130 by index
+};
+
+/// A G66/G66.1 (or modal custom G code) in force: what it calls.
+struct ModalCall {
+  int id = 0;
+  int program = 0;
+  long repeat = 1;
+  bool everyBlock = false; // G66.1
+  std::vector<mbrt_word> args;
+};
+
+/// The call an NC block asks its engine for, one per call level: the
+/// arguments stay valid while the engine repeats the call.
+struct BlockCall {
+  std::vector<mbrt_word> args;
+  int modalId = 0;
+  bool everyBlock = false;
 };
 
 template <class Fn> struct Sink {
@@ -104,6 +127,9 @@ struct mbrt_ctx {
 
   // Calls.
   std::vector<mbc::rt::CallRecord> calls;
+  std::vector<mbc::rt::ModalCall> modalCalls; // G66 in force, innermost last
+  int nextModalId = 1;
+  std::deque<mbc::rt::BlockCall> blockCalls; // by call level
   int macroDepth = 0;
   int subDepth = 0;
   std::string mainProgram;

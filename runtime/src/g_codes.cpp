@@ -2,6 +2,8 @@
 // names are kept: which codes mbc executes is decided in nc_block.cpp.
 #include "g_codes.h"
 
+#include <mbc/g_codes.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -154,3 +156,7 @@ std::string gCodeText(int tenths) {
 }
 
 } // namespace mbc::rt
+
+bool mbc::isFanucGCode(int tenths) {
+  return mbc::rt::findGCode(tenths) != nullptr;
+}

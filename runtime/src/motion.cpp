@@ -160,8 +160,8 @@ double sweepAngle(Point start, Point end, Point center, bool clockwise) {
 
 /// PS0020 when the start and end radii differ by more than parameter 3410.
 mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
-  const double tolerance =
-      ctx.profile.param3410 * (ctx.modal.inch ? 10'000.0 / kMmPerInch : 1000.0);
+  const double tolerance = ctx.profile.parameter(3410) *
+                           (ctx.modal.inch ? 10'000.0 / kMmPerInch : 1000.0);
   const double startRadius = std::hypot(start.x - center.x, start.y - center.y);
   const double endRadius = std::hypot(end.x - center.x, end.y - center.y);
   if (tolerance > 0.0 && std::fabs(startRadius - endRadius) > tolerance) {

@@ -1,10 +1,11 @@
 // NC blocks (spec §1.5, §5.8, Part A): address values to counts or
 // integers, modal G codes, the last-value words of #4101.., motion, and the
-// flow the M codes ask for (M98, M99, M02/M30, M00/M01).
+// flow the block asks for (M98, M99, M02/M30, M00/M01, block_calls.h).
 #include <mbc/arith.h>
 
 #include <fmt/format.h>
 
+#include "block_calls.h"
 #include "g_codes.h"
 #include "motion.h"
 
@@ -49,8 +50,7 @@ struct Block {
   bool hasL = false;
   double p = 0.0;
   double l = 0.0;
-  int mCount = 0;
-  std::array<int, kMaxMCodes> m{};
+  BlockCodes codes;
 };
 
 bool isArcCenterLetter(char letter) {
@@ -62,7 +62,7 @@ bool isArcCenterLetter(char letter) {
 mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
   const double value = numeric(word.value);
   const double counts =
-      word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput()
+      word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
           : roundToCounts(value, ctx.scale());
   if (!fitsAddress(counts)) {
@@ -171,12 +171,12 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   return 0;
 }
 
-mbrt_status readMCode(mbrt_ctx& ctx, double value, Block& block) {
-  if (block.mCount == kMaxMCodes) {
+mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
+  if (codes.mCount == kMaxMCodes) {
     return raise(ctx, AlarmId::ImproperNcAddress,
                  fmt::format("more than {} M codes in one block", kMaxMCodes));
   }
-  block.m[block.mCount++] = static_cast<int>(value);
+  codes.m[codes.mCount++] = static_cast<int>(value);
   return 0;
 }
 
@@ -211,7 +211,21 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   const double value = roundHalfAway(numeric(word.value));
   ctx.modal.lastWords[index] = value;
-  return letter == 'M' ? readMCode(ctx, value, block) : 0;
+  switch (letter) {
+    case 'M':
+      return readMCode(ctx, value, block.codes);
+    case 'T':
+      block.codes.t = value;
+      return 0;
+    case 'S':
+      block.codes.s = value;
+      return 0;
+    case 'B':
+      block.codes.b = value;
+      return 0;
+    default:
+      return 0;
+  }
 }
 
 /// M98 P L: with no L and more than four digits, the high digits of P are
@@ -229,19 +243,20 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   if (repeat < 1.0) {
     return 0; // L0: no call
   }
-  flow->kind = MBRT_FLOW_CALL_SUB;
+  flow->kind = MBRT_FLOW_CALL;
+  flow->call_kind = MBRT_CALL_SUB;
   flow->program = static_cast<int>(program);
   flow->repeat = static_cast<long>(repeat);
   return 0;
 }
 
 mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
-  for (int i = 0; i < block.mCount; ++i) {
-    switch (block.m[i]) {
+  for (int i = 0; i < block.codes.mCount; ++i) {
+    switch (block.codes.m[i]) {
       case 0:
       case 1:
         ++ctx.optionalStops;
-        sendMessage(ctx, block.m[i] == 0
+        sendMessage(ctx, block.codes.m[i] == 0
                              ? "M00 program stop (the run goes on)"
                              : "M01 optional stop (the run goes on)");
         break;
@@ -277,6 +292,12 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       (words[i].letter == 'P' ? block.p : block.l) = value;
     }
   }
+  bool taken = false;
+  if (const mbrt_status status =
+          callInsteadOfBlock(ctx, words, count, flow, &taken);
+      status != 0 || taken) {
+    return status;
+  }
   if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
     return status;
   }
@@ -299,7 +320,11 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  return decideFlow(ctx, block, flow);
+  if (const mbrt_status status = decideFlow(ctx, block, flow)) {
+    return status;
+  }
+  block.codes.moved = motion.axisMask != 0;
+  return callAfterBlock(ctx, block.codes, flow);
 }
 
 } // namespace

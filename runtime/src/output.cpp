@@ -24,7 +24,7 @@ mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
   if (ctx->printSink.fn == nullptr) {
     return 0; // nothing in DPRNT can fail, so skip the formatting
   }
-  const bool prt = ctx->profile.prt();
+  const bool prt = ctx->profile.prt;
   std::string& line = ctx->scratch;
   line.clear();
   for (size_t i = 0; i < count; ++i) {

@@ -3,11 +3,16 @@
 // in a profile never silently selects a default.
 #include "profile.h"
 
+#include <mbc/g_codes.h>
+
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+
+#include "parameters.h"
 
 namespace mbc::rt {
 
@@ -105,21 +110,33 @@ void parseParameters(const json& value, Profile& profile) {
   for (const auto& [key, item] : object(value, "parameters").items()) {
     const std::string path = child("parameters", key);
     const auto n = keyNumber(key);
-    if (n == 3401) {
-      profile.param3401 = integer(item, path, 0, 255);
-    } else if (n == 6001) {
-      profile.param6001 = integer(item, path, 0, 255);
-    } else if (n == 6004) {
-      profile.param6004 = integer(item, path, 0, 255);
-    } else if (n == 3410) {
-      profile.param3410 = number(item, path);
-      if (profile.param3410 < 0.0) {
-        fail(path, "must not be negative");
-      }
-    } else {
+    const ParameterSpec* spec = n ? findParameter(*n) : nullptr;
+    if (spec == nullptr) {
       unknownKey(path);
     }
+    const double x = number(item, path);
+    if ((spec->whole && x != std::floor(x)) || x < spec->low ||
+        x > spec->high) {
+      fail(path,
+           fmt::format("must be a{} number from {} to {}",
+                       spec->whole ? " whole" : "", spec->low, spec->high));
+    }
+    // The compiler assumes FANUC's own G codes never call a macro.
+    if (*n >= 6050 && *n <= 6059 &&
+        isFanucGCode(static_cast<int>(std::fabs(x)) * 10)) {
+      fail(path, fmt::format("must not be a G code the control has (G{})",
+                             std::fabs(x)));
+    }
+    // Nor do the M codes that stop, end, call or return.
+    if (*n >= 6071 && *n <= 6089 &&
+        (x == 1 || x == 2 || x == 30 || x == 98 || x == 99)) {
+      fail(path, fmt::format("must not be M{:02} (0 = no code)", x));
+    }
+    profile.parameters[*n] = x;
   }
+  profile.decimalPointInput = profile.parameterBit(3401, 0);
+  profile.prt = profile.parameterBit(6001, 1);
+  profile.nat = profile.parameterBit(6004, 0);
 }
 
 void parseToolOffset(const json& value, const std::string& path,
@@ -284,6 +301,18 @@ Profile parseTopLevel(const json& root) {
 }
 
 } // namespace
+
+double Profile::parameter(int number) const {
+  if (const auto it = parameters.find(number); it != parameters.end()) {
+    return it->second;
+  }
+  const ParameterSpec* spec = findParameter(number);
+  return spec != nullptr ? spec->fallback : 0.0;
+}
+
+bool Profile::parameterBit(int number, int bit) const {
+  return (static_cast<long>(parameter(number)) >> bit & 1) != 0;
+}
 
 Profile defaultProfile() {
   Profile profile;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,12 +38,8 @@ struct Profile {
   std::string axes = "XYZ";
   bool inch = false;
   double rapidRate = 10000.0; // mm/min
-  // Raw parameter values as the profile gives them; the bits below are read
-  // from them.
-  int param3401 = 0;
-  int param6001 = 0;
-  int param6004 = 0;
-  double param3410 = 0.02; // arc radius tolerance in mm, 0 = no check
+  // The parameters the profile sets (parameters.h has the others' defaults).
+  std::map<int, double> parameters;
   int toolOffsetCount = 400;
   std::vector<ToolOffset> toolOffsets;           // index 0 unused
   std::vector<AxisValues> workOffsets;           // kWorkOffsetCount entries
@@ -55,14 +52,15 @@ struct Profile {
   double partsRequired = 0.0;
   bool blockSkip = false;
 
-  /// 3401#0 DPI: literals without decimal point are whole units.
-  bool decimalPointInput() const { return (param3401 & 1) != 0; }
+  // Bits read on every NC word or function call, kept out of the map.
+  bool decimalPointInput = false; // 3401#0 DPI: X10 is 10 mm, not 0.010
+  bool prt = false; // 6001#1 PRT: DPRNT drops leading zeros and the sign
+  bool nat = false; // 6004#0 NAT: ASIN/ATAN in -90..90 / -180..180
 
-  /// 6001#1 PRT: DPRNT drops leading zeros and the plus sign.
-  bool prt() const { return (param6001 & 2) != 0; }
-
-  /// 6004#0 NAT: ASIN/ATAN in -90..90 / -180..180.
-  bool nat() const { return (param6004 & 1) != 0; }
+  /// The value of a parameter, its default when the profile does not set
+  /// it, 0 for a parameter mbc does not model.
+  double parameter(int number) const;
+  bool parameterBit(int number, int bit) const;
 };
 
 /// The built-in 3-axis metric vertical mill.

@@ -25,13 +25,12 @@ const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
   return nullptr;
 }
 
-mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int macro,
+mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
                           const mbrt_word* args, size_t count, long repeat,
                           mbrt_body_fn body, void* user, mbrt_flow* out) {
   *out = mbrt_flow{};
   for (; repeat > 0; --repeat) {
-    mbrt_status st = macro ? mbrt_call_macro(ctx, program, args, count)
-                           : mbrt_call_sub(ctx, program);
+    mbrt_status st = mbrt_call(ctx, program, kind, args, count);
     if (st) {
       return st;
     }

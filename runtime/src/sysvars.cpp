@@ -13,6 +13,7 @@
 #include <cctype>
 #include <string_view>
 
+#include "block_calls.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -186,7 +187,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 11:
       return 50;
     case 12:
-      return 67;
+      return modalCallGroupValue(ctx);
     case 13:
       return 97;
     case 14:

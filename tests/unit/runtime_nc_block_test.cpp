@@ -91,7 +91,7 @@ TEST(RuntimeNcBlock, UnsupportedGCodes) {
                         "G28 (reference position return)\n");
   for (const char* block :
        {"G04 P100", "G41 D1", "G43 H1", "G81 Z-1. R1.", "G53 Z0",
-        "G68 X0 Y0 R45.", "G52 X0", "G16", "G92 X0", "G05.1 Q1", "G66 P9000"}) {
+        "G68 X0 Y0 R45.", "G52 X0", "G16", "G92 X0", "G05.1 Q1"}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
   }
@@ -229,7 +229,7 @@ TEST(RuntimeNcBlock, AdditionalWorkOffsets) {
 TEST(RuntimeNcBlock, SubprogramCallFlow) {
   Machine m;
   ASSERT_EQ(m.block("M98 P1234 L3"), 0);
-  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL_SUB);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL);
   EXPECT_EQ(m.flow().program, 1234);
   EXPECT_EQ(m.flow().repeat, 3);
   ASSERT_EQ(m.block("M98 P50010"), 0);

@@ -93,8 +93,8 @@ void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
 /* ---- Profile settings engines need --------------------------------------
  */
 
-/* A parameter of the machine profile (3401, 3410, 6001 or 6004; 0 for any
- * other number). Engines read 6004 bit 0 (NAT) for ASIN/ATAN. */
+/* A parameter of the machine profile (its default when the profile does not
+ * set it; 0 for a number mbc does not model, docs/machine-profile.md). */
 double mbrt_parameter(const mbrt_ctx* ctx, int number);
 /* 1 when the profile turns the optional block skip switch on: blocks
  * starting with '/' are skipped. */
@@ -173,23 +173,41 @@ typedef struct mbrt_word {
 double mbrt_address_increment(const mbrt_ctx* ctx, char letter);
 
 enum mbrt_flow_kind {
-  MBRT_FLOW_NEXT = 0,     /* go on with the next block */
-  MBRT_FLOW_CALL_SUB = 1, /* M98 P program L repeat */
-  MBRT_FLOW_RETURN = 2,   /* M99 [P seq] */
-  MBRT_FLOW_END = 3       /* M02 / M30 */
+  MBRT_FLOW_NEXT = 0,   /* go on with the next block */
+  MBRT_FLOW_CALL = 1,   /* call a program (M98, G66, a custom code...) */
+  MBRT_FLOW_RETURN = 2, /* M99 [P seq] */
+  MBRT_FLOW_END = 3     /* M02 / M30 */
+};
+
+/* How a program is called. Bit 0: a new local level; bit 1: called by a
+ * code (custom G/M code, M/T/S/B code subprogram), inside which codes no
+ * longer call programs; bit 2: called by G66/G66.1, whose own modal call is
+ * off inside. */
+enum mbrt_call_kind {
+  MBRT_CALL_SUB = 0,        /* M98 */
+  MBRT_CALL_MACRO = 1,      /* G65 */
+  MBRT_CALL_CODE_SUB = 2,   /* M code (6071-6079), T, S, B code */
+  MBRT_CALL_CODE_MACRO = 3, /* custom G code (6050-6059), M code (6080-) */
+  MBRT_CALL_MODAL = 5       /* G66 after a move, G66.1 at every block */
 };
 
 typedef struct mbrt_flow {
   int kind;        /* mbrt_flow_kind */
-  int program;     /* M98: program number */
-  long repeat;     /* M98: repeat count (L, or the legacy high digits of P) */
+  int program;     /* CALL: program number */
+  long repeat;     /* CALL: repeat count (L, or M98's legacy high P digits) */
   int has_seq;     /* M99 P given */
   double seq;      /* M99 P: sequence number to resume at in the caller */
   int counts_part; /* M02/M30 */
+  int call_kind;   /* CALL: mbrt_call_kind */
+  /* CALL of a macro: its arguments, valid until the block's call level
+   * executes its next NC block. */
+  const mbrt_word* args;
+  size_t arg_count;
 } mbrt_flow;
 
-/* Executes an NC block (modal G codes, motion, F S T M H D words) and tells
- * the engine what control transfer it asks for. */
+/* Executes an NC block (modal G codes, motion, canned cycles, F S T M H D
+ * words) and tells the engine what control transfer it asks for: the
+ * engine makes the calls (mbrt_run_call with flow->call_kind). */
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow);
 
@@ -201,16 +219,20 @@ void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
 void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
                      const mbrt_word* words, size_t count);
 
-/* G65/G66 call: a new local level whose #1..#33 are set from the argument
- * words (specification I and II, spec §5.2-5.4). P and L are not passed.
- * Checks macro and total nesting (PS0122, PS0077). */
+/* Enters a call of `program` (mbrt_call_kind): a macro gets a new local
+ * level whose #1..#33 are set from the argument words (specification I and
+ * II, spec §5.2-5.4; a G66.1 block's G, L and P go to #10, #12, #16), a
+ * subprogram shares the caller's. Checks nesting (PS0122, PS0077). */
+mbrt_status mbrt_call(mbrt_ctx* ctx, const char* program, int kind,
+                      const mbrt_word* args, size_t count);
+/* mbrt_call of a G65 macro. */
 mbrt_status mbrt_call_macro(mbrt_ctx* ctx, const char* program,
                             const mbrt_word* args, size_t count);
 /* `mbc run --arg`: sets the main program's #1..#33 from argument words with
  * the G65 mapping, without a new call level. Call after mbrt_start. */
 mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
                                size_t count);
-/* M98 call: same local level. Checks nesting (PS0077). */
+/* mbrt_call of an M98 subprogram. */
 mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program);
 /* M99: leaves the innermost call, restoring the caller's locals for G65. */
 void mbrt_return(mbrt_ctx* ctx);
@@ -247,10 +269,10 @@ typedef struct mbrt_program_table {
 const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
                                       int number, const char* name);
 
-/* A G65 (macro = 1) or M98 call of `body`, `repeat` times (none when <= 0):
- * each time a new call level, the body, the return; an M99 P stops the
- * repetitions and is passed on in out->has_seq/seq. */
-mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int macro,
+/* A call of `body` (kind: mbrt_call_kind), `repeat` times (none when <= 0):
+ * each time mbrt_call, the body, the return; an M99 P stops the repetitions
+ * and is passed on in out->has_seq/seq. */
+mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
                           const mbrt_word* args, size_t count, long repeat,
                           mbrt_body_fn body, void* user, mbrt_flow* out);
 

@@ -1,0 +1,10 @@
+// Which G codes the control has: the compiler's view of the runtime's G code
+// table (a G word that is not one may be a custom G code's macro call).
+#pragma once
+
+namespace mbc {
+
+/// Whether G<tenths / 10>.<tenths % 10> is a G code of a FANUC 0i-MF.
+bool isFanucGCode(int tenths);
+
+} // namespace mbc

@@ -1,0 +1,35 @@
+// The parameters mbc models. Bit parameters take the whole byte (bit 0 = 1).
+#include "parameters.h"
+
+#include <array>
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr double kMaxCode = 99'999'999.0;
+
+constexpr std::array kParameters = {
+    ParameterSpec{3401, 3401, 0, 255, 0, true},     // #0 DPI
+    ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
+    ParameterSpec{6001, 6001, 0, 255, 0, true},     // #1 PRT, #5 TCS
+    ParameterSpec{6004, 6004, 0, 255, 0, true},     // #0 NAT
+    ParameterSpec{6007, 6007, 0, 255, 0, true},     // #4 BCS, #5 SCS
+    // G codes calling O9010..O9019; negative: a modal (G66-like) call.
+    ParameterSpec{6050, 6059, -9999, 9999, 0, true},
+    ParameterSpec{6071, 6079, 0, kMaxCode, 0, true}, // M codes -> O9001..
+    ParameterSpec{6080, 6089, 0, kMaxCode, 0, true}, // M codes -> O9020..
+};
+
+} // namespace
+
+const ParameterSpec* findParameter(int number) {
+  for (const ParameterSpec& spec : kParameters) {
+    if (number >= spec.first && number <= spec.last) {
+      return &spec;
+    }
+  }
+  return nullptr;
+}
+
+} // namespace mbc::rt

@@ -1,0 +1,19 @@
+// The FANUC parameters a machine profile may set: their numbers, ranges and
+// defaults (docs/machine-profile.md lists their meaning).
+#pragma once
+
+namespace mbc::rt {
+
+struct ParameterSpec {
+  int first; // a run of numbers with the same range: 6050..6059
+  int last;
+  double low;
+  double high;
+  double fallback; // the value of a parameter the profile does not set
+  bool whole;      // bit parameters and codes take whole numbers
+};
+
+/// The spec of parameter `number`, or nullptr when profiles cannot set it.
+const ParameterSpec* findParameter(int number);
+
+} // namespace mbc::rt
