@@ -67,13 +67,27 @@ struct PendingAlarm {
   std::vector<CallSite> stack; // innermost first
 };
 
+/// The drilling data of a canned cycle, kept from block to block until G80
+/// or a group 01 code: levels on the drilling axis, in workpiece counts.
+struct CycleData {
+  Counts initial = 0; // the level when the cycle mode began (G98)
+  bool hasR = false;
+  Counts r = 0; // the R level (G99), the initial level when not given
+  bool hasZ = false;
+  Counts z = 0; // the hole bottom
+  Counts q = 0; // peck depth (G73, G83) or shift (G76, G87)
+  double p = 0; // dwell at the bottom, ms
+};
+
 /// Modal G codes (#4001..) and the last value of each address (#4101..).
 struct ModalState {
   int motion = 0; // 0 1 2 3
   int plane = 17;
   bool incremental = false;
   bool inch = false;
-  bool returnToR = false;             // G99
+  bool returnToR = false; // G99
+  int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80
+  CycleData cycleData;
   int workOffset = kFirstG54Offset;   // index into workOffsets
   double feed = 0.0;                  // modal F
   std::array<double, 30> lastWords{}; // #4101..#4130 by index

@@ -79,7 +79,8 @@ void moveTo(mbrt_ctx& ctx, const AxisCounts& target) {
   ++ctx.moves;
 }
 
-void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center) {
+void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center,
+          int cycle = 0) {
   if (ctx.motionSink.fn == nullptr) {
     return;
   }
@@ -102,6 +103,7 @@ void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center) {
   motion.file = ctx.block.file;
   motion.line = ctx.block.line;
   motion.program = ctx.programName();
+  motion.cycle = cycle;
   ctx.motionSink.fn(ctx.motionSink.user, &motion);
 }
 
@@ -115,15 +117,6 @@ double distance(const AxisCounts& from, const AxisCounts& to, int axisCount,
     }
   }
   return std::sqrt(sum);
-}
-
-mbrt_status moveLinear(mbrt_ctx& ctx, const AxisCounts& start,
-                       const AxisCounts& target) {
-  const bool rapid = ctx.modal.motion == 0;
-  advanceClock(ctx, distance(start, target, ctx.axisCount(), 0), rapid);
-  moveTo(ctx, target);
-  emit(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, target, {0, 0});
-  return 0;
 }
 
 /// R > 0 takes the arc of at most 180 degrees, R < 0 the longer one; an R
@@ -243,19 +236,45 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   ctx.modal.inch = inch;
 }
 
+AxisCounts workPosition(const mbrt_ctx& ctx) {
+  AxisCounts position{};
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    position[axis] = workCounts(ctx, axis);
+  }
+  return position;
+}
+
+mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                         int cycle) {
+  if (!rapid && !(ctx.modal.feed > 0.0)) {
+    return raise(ctx, AlarmId::FeedZero,
+                 cycle != 0 ? fmt::format("G{} needs F greater than 0", cycle)
+                            : fmt::format("G{:02} needs F greater than 0",
+                                          ctx.modal.motion));
+  }
+  const AxisCounts start = workPosition(ctx);
+  advanceClock(ctx, distance(start, target, ctx.axisCount(), 0), rapid);
+  moveTo(ctx, target);
+  emit(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, target, {0, 0},
+       cycle);
+  return 0;
+}
+
+void dwell(mbrt_ctx& ctx, double seconds) {
+  ctx.clockMs += seconds * 1000.0;
+  ctx.clockHours += seconds / 3600.0;
+}
+
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
-  if (mode != 0 && !(ctx.modal.feed > 0.0)) {
-    return raise(ctx, AlarmId::FeedZero,
-                 fmt::format("G{:02} needs F greater than 0", mode));
-  }
-  AxisCounts start{};
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    start[axis] = workCounts(ctx, axis);
-  }
+  const AxisCounts start = workPosition(ctx);
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1) {
-    return moveLinear(ctx, start, target);
+    return moveStraight(ctx, target, mode == 0);
+  }
+  if (!(ctx.modal.feed > 0.0)) {
+    return raise(ctx, AlarmId::FeedZero,
+                 fmt::format("G{:02} needs F greater than 0", mode));
   }
   return moveArc(ctx, words, start, target);
 }

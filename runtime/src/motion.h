@@ -25,4 +25,15 @@ void switchUnits(mbrt_ctx& ctx, bool inch);
 /// Moves in the modal motion mode (G00..G03) to the block's end point.
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words);
 
+/// The position of every axis in the active workpiece coordinate system.
+AxisCounts workPosition(const mbrt_ctx& ctx);
+
+/// A straight move to `target` (workpiece coordinates): a rapid, or a feed
+/// at the modal F (PS0011 when F is 0). `cycle` marks a canned cycle's move.
+mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                         int cycle = 0);
+
+/// Advances the simulated clock by a dwell.
+void dwell(mbrt_ctx& ctx, double seconds);
+
 } // namespace mbc::rt

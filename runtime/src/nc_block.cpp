@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "block_calls.h"
+#include "canned_cycles.h"
 #include "g_codes.h"
 #include "motion.h"
 
@@ -50,8 +51,17 @@ struct Block {
   bool hasL = false;
   double p = 0.0;
   double l = 0.0;
+  std::optional<Counts> q;
+  std::optional<double> k; // the repeat count of a canned cycle
+  bool dwell = false;      // G04: P ms or X seconds
+  double dwellSeconds = 0.0;
   BlockCodes codes;
 };
+
+bool isCycleCode(int tenths) {
+  return tenths == 730 || tenths == 740 || tenths == 760 ||
+         (tenths >= 810 && tenths <= 890 && tenths % 10 == 0);
+}
 
 bool isArcCenterLetter(char letter) {
   return letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
@@ -94,6 +104,12 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 20:
     case 30:
       next.motion = tenths / 10;
+      next.cycle = 0; // a group 01 code cancels the canned cycle
+      return 0;
+    case 40:
+      return 0; // G04: the block is a dwell (executeBlock)
+    case 800:
+      next.cycle = 0;
       return 0;
     case 170:
     case 180:
@@ -131,12 +147,15 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 640: // G64
     case 670: // G67
     case 690: // G69
-    case 800: // G80
     case 940: // G94
     case 970: // G97
       return 0;
     default:
       break;
+  }
+  if (isCycleCode(tenths)) {
+    next.cycle = tenths / 10;
+    return 0;
   }
   if (const GCodeInfo* code = findGCode(tenths)) {
     return raise(ctx, AlarmId::Unsupported,
@@ -166,8 +185,11 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   const bool inch = next.inch;
   next.inch = ctx.modal.inch;
+  const int cycle = next.cycle;
+  next.cycle = ctx.modal.cycle;
   ctx.modal = next;
   switchUnits(ctx, inch);
+  changeCycle(ctx, cycle);
   return 0;
 }
 
@@ -183,6 +205,17 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
 /// Every word but G, P and L, in program order.
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
+  if (block.dwell && letter == 'X') {
+    // X1.5 is 1.5 s; X1500 counts milliseconds, like P.
+    block.dwellSeconds = word.kind == MBRT_WORD_INT_LITERAL
+                             ? numeric(word.value) / 1000.0
+                             : numeric(word.value);
+    return 0;
+  }
+  if (letter == 'K' && ctx.modal.cycle != 0) {
+    block.k = roundHalfAway(numeric(word.value));
+    return 0;
+  }
   if (const int axis = ctx.axisOf(letter); axis >= 0) {
     block.motion.axisMask |= std::uint32_t{1} << axis;
     return toCounts(ctx, word, &block.motion.axis[axis]);
@@ -202,7 +235,8 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return 0;
   }
   if (letter == 'Q') {
-    return 0; // only canned cycles use it, and they alarm as unsupported
+    block.q.emplace();
+    return toCounts(ctx, word, &*block.q);
   }
   const int index = lastWordIndex(letter);
   if (index < 0) {
@@ -282,6 +316,18 @@ mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   return 0;
 }
 
+/// G00..G03 motion, when the block has any.
+mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
+  const bool arcMode = ctx.modal.motion >= 2;
+  // An arc block may leave out the end point: a full circle (I J K) or, with
+  // R, no motion at all.
+  if (motion.axisMask != 0 ||
+      (arcMode && (motion.centerMask != 0 || motion.hasR))) {
+    return executeMotion(ctx, motion);
+  }
+  return 0;
+}
+
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
   Block block;
@@ -298,6 +344,10 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       status != 0 || taken) {
     return status;
   }
+  for (size_t i = 0; i < count; ++i) {
+    block.dwell = block.dwell || (words[i].letter == 'G' &&
+                                  roundHalfAway(words[i].value * 10.0) == 40.0);
+  }
   if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
     return status;
   }
@@ -311,14 +361,20 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     }
   }
   const MotionWords& motion = block.motion;
-  const bool arcMode = ctx.modal.motion >= 2;
-  // An arc block may leave out the end point: a full circle (I J K) or, with
-  // R, no motion at all.
-  if (motion.axisMask != 0 ||
-      (arcMode && (motion.centerMask != 0 || motion.hasR))) {
-    if (const mbrt_status status = executeMotion(ctx, motion)) {
+  if (block.dwell) {
+    dwell(ctx, block.hasP ? block.p / 1000.0 : block.dwellSeconds);
+  } else if (ctx.modal.cycle != 0) {
+    if (!block.k && block.hasL) {
+      block.k = block.l; // the older controls' L
+    }
+    const CycleWords cycle{
+        &motion, block.q,
+        block.hasP ? std::optional<double>(block.p) : std::nullopt, block.k};
+    if (const mbrt_status status = executeCycleBlock(ctx, cycle)) {
       return status;
     }
+  } else if (const mbrt_status status = executeBlockMotion(ctx, motion)) {
+    return status;
   }
   if (const mbrt_status status = decideFlow(ctx, block, flow)) {
     return status;

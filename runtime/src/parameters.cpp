@@ -12,6 +12,8 @@ constexpr double kMaxCode = 99'999'999.0;
 constexpr std::array kParameters = {
     ParameterSpec{3401, 3401, 0, 255, 0, true},     // #0 DPI
     ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
+    ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift
+    ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // G73 retract, G83 gap
     ParameterSpec{6001, 6001, 0, 255, 0, true},     // #1 PRT, #5 TCS
     ParameterSpec{6004, 6004, 0, 255, 0, true},     // #0 NAT
     ParameterSpec{6007, 6007, 0, 255, 0, true},     // #4 BCS, #5 SCS

@@ -181,7 +181,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 8:
       return 49;
     case 9:
-      return 80;
+      return modal.cycle != 0 ? modal.cycle : 80;
     case 10:
       return modal.returnToR ? 99 : 98;
     case 11:

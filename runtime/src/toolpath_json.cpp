@@ -80,6 +80,9 @@ std::string toolpathJsonLine(const mbrt_motion& m) {
       appendCoordinate(out, m.center[i], m.decimals);
     }
   }
+  if (m.cycle != 0) {
+    out += fmt::format(",\"cycle\":\"G{}\"", m.cycle);
+  }
   out += fmt::format(",\"line\":{},\"prog\":", m.line);
   appendString(out, m.program);
   out += "}\n";

@@ -65,6 +65,7 @@ typedef struct mbrt_motion {
   const char* file;          /* source of the block */
   int line;
   const char* program; /* "O1000", "<NAME>" or "MAIN" */
+  int cycle;           /* the canned cycle making the move (81 for G81), 0 */
 } mbrt_motion;
 
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);

@@ -1,0 +1,259 @@
+// Canned cycles of the M series: G73 and G83 peck, G74 and G84 tapping, G76
+// and G87 fine and back boring, G81/G82 drilling, G85/G86/G88/G89 boring.
+// Every hole: position in the plane at the current level (rapid), rapid to
+// R, the cycle's own moves, then back to the initial level (G98) or R (G99).
+// The drilling axis is Z (parameter 5101#0 FXY = 0, FANUC's default).
+#include "canned_cycles.h"
+
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+/// A length parameter in mm as counts of the current input unit.
+Counts parameterCounts(const mbrt_ctx& ctx, int number) {
+  const double mm = ctx.profile.parameter(number);
+  return static_cast<Counts>(
+      roundHalfAway(mm * (ctx.modal.inch ? 10'000.0 / kMmPerInch : 1000.0)));
+}
+
+/// The moves of one hole; `axis` is the drilling axis.
+class Hole {
+public:
+  Hole(mbrt_ctx& ctx, int axis) : ctx_(ctx), axis_(axis) {}
+
+  mbrt_status to(Counts level, bool rapid) {
+    AxisCounts target = workPosition(ctx_);
+    if (target[axis_] == level) {
+      return 0;
+    }
+    target[axis_] = level;
+    return moveStraight(ctx_, target, rapid, ctx_.modal.cycle);
+  }
+
+  mbrt_status rapid(Counts level) { return to(level, true); }
+
+  mbrt_status feed(Counts level) { return to(level, false); }
+
+  void dwellAtBottom() { dwell(ctx_, data().p / 1000.0); }
+
+  /// G76/G87: the tool moves off the bore wall by Q (away = 1) or back
+  /// (away = -1), in the direction parameter 5101 #4 RD1 and #5 RD2 give:
+  /// +, -, along the plane's first or second axis.
+  mbrt_status shift(int away) {
+    const bool second = ctx_.profile.parameterBit(5101, 5);
+    const bool negative = ctx_.profile.parameterBit(5101, 4);
+    const int axis = planeAxis(second ? 1 : 0);
+    if (axis < 0 || data().q == 0) {
+      return 0;
+    }
+    AxisCounts target = workPosition(ctx_);
+    target[axis] += (negative ? -1 : 1) * away * data().q;
+    return moveStraight(ctx_, target, true, ctx_.modal.cycle);
+  }
+
+  const CycleData& data() const { return ctx_.modal.cycleData; }
+
+  Counts rLevel() const { return data().hasR ? data().r : data().initial; }
+
+  Counts returnLevel() const {
+    return ctx_.modal.returnToR ? rLevel() : data().initial;
+  }
+
+  /// Which way the hole goes from R to Z: -1 down, 1 up (G87 goes up).
+  int down() const { return data().z < rLevel() ? -1 : 1; }
+
+  mbrt_status peck(bool toR);
+  mbrt_status backBore();
+  mbrt_status drill();
+
+private:
+  int planeAxis(int index) const {
+    static constexpr char kPlanes[3][2] = {{'X', 'Y'}, {'Z', 'X'}, {'Y', 'Z'}};
+    return ctx_.axisOf(kPlanes[ctx_.modal.plane - 17][index]);
+  }
+
+  mbrt_ctx& ctx_;
+  int axis_;
+};
+
+/// G73 (toR false): feed Q, back d (5114) at rapid, feed on. G83 (toR):
+/// feed Q, rapid to R, rapid down to d (5115) short of the depth reached,
+/// feed on.
+mbrt_status Hole::peck(bool toR) {
+  const Counts q = data().q > 0 ? data().q : std::llabs(data().z - rLevel());
+  const Counts d = parameterCounts(ctx_, toR ? 5115 : 5114);
+  const int dir = down();
+  Counts depth = rLevel();
+  while (depth != data().z) {
+    Counts next = depth + dir * q;
+    if ((data().z - next) * dir < 0) {
+      next = data().z;
+    }
+    if (depth != rLevel()) {
+      if (toR) {
+        if (mbrt_status st = rapid(rLevel())) {
+          return st;
+        }
+        if (mbrt_status st = rapid(depth - dir * d)) {
+          return st;
+        }
+      } else if (mbrt_status st = rapid(depth - dir * d)) {
+        return st;
+      }
+    }
+    if (mbrt_status st = feed(next)) {
+      return st;
+    }
+    depth = next;
+  }
+  return 0;
+}
+
+/// G87: shift, rapid to R below the hole, shift back, feed up to Z, dwell,
+/// shift, rapid to the initial level, shift back. Always returns to the
+/// initial level.
+mbrt_status Hole::backBore() {
+  mbrt_status st = 0;
+  (st = shift(1)) || (st = rapid(rLevel())) || (st = shift(-1)) ||
+      (st = feed(data().z));
+  if (st != 0) {
+    return st;
+  }
+  dwellAtBottom();
+  (st = shift(1)) || (st = rapid(data().initial)) || (st = shift(-1));
+  return st;
+}
+
+mbrt_status Hole::drill() {
+  const int cycle = ctx_.modal.cycle;
+  if (cycle == 87) {
+    return backBore();
+  }
+  if (mbrt_status st = rapid(rLevel())) {
+    return st;
+  }
+  mbrt_status st = 0;
+  switch (cycle) {
+    case 73:
+    case 83:
+      st = peck(cycle == 83);
+      break;
+    case 74: // tapping: feed out with the spindle reversed
+    case 84:
+    case 89:
+      if ((st = feed(data().z)) == 0) {
+        dwellAtBottom();
+        st = feed(rLevel());
+      }
+      break;
+    case 85:
+      (st = feed(data().z)) || (st = feed(rLevel()));
+      break;
+    case 76:
+      if ((st = feed(data().z)) == 0) {
+        dwellAtBottom();
+        (st = shift(1)) || (st = rapid(returnLevel())) || (st = shift(-1));
+      }
+      break;
+    default: // 81 82 86 88: feed in, (dwell,) rapid out
+      st = feed(data().z);
+      if (cycle == 82 || cycle == 88) {
+        dwellAtBottom();
+      }
+      break;
+  }
+  return st != 0 ? st : rapid(returnLevel());
+}
+
+/// R, Z, Q, P into the drilling data. In G91, R is measured from the
+/// initial level and Z from R.
+void takeDrillingData(mbrt_ctx& ctx, const CycleWords& words, int axis) {
+  CycleData& data = ctx.modal.cycleData;
+  const bool incremental = ctx.modal.incremental;
+  if (words.motion->hasR) {
+    data.hasR = true;
+    data.r = incremental ? data.initial + words.motion->r : words.motion->r;
+  }
+  if ((words.motion->axisMask >> axis & 1) != 0) {
+    const Counts z = words.motion->axis[axis];
+    const Counts r = data.hasR ? data.r : data.initial;
+    data.hasZ = true;
+    data.z = incremental ? r + z : z;
+  }
+  if (words.q) {
+    data.q = std::llabs(*words.q);
+  }
+  if (words.p) {
+    data.p = *words.p;
+  }
+}
+
+} // namespace
+
+void changeCycle(mbrt_ctx& ctx, int cycle) {
+  if (cycle == ctx.modal.cycle) {
+    return;
+  }
+  if (cycle == 0 || ctx.modal.cycle == 0) {
+    ctx.modal.cycleData = CycleData{};
+    const int axis = ctx.axisOf('Z');
+    if (cycle != 0 && axis >= 0) {
+      ctx.modal.cycleData.initial = workPosition(ctx)[axis];
+    }
+  }
+  ctx.modal.cycle = cycle;
+}
+
+mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
+  const int axis = ctx.axisOf('Z');
+  const int cycle = ctx.modal.cycle;
+  if (axis < 0) {
+    return raise(
+        ctx, AlarmId::ImproperNcAddress,
+        fmt::format("G{} drills along Z, which this machine lacks", cycle));
+  }
+  takeDrillingData(ctx, words, axis);
+  const std::uint32_t plane = words.motion->axisMask & ~(1u << axis);
+  if (words.motion->axisMask == 0 && !words.motion->hasR) {
+    return 0;
+  }
+  const CycleData& data = ctx.modal.cycleData;
+  if (!data.hasZ) {
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("G{} without Z (the hole bottom)", cycle));
+  }
+  const double repeat = words.k ? roundHalfAway(*words.k) : 1.0;
+  if (repeat < 0.0 || repeat > 9999.0) {
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("G{} K{}: K must be 0 to 9999", cycle, repeat));
+  }
+  Hole hole(ctx, axis);
+  for (int n = 0; n < static_cast<int>(repeat); ++n) {
+    AxisCounts target = workPosition(ctx);
+    for (int a = 0; a < ctx.axisCount(); ++a) {
+      if ((plane >> a & 1) != 0) {
+        target[a] = ctx.modal.incremental ? target[a] + words.motion->axis[a]
+                                          : words.motion->axis[a];
+      }
+    }
+    if (target != workPosition(ctx)) {
+      if (mbrt_status st = moveStraight(ctx, target, true, cycle)) {
+        return st;
+      }
+    }
+    if (mbrt_status st = hole.drill()) {
+      return st;
+    }
+  }
+  return 0;
+}
+
+} // namespace mbc::rt

@@ -1,0 +1,71 @@
+// Canned cycles (runtime/src/canned_cycles.cpp): the moves of one hole, the
+// modal drilling data and the alarms.
+#include "runtime_test_support.h"
+
+namespace mbc::test {
+
+TEST(RuntimeCannedCycles, G81HoleMovesAndReturnLevels) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 Z20."), 0);
+  ASSERT_EQ(m.block("G99 G81 X5. Z-3. R1. F60."), 0);
+  ASSERT_EQ(m.json().size(), 5u);
+  EXPECT_EQ(m.json()[1], "{\"motion\":\"rapid\",\"x\":5,\"y\":0,\"z\":20,"
+                         "\"cycle\":\"G81\",\"line\":1,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.json()[3], "{\"motion\":\"linear\",\"x\":5,\"y\":0,\"z\":-3,"
+                         "\"f\":60,\"cycle\":\"G81\",\"line\":1,"
+                         "\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.read(5003), 1.0); // G99: at R
+  ASSERT_EQ(m.block("G98 X6."), 0);
+  EXPECT_EQ(m.read(5003), 20.0); // G98: the initial level
+  ASSERT_EQ(m.block("G80"), 0);
+  EXPECT_EQ(m.read(4009), 80.0);
+}
+
+TEST(RuntimeCannedCycles, BlocksWithoutAxisWordsOnlyKeepData) {
+  Machine m;
+  ASSERT_EQ(m.block("G81 Z-3. F60."), 0); // Z is an axis word: drills here
+  const size_t moves = m.motions().size();
+  ASSERT_EQ(m.block("F80. Q1."), 0);
+  EXPECT_EQ(m.motions().size(), moves);
+  ASSERT_EQ(m.block("X1. K0"), 0);
+  EXPECT_EQ(m.motions().size(), moves);
+}
+
+TEST(RuntimeCannedCycles, GroupOneCodesCancelTheCycleAndItsData) {
+  Machine m;
+  ASSERT_EQ(m.block("G81 X1. Z-3. R1. F60."), 0);
+  ASSERT_EQ(m.block("G01 X2."), 0);
+  EXPECT_EQ(m.read(4009), 80.0);
+  EXPECT_EQ(m.block("G81 X3.", 4), status(AlarmId::ImproperNcAddress));
+  EXPECT_EQ(m.report(), "test.nc:4: alarm PS0009: IMPROPER NC-ADDRESS: G81 "
+                        "without Z (the hole bottom)\n");
+}
+
+TEST(RuntimeCannedCycles, PeckDrillingRetractsByTheParameter) {
+  Machine m(R"({"parameters": {"5114": 0.5}})");
+  ASSERT_EQ(m.block("G73 Z-3. R0 Q1. F60."), 0);
+  std::vector<double> z;
+  for (const mbrt_motion& motion : m.motions()) {
+    z.push_back(motion.end[2]);
+  }
+  EXPECT_EQ(z, (std::vector<double>{-1, -0.5, -2, -1.5, -3, 0}));
+}
+
+TEST(RuntimeCannedCycles, FeedZeroAndBadRepeat) {
+  Machine m;
+  EXPECT_EQ(m.block("G81 X1. Z-1. R1."), status(AlarmId::FeedZero));
+  Machine n;
+  EXPECT_EQ(n.block("G81 X1. Z-1. R1. F10. K10000"),
+            status(AlarmId::ImproperNcAddress));
+}
+
+TEST(RuntimeCannedCycles, DwellAdvancesTheClock) {
+  Machine m;
+  ASSERT_EQ(m.block("G04 P1500"), 0);
+  ASSERT_EQ(m.block("G04 X2."), 0);
+  ASSERT_EQ(m.block("G04 X250"), 0);
+  EXPECT_EQ(m.read(3001), 3750.0);
+  EXPECT_TRUE(m.motions().empty());
+}
+
+} // namespace mbc::test
