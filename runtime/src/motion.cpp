@@ -260,6 +260,41 @@ mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   return 0;
 }
 
+namespace {
+
+/// The target whose axes in `mask` sit at `machine` in machine coordinates.
+AxisCounts machineTarget(const mbrt_ctx& ctx, std::uint32_t mask,
+                         const AxisCounts& machine) {
+  AxisCounts target = workPosition(ctx);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((mask >> axis & 1) != 0) {
+      target[axis] = machine[axis] - ctx.machine[axis] + workCounts(ctx, axis);
+    }
+  }
+  return target;
+}
+
+mbrt_status rapidIfMoving(mbrt_ctx& ctx, const AxisCounts& target) {
+  return target == workPosition(ctx) ? 0 : moveStraight(ctx, target, true);
+}
+
+} // namespace
+
+mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words) {
+  const AxisCounts intermediate = workTarget(ctx, words, workPosition(ctx));
+  if (const mbrt_status status = rapidIfMoving(ctx, intermediate)) {
+    return status;
+  }
+  return rapidIfMoving(ctx, machineTarget(ctx, words.axisMask, AxisCounts{}));
+}
+
+mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
+  if (ctx.modal.incremental) {
+    return 0;
+  }
+  return rapidIfMoving(ctx, machineTarget(ctx, words.axisMask, words.axis));
+}
+
 void dwell(mbrt_ctx& ctx, double seconds) {
   ctx.clockMs += seconds * 1000.0;
   ctx.clockHours += seconds / 3600.0;

@@ -33,6 +33,13 @@ AxisCounts workPosition(const mbrt_ctx& ctx);
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle = 0);
 
+/// G28: rapid to the intermediate point the axis words give, then to the
+/// reference position (machine zero) on those axes.
+mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words);
+
+/// G53: rapid to machine coordinates on the axes written (ignored in G91).
+mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words);
+
 /// Advances the simulated clock by a dwell.
 void dwell(mbrt_ctx& ctx, double seconds);
 

@@ -52,9 +52,9 @@ struct Block {
   double p = 0.0;
   double l = 0.0;
   std::optional<Counts> q;
-  std::optional<double> k; // the repeat count of a canned cycle
-  bool dwell = false;      // G04: P ms or X seconds
-  double dwellSeconds = 0.0;
+  std::optional<double> k;   // the repeat count of a canned cycle
+  int nonModal = 0;          // G04 (40), G28 (280), G53 (530)
+  double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
 };
 
@@ -97,7 +97,7 @@ mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, const Block& block) {
 /// One G code into `next`; codes of one group overwrite each other, so the
 /// last one of a block wins.
 mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
-                       const Block& block) {
+                       Block& block) {
   switch (tenths) {
     case 0:
     case 10:
@@ -106,8 +106,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       next.motion = tenths / 10;
       next.cycle = 0; // a group 01 code cancels the canned cycle
       return 0;
-    case 40:
-      return 0; // G04: the block is a dwell (executeBlock)
+    case 40:  // G04 dwell
+    case 280: // G28 reference position return
+    case 530: // G53 machine coordinates
+      block.nonModal = tenths;
+      return 0;
     case 800:
       next.cycle = 0;
       return 0;
@@ -167,7 +170,7 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
 /// G codes take effect before every other word of the block: G20/G21 change
 /// how the block's own coordinates read.
 mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                        const Block& block) {
+                        Block& block) {
   ModalState next = ctx.modal;
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter != 'G') {
@@ -205,7 +208,7 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
 /// Every word but G, P and L, in program order.
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
-  if (block.dwell && letter == 'X') {
+  if (block.nonModal == 40 && letter == 'X') {
     // X1.5 is 1.5 s; X1500 counts milliseconds, like P.
     block.dwellSeconds = word.kind == MBRT_WORD_INT_LITERAL
                              ? numeric(word.value) / 1000.0
@@ -344,10 +347,6 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       status != 0 || taken) {
     return status;
   }
-  for (size_t i = 0; i < count; ++i) {
-    block.dwell = block.dwell || (words[i].letter == 'G' &&
-                                  roundHalfAway(words[i].value * 10.0) == 40.0);
-  }
   if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
     return status;
   }
@@ -361,8 +360,16 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     }
   }
   const MotionWords& motion = block.motion;
-  if (block.dwell) {
+  if (block.nonModal == 40) {
     dwell(ctx, block.hasP ? block.p / 1000.0 : block.dwellSeconds);
+  } else if (block.nonModal == 280) {
+    if (const mbrt_status status = returnToReference(ctx, motion)) {
+      return status;
+    }
+  } else if (block.nonModal == 530) {
+    if (const mbrt_status status = moveInMachineCoordinates(ctx, motion)) {
+      return status;
+    }
   } else if (ctx.modal.cycle != 0) {
     if (!block.k && block.hasL) {
       block.k = block.l; // the older controls' L

@@ -86,10 +86,10 @@ TEST(RuntimeNcBlock, FeedZeroAlarm) {
 
 TEST(RuntimeNcBlock, UnsupportedGCodes) {
   Machine m;
-  EXPECT_EQ(m.block("G28 X0", 3), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.block("G30 X0", 3), status(AlarmId::Unsupported));
   EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
-                        "G28 (reference position return)\n");
-  for (const char* block : {"G41 D1", "G43 H1", "G53 Z0", "G68 X0 Y0 R45.",
+                        "G30 (2nd, 3rd and 4th reference position return)\n");
+  for (const char* block : {"G41 D1", "G43 H1", "G29 X0", "G68 X0 Y0 R45.",
                             "G52 X0", "G16", "G92 X0", "G05.1 Q1"}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
@@ -320,4 +320,24 @@ TEST(RuntimeNcBlock, AddressIncrements) {
 }
 
 } // namespace
+
+TEST(RuntimeNcBlock, ReferenceReturnAndMachineCoordinates) {
+  Machine m(R"({"work_offsets": {"G54": [-200, -100, -300]}})");
+  ASSERT_EQ(m.block("G90 G00 X10. Y20. Z5."), 0);
+  ASSERT_EQ(m.block("G91 G28 Z0"), 0); // through the current point
+  EXPECT_EQ(m.read(5023), 0.0);
+  EXPECT_EQ(m.read(5043), 300.0);
+  ASSERT_EQ(m.block("G90 G28 X0 Y0"), 0); // through X0 Y0
+  ASSERT_EQ(m.motions().size(), 4u);
+  EXPECT_EQ(m.motions()[2].end[0], 0.0);
+  EXPECT_EQ(m.read(5021), 0.0);
+  EXPECT_EQ(m.read(5041), 200.0);
+  EXPECT_EQ(m.read(5003), 300.0);
+  ASSERT_EQ(m.block("G53 Z-50."), 0);
+  EXPECT_EQ(m.read(5023), -50.0);
+  EXPECT_EQ(m.read(4001), 0.0);          // G28 and G53 are one-shot
+  ASSERT_EQ(m.block("G91 G53 Z10."), 0); // ignored in G91
+  EXPECT_EQ(m.read(5023), -50.0);
+}
+
 } // namespace mbc::test
