@@ -250,14 +250,15 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
     *taken = true;
     return 0;
   }
-  *taken = !insideCodeCall(ctx) && callCustomCode(ctx, words, count, flow);
+  *taken = ctx.profile.codeCalls && !insideCodeCall(ctx) &&
+           callCustomCode(ctx, words, count, flow);
   return 0;
 }
 
 mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                            mbrt_flow* flow) {
   std::vector<Wanted> wanted;
-  if (!insideCodeCall(ctx)) {
+  if (ctx.profile.codeCalls && !insideCodeCall(ctx)) {
     wantCodeSubprograms(ctx, codes, wanted);
   }
   const ModalCall* modal =

@@ -244,20 +244,38 @@ AxisCounts workPosition(const mbrt_ctx& ctx) {
   return position;
 }
 
-mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
-                         int cycle) {
-  if (!rapid && !(ctx.modal.feed > 0.0)) {
-    return raise(ctx, AlarmId::FeedZero,
-                 cycle != 0 ? fmt::format("G{} needs F greater than 0", cycle)
-                            : fmt::format("G{:02} needs F greater than 0",
-                                          ctx.modal.motion));
+namespace {
+
+/// PS0011 for a feed move without F; `cycle` names the canned cycle.
+mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
+  if (ctx.modal.feed > 0.0) {
+    return 0;
   }
-  const AxisCounts start = workPosition(ctx);
+  return raise(ctx, AlarmId::FeedZero,
+               cycle != 0 ? fmt::format("G{} needs F greater than 0", cycle)
+                          : fmt::format("G{:02} needs F greater than 0",
+                                        ctx.modal.motion));
+}
+
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& start,
+                     const AxisCounts& target, bool rapid, int cycle) {
+  if (!rapid) {
+    if (const mbrt_status status = checkFeed(ctx, cycle)) {
+      return status;
+    }
+  }
   advanceClock(ctx, distance(start, target, ctx.axisCount(), 0), rapid);
   moveTo(ctx, target);
   emit(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, target, {0, 0},
        cycle);
   return 0;
+}
+
+} // namespace
+
+mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                         int cycle) {
+  return moveLine(ctx, workPosition(ctx), target, rapid, cycle);
 }
 
 namespace {
@@ -305,11 +323,10 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const AxisCounts start = workPosition(ctx);
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1) {
-    return moveStraight(ctx, target, mode == 0);
+    return moveLine(ctx, start, target, mode == 0, 0);
   }
-  if (!(ctx.modal.feed > 0.0)) {
-    return raise(ctx, AlarmId::FeedZero,
-                 fmt::format("G{:02} needs F greater than 0", mode));
+  if (const mbrt_status status = checkFeed(ctx, 0)) {
+    return status;
   }
   return moveArc(ctx, words, start, target);
 }

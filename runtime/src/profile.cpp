@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -137,6 +138,14 @@ void parseParameters(const json& value, Profile& profile) {
   profile.decimalPointInput = profile.parameterBit(3401, 0);
   profile.prt = profile.parameterBit(6001, 1);
   profile.nat = profile.parameterBit(6004, 0);
+  profile.codeCalls = profile.parameterBit(6001, 5) ||
+                      profile.parameterBit(6007, 4) ||
+                      profile.parameterBit(6007, 5) ||
+                      std::any_of(profile.parameters.begin(),
+                                  profile.parameters.end(), [](const auto& p) {
+                                    return p.first >= 6050 && p.first <= 6089 &&
+                                           p.second != 0.0;
+                                  });
 }
 
 void parseToolOffset(const json& value, const std::string& path,

@@ -56,6 +56,9 @@ struct Profile {
   bool decimalPointInput = false; // 3401#0 DPI: X10 is 10 mm, not 0.010
   bool prt = false; // 6001#1 PRT: DPRNT drops leading zeros and the sign
   bool nat = false; // 6004#0 NAT: ASIN/ATAN in -90..90 / -180..180
+  // Some G, M, T, S or B code calls a program (6001#5, 6007#4/#5,
+  // 6050-6089): without, NC blocks skip looking for code calls.
+  bool codeCalls = false;
 
   /// The value of a parameter, its default when the profile does not set
   /// it, 0 for a parameter mbc does not model.
