@@ -30,7 +30,7 @@ public:
   Hole(mbrt_ctx& ctx, int axis) : ctx_(ctx), axis_(axis) {}
 
   mbrt_status to(Counts level, bool rapid) {
-    AxisCounts target = workPosition(ctx_);
+    AxisCounts target = programPosition(ctx_);
     if (target[axis_] == level) {
       return 0;
     }
@@ -54,7 +54,7 @@ public:
     if (axis < 0 || data().q == 0) {
       return 0;
     }
-    AxisCounts target = workPosition(ctx_);
+    AxisCounts target = programPosition(ctx_);
     target[axis] += (negative ? -1 : 1) * away * data().q;
     return moveStraight(ctx_, target, true, ctx_.modal.cycle);
   }
@@ -206,7 +206,7 @@ void changeCycle(mbrt_ctx& ctx, int cycle) {
     ctx.modal.cycleData = CycleData{};
     const int axis = ctx.axisOf('Z');
     if (cycle != 0 && axis >= 0) {
-      ctx.modal.cycleData.initial = workPosition(ctx)[axis];
+      ctx.modal.cycleData.initial = programPosition(ctx)[axis];
     }
   }
   ctx.modal.cycle = cycle;
@@ -237,14 +237,14 @@ mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
   }
   Hole hole(ctx, axis);
   for (int n = 0; n < static_cast<int>(repeat); ++n) {
-    AxisCounts target = workPosition(ctx);
+    AxisCounts target = programPosition(ctx);
     for (int a = 0; a < ctx.axisCount(); ++a) {
       if ((plane >> a & 1) != 0) {
         target[a] = ctx.modal.incremental ? target[a] + words.motion->axis[a]
                                           : words.motion->axis[a];
       }
     }
-    if (target != workPosition(ctx)) {
+    if (target != programPosition(ctx)) {
       if (mbrt_status st = moveStraight(ctx, target, true, cycle)) {
         return st;
       }

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "frames.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -84,10 +85,12 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.subDepth = 0;
   ctx.levels.assign(1, LocalLevel{});
   ctx.machine = AxisCounts{};
+  ctx.frames = Frames{};
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};
   ctx.modal.inch = inch;
+  resyncProgram(ctx);
   ctx.block.file = nullptr;
   ctx.block.line = 0;
   ctx.block.blocks = 0;

@@ -93,6 +93,31 @@ struct ModalState {
   std::array<double, 30> lastWords{}; // #4101..#4130 by index
 };
 
+/// The coordinate frames between a program and the machine (frames.h):
+/// mirror, scaling and rotation take a program point into the workpiece
+/// frame, to which the G52 local origin is added; work offsets, the G92
+/// shift and the tool length offset make it a machine position.
+struct Frames {
+  AxisCounts local{};           // G52: the local origin in the workpiece system
+  AxisCounts preset{};          // G92: the shift of every workpiece system
+  std::uint32_t mirrorMask = 0; // G51.1: mirrored axes
+  AxisValues mirrorCenter{};    // the mirror axis of each, program counts
+  bool scaling = false;         // G51
+  AxisValues scale{};           // magnification of each axis (1: none)
+  AxisValues scaleCenter{};
+  bool rotation = false; // G68
+  int rotationAxes[2] = {0, 1};
+  double angle = 0.0; // degrees, counter-clockwise in the plane
+  double cosAngle = 1.0;
+  double sinAngle = 0.0;
+  double rotationCenter[2] = {0.0, 0.0};
+  int lengthMode = 49; // 43, 44, 49
+  int lengthAxis = -1; // the axis the tool length offset moves
+  Counts length = 0;   // the offset on that axis, signed
+
+  bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
+};
+
 /// A G66/G66.1 (or modal custom G code) in force: what it calls.
 struct ModalCall {
   int id = 0;
@@ -151,7 +176,9 @@ struct mbrt_ctx {
 
   // Machine state.
   mbc::rt::ModalState modal;
-  mbc::rt::AxisCounts machine{}; // machine position, the primary one
+  mbc::rt::Frames frames;
+  mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
+  mbc::rt::AxisCounts program{}; // the same point as the program sees it
 
   // The run: the block being executed and the count of blocks.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};

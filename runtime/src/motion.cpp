@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "frames.h"
+
 namespace mbc::rt {
 
 namespace {
@@ -37,10 +39,6 @@ PlaneAxes planeAxes(int plane) {
     default:
       return {{'X', 'Y'}, {0, 1}};
   }
-}
-
-const AxisCounts& activeOffset(const mbrt_ctx& ctx) {
-  return ctx.workOffsets[ctx.modal.workOffset];
 }
 
 AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
@@ -70,17 +68,12 @@ void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
   ctx.clockHours += minutes / 60.0;
 }
 
-void moveTo(mbrt_ctx& ctx, const AxisCounts& target) {
-  const AxisCounts& offset = activeOffset(ctx);
-  const AxisCounts& external = ctx.workOffsets[kExternalOffset];
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    ctx.machine[axis] = target[axis] + offset[axis] + external[axis];
-  }
+/// The control point moves to `machine`, workpiece position `work`; the
+/// motion goes to the sink with its arc centre in workpiece counts.
+void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
+            const AxisCounts& machine, Point center, int cycle = 0) {
+  ctx.machine = machine;
   ++ctx.moves;
-}
-
-void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center,
-          int cycle = 0) {
   if (ctx.motionSink.fn == nullptr) {
     return;
   }
@@ -91,7 +84,8 @@ void emit(mbrt_ctx& ctx, int kind, const AxisCounts& target, Point center,
   motion.axis_count = ctx.axisCount();
   motion.axis_names = ctx.profile.axes.c_str();
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    motion.end[axis] = countsToUnits(target[axis], scale);
+    motion.end[axis] = countsToUnits(work[axis], scale);
+    motion.machine[axis] = countsToUnits(machine[axis], scale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : ctx.modal.feed;
   motion.plane = ctx.modal.plane;
@@ -166,6 +160,18 @@ mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
   return 0;
 }
 
+/// The length of a move of the control point: the path in the workpiece
+/// frame (`path`, counts) combined with what the other axes travel.
+double travel(const mbrt_ctx& ctx, const AxisCounts& machine,
+              std::uint32_t pathAxes, double path) {
+  return std::hypot(path,
+                    distance(ctx.machine, machine, ctx.axisCount(), pathAxes));
+}
+
+Point planePoint(const AxisValues& point, int p, int q) {
+  return {point[p], point[q]};
+}
+
 mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                     const AxisCounts& start, const AxisCounts& target) {
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
@@ -197,51 +203,66 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   } else {
     return raise(ctx, AlarmId::ArcNoRadius, "arc without R or I, J, K");
   }
-  const double radius = std::hypot(from.x - center.x, from.y - center.y);
+  const ArcFrame frame = arcFrame(ctx, p, q);
+  if (!frame.supported) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("G{:02} in G{} under unequal scaling or a "
+                             "rotation in another plane",
+                             ctx.modal.motion, ctx.modal.plane));
+  }
+  AxisValues centerPoint{};
+  centerPoint[p] = center.x;
+  centerPoint[q] = center.y;
+  Point workCenter = planePoint(transformPoint(ctx, centerPoint), p, q);
+  workCenter.x += static_cast<double>(ctx.frames.local[p]);
+  workCenter.y += static_cast<double>(ctx.frames.local[q]);
+  const double radius =
+      std::hypot(from.x - center.x, from.y - center.y) * frame.scale;
   const double arc = radius * sweepAngle(from, to, center, clockwise);
-  const double helix =
-      distance(start, target, ctx.axisCount(),
-               (std::uint32_t{1} << p) | (std::uint32_t{1} << q));
-  advanceClock(ctx, std::hypot(arc, helix), false);
-  moveTo(ctx, target);
-  emit(ctx, clockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, target, center);
+  const AxisCounts work = programToWork(ctx, target);
+  const AxisCounts machine = workToMachine(ctx, work);
+  advanceClock(ctx,
+               travel(ctx, machine,
+                      (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
+               false);
+  ctx.program = target;
+  moveTo(ctx, clockwise != frame.reversed ? MBRT_MOTION_CW : MBRT_MOTION_CCW,
+         work, machine, workCenter);
   return 0;
 }
 
 } // namespace
-
-Counts workCounts(const mbrt_ctx& ctx, int axis) {
-  return ctx.machine[axis] - activeOffset(ctx)[axis] -
-         ctx.workOffsets[kExternalOffset][axis];
-}
 
 void switchUnits(mbrt_ctx& ctx, bool inch) {
   if (ctx.modal.inch == inch) {
     return;
   }
   // 0.0001 inch is 2.54 counts of 0.001 mm.
-  const auto convert = [inch](Counts& counts) {
-    const auto value = static_cast<double>(counts);
-    counts =
-        static_cast<Counts>(roundHalfAway(inch ? value / 2.54 : value * 2.54));
+  const double factor = inch ? 1.0 / 2.54 : 2.54;
+  const auto convert = [factor](Counts& counts) {
+    counts = static_cast<Counts>(
+        roundHalfAway(static_cast<double>(counts) * factor));
   };
-  for (Counts& counts : ctx.machine) {
-    convert(counts);
-  }
-  for (AxisCounts& offset : ctx.workOffsets) {
-    for (Counts& counts : offset) {
-      convert(counts);
+  const auto convertAll = [&](AxisCounts& counts) {
+    std::for_each(counts.begin(), counts.end(), convert);
+  };
+  const auto scaleAll = [factor](AxisValues& values) {
+    for (double& value : values) {
+      value *= factor;
     }
-  }
+  };
+  convertAll(ctx.machine);
+  std::for_each(ctx.workOffsets.begin(), ctx.workOffsets.end(), convertAll);
+  Frames& frames = ctx.frames;
+  convertAll(frames.local);
+  convertAll(frames.preset);
+  convert(frames.length);
+  scaleAll(frames.mirrorCenter);
+  scaleAll(frames.scaleCenter);
+  frames.rotationCenter[0] *= factor;
+  frames.rotationCenter[1] *= factor;
   ctx.modal.inch = inch;
-}
-
-AxisCounts workPosition(const mbrt_ctx& ctx) {
-  AxisCounts position{};
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    position[axis] = workCounts(ctx, axis);
-  }
-  return position;
+  resyncProgram(ctx);
 }
 
 namespace {
@@ -257,60 +278,76 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
                                         ctx.modal.motion));
 }
 
-mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& start,
-                     const AxisCounts& target, bool rapid, int cycle) {
+/// A straight move of the control point to `machine`.
+mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
+                          const AxisCounts& machine, bool rapid, int cycle) {
   if (!rapid) {
     if (const mbrt_status status = checkFeed(ctx, cycle)) {
       return status;
     }
   }
-  advanceClock(ctx, distance(start, target, ctx.axisCount(), 0), rapid);
-  moveTo(ctx, target);
-  emit(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, target, {0, 0},
-       cycle);
+  advanceClock(ctx, travel(ctx, machine, 0, 0.0), rapid);
+  moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
+         {0, 0}, cycle);
   return 0;
 }
 
+/// A rapid to machine coordinates on the axes in `mask`, when it moves.
+mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
+                                      const AxisCounts& position) {
+  AxisCounts machine = ctx.machine;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((mask >> axis & 1) != 0) {
+      machine[axis] = position[axis];
+    }
+  }
+  if (machine == ctx.machine) {
+    return 0;
+  }
+  const mbrt_status status =
+      moveToMachine(ctx, machineToWork(ctx, machine), machine, true, 0);
+  resyncProgram(ctx);
+  return status;
+}
+
 } // namespace
+
+const AxisCounts& programPosition(const mbrt_ctx& ctx) {
+  return ctx.program;
+}
 
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle) {
-  return moveLine(ctx, workPosition(ctx), target, rapid, cycle);
+  const AxisCounts work = programToWork(ctx, target);
+  ctx.program = target;
+  return moveToMachine(ctx, work, workToMachine(ctx, work), rapid, cycle);
 }
 
-namespace {
-
-/// The target whose axes in `mask` sit at `machine` in machine coordinates.
-AxisCounts machineTarget(const mbrt_ctx& ctx, std::uint32_t mask,
-                         const AxisCounts& machine) {
-  AxisCounts target = workPosition(ctx);
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    if ((mask >> axis & 1) != 0) {
-      target[axis] = machine[axis] - ctx.machine[axis] + workCounts(ctx, axis);
-    }
+mbrt_status moveToFrame(mbrt_ctx& ctx) {
+  const AxisCounts work = programToWork(ctx, ctx.program);
+  const AxisCounts machine = workToMachine(ctx, work);
+  if (machine == ctx.machine) {
+    return 0;
   }
-  return target;
+  return moveToMachine(ctx, work, machine, ctx.modal.motion == 0, 0);
 }
-
-mbrt_status rapidIfMoving(mbrt_ctx& ctx, const AxisCounts& target) {
-  return target == workPosition(ctx) ? 0 : moveStraight(ctx, target, true);
-}
-
-} // namespace
 
 mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words) {
-  const AxisCounts intermediate = workTarget(ctx, words, workPosition(ctx));
-  if (const mbrt_status status = rapidIfMoving(ctx, intermediate)) {
-    return status;
+  const AxisCounts intermediate = workTarget(ctx, words, ctx.program);
+  const AxisCounts work = programToWork(ctx, intermediate);
+  if (workToMachine(ctx, work) != ctx.machine) {
+    if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
+      return status;
+    }
   }
-  return rapidIfMoving(ctx, machineTarget(ctx, words.axisMask, AxisCounts{}));
+  return rapidInMachineCoordinates(ctx, words.axisMask, AxisCounts{});
 }
 
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.modal.incremental) {
     return 0;
   }
-  return rapidIfMoving(ctx, machineTarget(ctx, words.axisMask, words.axis));
+  return rapidInMachineCoordinates(ctx, words.axisMask, words.axis);
 }
 
 void dwell(mbrt_ctx& ctx, double seconds) {
@@ -320,10 +357,10 @@ void dwell(mbrt_ctx& ctx, double seconds) {
 
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
-  const AxisCounts start = workPosition(ctx);
+  const AxisCounts start = ctx.program;
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1) {
-    return moveLine(ctx, start, target, mode == 0, 0);
+    return moveStraight(ctx, target, mode == 0);
   }
   if (const mbrt_status status = checkFeed(ctx, 0)) {
     return status;

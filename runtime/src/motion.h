@@ -16,25 +16,29 @@ struct MotionWords {
   Counts r = 0;
 };
 
-/// An axis's position in the active workpiece coordinate system.
-Counts workCounts(const mbrt_ctx& ctx, int axis);
-
-/// G20/G21: re-expresses the position and the work offsets in the new unit.
+/// G20/G21: re-expresses the position, the offsets and the frames in the
+/// new unit.
 void switchUnits(mbrt_ctx& ctx, bool inch);
 
 /// Moves in the modal motion mode (G00..G03) to the block's end point.
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words);
 
-/// The position of every axis in the active workpiece coordinate system.
-AxisCounts workPosition(const mbrt_ctx& ctx);
+/// The position of every axis as the program commands it: local
+/// coordinates before mirror, scaling and rotation (frames.h).
+const AxisCounts& programPosition(const mbrt_ctx& ctx);
 
-/// A straight move to `target` (workpiece coordinates): a rapid, or a feed
+/// A straight move to `target` (program coordinates): a rapid, or a feed
 /// at the modal F (PS0011 when F is 0). `cycle` marks a canned cycle's move.
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle = 0);
 
-/// G28: rapid to the intermediate point the axis words give, then to the
-/// reference position (machine zero) on those axes.
+/// After the tool length offset changed in a block without motion: the
+/// control point moves so that the program position stays (G43 H1 alone
+/// moves Z by the offset), a rapid in G00 and a feed otherwise.
+mbrt_status moveToFrame(mbrt_ctx& ctx);
+
+/// G28: rapid to the intermediate point the axis words give, then the
+/// control point to the reference position (machine zero) on those axes.
 mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words);
 
 /// G53: rapid to machine coordinates on the axes written (ignored in G91).

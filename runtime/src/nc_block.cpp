@@ -7,6 +7,8 @@
 
 #include "block_calls.h"
 #include "canned_cycles.h"
+#include "frame_codes.h"
+#include "frames.h"
 #include "g_codes.h"
 #include "motion.h"
 
@@ -56,6 +58,7 @@ struct Block {
   int nonModal = 0;          // G04 (40), G28 (280), G53 (530)
   double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
+  FrameWords frames;
 };
 
 bool isCycleCode(int tenths) {
@@ -111,6 +114,17 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 530: // G53 machine coordinates
       block.nonModal = tenths;
       return 0;
+    case 430:
+    case 440:
+    case 490:
+      block.frames.lengthCode = tenths / 10;
+      return 0;
+    case 500:
+      block.frames.cancelScaling = true;
+      return 0;
+    case 690:
+      block.frames.cancelRotation = true;
+      return 0;
     case 800:
       next.cycle = 0;
       return 0;
@@ -144,12 +158,8 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     // The one state mbc keeps these groups in (#4001.. reads them).
     case 150: // G15
     case 400: // G40
-    case 490: // G49
-    case 500: // G50
-    case 501: // G50.1
     case 640: // G64
     case 670: // G67
-    case 690: // G69
     case 940: // G94
     case 970: // G97
       return 0;
@@ -158,6 +168,16 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
   }
   if (isCycleCode(tenths)) {
     next.cycle = tenths / 10;
+    return 0;
+  }
+  if (isFrameCode(tenths)) {
+    if (block.frames.code != 0) {
+      return raise(ctx, AlarmId::ImproperGCode,
+                   fmt::format("{} and {} in one block",
+                               gCodeText(block.frames.code),
+                               gCodeText(tenths)));
+    }
+    block.frames.code = tenths;
     return 0;
   }
   if (const GCodeInfo* code = findGCode(tenths)) {
@@ -190,7 +210,11 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   next.inch = ctx.modal.inch;
   const int cycle = next.cycle;
   next.cycle = ctx.modal.cycle;
+  const bool newOrigin = next.workOffset != ctx.modal.workOffset;
   ctx.modal = next;
+  if (newOrigin) {
+    resyncProgram(ctx); // the machine stays, the program position moves
+  }
   switchUnits(ctx, inch);
   changeCycle(ctx, cycle);
   return 0;
@@ -331,6 +355,32 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
   return 0;
 }
 
+/// What the block's axis words do: dwell, G28, G53, a canned cycle or a
+/// move in the modal motion mode.
+mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
+  const MotionWords& motion = block.motion;
+  if (block.nonModal == 40) {
+    dwell(ctx, block.hasP ? block.p / 1000.0 : block.dwellSeconds);
+    return 0;
+  }
+  if (block.nonModal == 280) {
+    return returnToReference(ctx, motion);
+  }
+  if (block.nonModal == 530) {
+    return moveInMachineCoordinates(ctx, motion);
+  }
+  if (ctx.modal.cycle != 0) {
+    if (!block.k && block.hasL) {
+      block.k = block.l; // the older controls' L
+    }
+    const CycleWords cycle{
+        &motion, block.q,
+        block.hasP ? std::optional<double>(block.p) : std::nullopt, block.k};
+    return executeCycleBlock(ctx, cycle);
+  }
+  return executeBlockMotion(ctx, motion);
+}
+
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
   Block block;
@@ -341,6 +391,14 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       (words[i].letter == 'P' ? block.p : block.l) = value;
     }
   }
+  block.frames.axes = &block.motion;
+  for (size_t i = 0; i < count; ++i) {
+    const char letter = words[i].letter;
+    if (letter >= 'A' && letter <= 'Z') {
+      block.frames.words[letter - 'A'] = &words[i];
+    }
+  }
+  block.frames.hasH = block.frames.words['H' - 'A'] != nullptr;
   bool taken = false;
   if (const mbrt_status status =
           callInsteadOfBlock(ctx, words, count, flow, &taken);
@@ -359,34 +417,27 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  const MotionWords& motion = block.motion;
-  if (block.nonModal == 40) {
-    dwell(ctx, block.hasP ? block.p / 1000.0 : block.dwellSeconds);
-  } else if (block.nonModal == 280) {
-    if (const mbrt_status status = returnToReference(ctx, motion)) {
-      return status;
-    }
-  } else if (block.nonModal == 530) {
-    if (const mbrt_status status = moveInMachineCoordinates(ctx, motion)) {
-      return status;
-    }
-  } else if (ctx.modal.cycle != 0) {
-    if (!block.k && block.hasL) {
-      block.k = block.l; // the older controls' L
-    }
-    const CycleWords cycle{
-        &motion, block.q,
-        block.hasP ? std::optional<double>(block.p) : std::nullopt, block.k};
-    if (const mbrt_status status = executeCycleBlock(ctx, cycle)) {
-      return status;
-    }
-  } else if (const mbrt_status status = executeBlockMotion(ctx, motion)) {
+  bool lengthChanged = false;
+  if (const mbrt_status status =
+          executeFrameCodes(ctx, block.frames, &lengthChanged)) {
     return status;
+  }
+  const std::uint64_t movesBefore = ctx.moves;
+  // The axis words of G52, G92, G51, G51.1, G50.1 and G68 are their data.
+  if (block.frames.code == 0) {
+    if (const mbrt_status status = executeMotionWords(ctx, block)) {
+      return status;
+    }
+  }
+  if (lengthChanged && ctx.moves == movesBefore) {
+    if (const mbrt_status status = moveToFrame(ctx)) {
+      return status;
+    }
   }
   if (const mbrt_status status = decideFlow(ctx, block, flow)) {
     return status;
   }
-  block.codes.moved = motion.axisMask != 0;
+  block.codes.moved = block.motion.axisMask != 0 && block.frames.code == 0;
   return callAfterBlock(ctx, block.codes, flow);
 }
 

@@ -12,11 +12,15 @@ constexpr double kMaxCode = 99'999'999.0;
 constexpr std::array kParameters = {
     ParameterSpec{3401, 3401, 0, 255, 0, true},     // #0 DPI
     ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
+    ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift
     ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // G73 retract, G83 gap
-    ParameterSpec{6001, 6001, 0, 255, 0, true},     // #1 PRT, #5 TCS
-    ParameterSpec{6004, 6004, 0, 255, 0, true},     // #0 NAT
-    ParameterSpec{6007, 6007, 0, 255, 0, true},     // #4 BCS, #5 SCS
+    ParameterSpec{5400, 5400, 0, 255, 0, true},     // #0 RIN, #6 XSC, #7 SCR
+    ParameterSpec{5410, 5410, -360000, 360000, 0, true}, // G68 angle, 0.001 deg
+    ParameterSpec{5411, 5411, 0, 999999, 0, true},       // G51 magnification
+    ParameterSpec{6001, 6001, 0, 255, 0, true},          // #1 PRT, #5 TCS
+    ParameterSpec{6004, 6004, 0, 255, 0, true},          // #0 NAT
+    ParameterSpec{6007, 6007, 0, 255, 0, true},          // #4 BCS, #5 SCS
     // G codes calling O9010..O9019; negative: a modal (G66-like) call.
     ParameterSpec{6050, 6059, -9999, 9999, 0, true},
     ParameterSpec{6071, 6079, 0, kMaxCode, 0, true}, // M codes -> O9001..

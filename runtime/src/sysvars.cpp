@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "block_calls.h"
+#include "frames.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -179,13 +180,13 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 7:
       return 40;
     case 8:
-      return 49;
+      return ctx.frames.lengthMode;
     case 9:
       return modal.cycle != 0 ? modal.cycle : 80;
     case 10:
       return modal.returnToR ? 99 : 98;
     case 11:
-      return 50;
+      return ctx.frames.scaling ? 51 : 50;
     case 12:
       return modalCallGroupValue(ctx);
     case 13:
@@ -195,11 +196,11 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 15:
       return 64;
     case 16:
-      return 69;
+      return ctx.frames.rotation ? 68 : 69;
     case 17:
       return 15;
     case 18:
-      return 50.1;
+      return ctx.frames.mirrorMask != 0 ? 51.1 : 50.1;
     default:
       return 0;
   }
@@ -218,17 +219,34 @@ mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
   return 0;
 }
 
-mbrt_status readWorkPosition(mbrt_ctx& ctx, int axis, Num* out) {
+/// Axes beyond the machine's read 0.
+template <Counts (*Position)(const mbrt_ctx&, int)>
+mbrt_status readPosition(mbrt_ctx& ctx, int axis, Num* out) {
   *out = axis < ctx.axisCount()
-             ? countsToUnits(workCounts(ctx, axis), ctx.scale())
+             ? countsToUnits(Position(ctx, axis), ctx.scale())
              : 0.0;
   return 0;
 }
 
-mbrt_status readMachinePosition(mbrt_ctx& ctx, int axis, Num* out) {
-  *out = axis < ctx.axisCount() ? countsToUnits(ctx.machine[axis], ctx.scale())
-                                : 0.0;
-  return 0;
+/// #5001: the block end point as the program commanded it.
+Counts blockEndPosition(const mbrt_ctx& ctx, int axis) {
+  return programPosition(ctx)[axis];
+}
+
+Counts machinePosition(const mbrt_ctx& ctx, int axis) {
+  return ctx.machine[axis];
+}
+
+/// #5041: the control point in local coordinates, so with the tool length
+/// offset in it.
+Counts currentPosition(const mbrt_ctx& ctx, int axis) {
+  const Counts length = axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
+  return machineToWork(ctx, ctx.machine)[axis] + length -
+         ctx.frames.local[axis];
+}
+
+Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
+  return axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
 }
 
 /// Axes beyond the machine's read 0 and ignore writes, so that programs
@@ -251,6 +269,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
   }
   // The machine position stays; the workpiece position follows the offset.
   ctx.workOffsets[offset][axis] = static_cast<Counts>(counts);
+  resyncProgram(ctx);
   return 0;
 }
 
@@ -316,12 +335,12 @@ constexpr std::array kSystemVariables = {
     SysVarRange{4101, 4130, readLastWord, nullptr},
     SysVarRange{4201, 4230, readModalGroup, nullptr},
     SysVarRange{4301, 4330, readLastWord, nullptr},
-    // Without tool compensation the block end point is the workpiece
-    // position.
-    SysVarRange{5001, 5020, readWorkPosition, nullptr},
-    SysVarRange{5021, 5040, readMachinePosition, nullptr},
-    SysVarRange{5041, 5060, readWorkPosition, nullptr},
-    SysVarRange{5061, 5120, readZero, nullptr}, // skip, tool length, servo
+    SysVarRange{5001, 5020, readPosition<blockEndPosition>, nullptr},
+    SysVarRange{5021, 5040, readPosition<machinePosition>, nullptr},
+    SysVarRange{5041, 5060, readPosition<currentPosition>, nullptr},
+    SysVarRange{5061, 5080, readZero, nullptr}, // skip position
+    SysVarRange{5081, 5100, readPosition<toolLengthOffset>, nullptr},
+    SysVarRange{5101, 5120, readZero, nullptr}, // servo deviation
     SysVarRange{5201, 5340, readG54Offset, writeG54Offset},
     SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
                 writeG541Offset<kOffsetStride>},

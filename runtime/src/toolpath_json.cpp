@@ -71,6 +71,10 @@ std::string toolpathJsonLine(const mbrt_motion& m) {
     appendKey(out, '\0', m.axis_names[axis]);
     appendCoordinate(out, m.end[axis], m.decimals);
   }
+  for (int axis = 0; axis < m.axis_count; ++axis) {
+    appendKey(out, 'm', m.axis_names[axis]);
+    appendCoordinate(out, m.machine[axis], m.decimals);
+  }
   if (m.kind != MBRT_MOTION_RAPID) {
     out += fmt::format(",\"f\":{}", m.feed);
   }

@@ -16,9 +16,10 @@ TEST(RuntimeArc, QuarterCircleFromIJ) {
   ASSERT_EQ(m.block("G00 X10. Y0", 1), 0);
   ASSERT_EQ(m.block("G03 X0 Y10. I-10. F100", 2), 0);
   ASSERT_EQ(m.json().size(), 2u);
-  EXPECT_EQ(m.json()[1],
-            "{\"motion\":\"ccw\",\"x\":0,\"y\":10,\"z\":0,\"f\":100,"
-            "\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[1],
+      "{\"motion\":\"ccw\",\"x\":0,\"y\":10,\"z\":0,\"mx\":0,\"my\":10,\"mz\":"
+      "0,\"f\":100,\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
   const mbrt_motion& arc = m.motions()[1];
   EXPECT_EQ(arc.plane, 17);
   EXPECT_EQ(arc.center_axes[0], 'X');
@@ -102,9 +103,10 @@ TEST(RuntimeArc, FullCircle) {
   ASSERT_EQ(m.block("G02 I-10. F100", 2), 0);
   ASSERT_EQ(m.block("G03 X10. Y0 I-10.", 3), 0);
   ASSERT_EQ(m.motions().size(), 3u);
-  EXPECT_EQ(m.json()[1],
-            "{\"motion\":\"cw\",\"x\":10,\"y\":0,\"z\":0,\"f\":100,"
-            "\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[1],
+      "{\"motion\":\"cw\",\"x\":10,\"y\":0,\"z\":0,\"mx\":10,\"my\":0,\"mz\":0,"
+      "\"f\":100,\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
   EXPECT_EQ(m.motions()[2].kind, MBRT_MOTION_CCW);
   // Two full circles of 2 pi 10 mm at F100 after 60 ms of rapid.
   EXPECT_EQ(m.read(3001), std::floor(60.0 + 2 * 20 * kPi / 100 * 60000));
@@ -125,9 +127,10 @@ TEST(RuntimeArc, ZXPlane) {
   Machine m;
   ASSERT_EQ(m.block("G00 X10. Z0"), 0);
   ASSERT_EQ(m.block("G18 G02 X0 Z10. I-10. K0 F100", 2), 0);
-  EXPECT_EQ(m.json()[1],
-            "{\"motion\":\"cw\",\"x\":0,\"y\":0,\"z\":10,\"f\":100,"
-            "\"cz\":0,\"cx\":0,\"line\":2,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[1],
+      "{\"motion\":\"cw\",\"x\":0,\"y\":0,\"z\":10,\"mx\":0,\"my\":0,\"mz\":10,"
+      "\"f\":100,\"cz\":0,\"cx\":0,\"line\":2,\"prog\":\"O1000\"}\n");
   EXPECT_EQ(m.read(4002), 18.0);
 }
 
@@ -135,9 +138,10 @@ TEST(RuntimeArc, YZPlane) {
   Machine m;
   ASSERT_EQ(m.block("G00 Y10. Z5."), 0);
   ASSERT_EQ(m.block("G19 G03 Y0 Z15. J-10. F100", 2), 0);
-  EXPECT_EQ(m.json()[1],
-            "{\"motion\":\"ccw\",\"x\":0,\"y\":0,\"z\":15,\"f\":100,"
-            "\"cy\":0,\"cz\":5,\"line\":2,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[1],
+      "{\"motion\":\"ccw\",\"x\":0,\"y\":0,\"z\":15,\"mx\":0,\"my\":0,\"mz\":"
+      "15,\"f\":100,\"cy\":0,\"cz\":5,\"line\":2,\"prog\":\"O1000\"}\n");
 }
 
 TEST(RuntimeArc, RadiusTolerance) {
@@ -170,9 +174,10 @@ TEST(RuntimeArc, InchArc) {
   Machine m(R"({"units": "inch"})");
   ASSERT_EQ(m.block("G00 X1."), 0);
   ASSERT_EQ(m.block("G03 X0 Y1. I-1. F10.5", 2), 0);
-  EXPECT_EQ(m.json()[1],
-            "{\"motion\":\"ccw\",\"x\":0,\"y\":1,\"z\":0,\"f\":10.5,"
-            "\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[1],
+      "{\"motion\":\"ccw\",\"x\":0,\"y\":1,\"z\":0,\"mx\":0,\"my\":1,\"mz\":0,"
+      "\"f\":10.5,\"cx\":0,\"cy\":0,\"line\":2,\"prog\":\"O1000\"}\n");
   EXPECT_EQ(m.motions()[1].decimals, 4);
 }
 

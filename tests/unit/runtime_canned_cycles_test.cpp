@@ -9,11 +9,13 @@ TEST(RuntimeCannedCycles, G81HoleMovesAndReturnLevels) {
   ASSERT_EQ(m.block("G00 Z20."), 0);
   ASSERT_EQ(m.block("G99 G81 X5. Z-3. R1. F60."), 0);
   ASSERT_EQ(m.json().size(), 5u);
-  EXPECT_EQ(m.json()[1], "{\"motion\":\"rapid\",\"x\":5,\"y\":0,\"z\":20,"
-                         "\"cycle\":\"G81\",\"line\":1,\"prog\":\"O1000\"}\n");
-  EXPECT_EQ(m.json()[3], "{\"motion\":\"linear\",\"x\":5,\"y\":0,\"z\":-3,"
-                         "\"f\":60,\"cycle\":\"G81\",\"line\":1,"
-                         "\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(m.json()[1],
+            "{\"motion\":\"rapid\",\"x\":5,\"y\":0,\"z\":20,\"mx\":5,\"my\":0,"
+            "\"mz\":20,\"cycle\":\"G81\",\"line\":1,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      m.json()[3],
+      "{\"motion\":\"linear\",\"x\":5,\"y\":0,\"z\":-3,\"mx\":5,\"my\":0,"
+      "\"mz\":-3,\"f\":60,\"cycle\":\"G81\",\"line\":1,\"prog\":\"O1000\"}\n");
   EXPECT_EQ(m.read(5003), 1.0); // G99: at R
   ASSERT_EQ(m.block("G98 X6."), 0);
   EXPECT_EQ(m.read(5003), 20.0); // G98: the initial level

@@ -18,6 +18,9 @@ mbrt_motion linearMotion() {
   m.end[0] = 10.0;
   m.end[1] = -1.25;
   m.end[2] = 0.0;
+  m.machine[0] = -290.0;
+  m.machine[1] = -201.25;
+  m.machine[2] = 150.5;
   m.feed = 200.0;
   m.plane = 17;
   m.center_axes[0] = 'X';
@@ -30,17 +33,18 @@ mbrt_motion linearMotion() {
 }
 
 TEST(ToolpathJson, LinearExample) {
-  EXPECT_EQ(toolpathJsonLine(linearMotion()),
-            "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,\"f\":200,"
-            "\"line\":7,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      toolpathJsonLine(linearMotion()),
+      "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,\"mx\":-290,"
+      "\"my\":-201.25,\"mz\":150.5,\"f\":200,\"line\":7,\"prog\":\"O1000\"}\n");
 }
 
 TEST(ToolpathJson, RapidHasNoFeed) {
   mbrt_motion m = linearMotion();
   m.kind = MBRT_MOTION_RAPID;
   EXPECT_EQ(toolpathJsonLine(m),
-            "{\"motion\":\"rapid\",\"x\":10,\"y\":-1.25,\"z\":0,"
-            "\"line\":7,\"prog\":\"O1000\"}\n");
+            "{\"motion\":\"rapid\",\"x\":10,\"y\":-1.25,\"z\":0,\"mx\":-290,"
+            "\"my\":-201.25,\"mz\":150.5,\"line\":7,\"prog\":\"O1000\"}\n");
 }
 
 TEST(ToolpathJson, ArcCentreKeysFollowThePlane) {
@@ -52,8 +56,10 @@ TEST(ToolpathJson, ArcCentreKeysFollowThePlane) {
   m.center[0] = 2.5;
   m.center[1] = -0.0001; // rounds to -0.000: printed as 0
   EXPECT_EQ(toolpathJsonLine(m),
-            "{\"motion\":\"cw\",\"x\":10,\"y\":-1.25,\"z\":0,\"f\":200,"
-            "\"cz\":2.5,\"cx\":0,\"line\":7,\"prog\":\"O1000\"}\n");
+            "{\"motion\":\"cw\",\"x\":10,\"y\":-1.25,\"z\":0,\"mx\":-290,"
+            "\"my\":-201.25,\"mz\":150.5,\"f\":200,\"cz\":2.5,\"cx\":0,"
+            "\"line\":7,\"prog\":"
+            "\"O1000\"}\n");
   m.kind = MBRT_MOTION_CCW;
   EXPECT_EQ(toolpathJsonLine(m).substr(0, 18), "{\"motion\":\"ccw\",\"x");
 }
@@ -66,8 +72,9 @@ TEST(ToolpathJson, NumbersAreTrimmed) {
   m.decimals = 4;
   m.feed = 0.012;
   EXPECT_EQ(toolpathJsonLine(m),
-            "{\"motion\":\"linear\",\"x\":0,\"y\":1.2346,\"z\":100,"
-            "\"f\":0.012,\"line\":7,\"prog\":\"O1000\"}\n");
+            "{\"motion\":\"linear\",\"x\":0,\"y\":1.2346,\"z\":100,\"mx\":-290,"
+            "\"my\":-201.25,\"mz\":150.5,\"f\":0.012,\"line\":7,\"prog\":"
+            "\"O1000\"}\n");
 }
 
 TEST(ToolpathJson, ProgramNamesAreEscaped) {
@@ -75,7 +82,7 @@ TEST(ToolpathJson, ProgramNamesAreEscaped) {
   m.axis_count = 1;
   m.program = "<A\"B\\>";
   EXPECT_EQ(toolpathJsonLine(m),
-            "{\"motion\":\"linear\",\"x\":10,\"f\":200,\"line\":7,"
+            "{\"motion\":\"linear\",\"x\":10,\"mx\":-290,\"f\":200,\"line\":7,"
             "\"prog\":\"<A\\\"B\\\\>\"}\n");
 }
 
@@ -87,8 +94,10 @@ TEST(ToolpathJson, IgnoresTheCLocale) {
   }
   const std::string line = toolpathJsonLine(linearMotion());
   std::setlocale(LC_ALL, saved.c_str());
-  EXPECT_EQ(line, "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,"
-                  "\"f\":200,\"line\":7,\"prog\":\"O1000\"}\n");
+  EXPECT_EQ(
+      line,
+      "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,\"mx\":-290,"
+      "\"my\":-201.25,\"mz\":150.5,\"f\":200,\"line\":7,\"prog\":\"O1000\"}\n");
 }
 
 } // namespace

@@ -49,9 +49,11 @@ enum mbrt_motion_kind {
   MBRT_MOTION_CCW = 3
 };
 
-/* One executed motion. Coordinates are in the active workpiece coordinate
- * system, in input units (mm or inch), already rounded to the least input
- * increment. */
+/* One executed motion, in input units (mm or inch) rounded to the least
+ * input increment. `end` and `center` are in the active workpiece coordinate
+ * system (G54..G59, G54.1, after G92) with the G52 local origin, mirror,
+ * scaling and rotation applied and without the tool length offset;
+ * `machine` is the control point in machine coordinates. */
 typedef struct mbrt_motion {
   int kind;                  /* mbrt_motion_kind */
   int axis_count;            /* machine axes, in profile order */
@@ -66,6 +68,7 @@ typedef struct mbrt_motion {
   int line;
   const char* program; /* "O1000", "<NAME>" or "MAIN" */
   int cycle;           /* the canned cycle making the move (81 for G81), 0 */
+  double machine[MBRT_MAX_AXES]; /* end point in machine coordinates */
 } mbrt_motion;
 
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);

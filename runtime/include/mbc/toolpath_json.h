@@ -9,9 +9,10 @@
 namespace mbc {
 
 /// One motion as a JSON object followed by '\n', keys in this order:
-/// "motion" ("rapid", "linear", "cw", "ccw"), one key per axis in lower case,
-/// "f" (not for rapids), for arcs "c" + each plane axis in lower case, then
-/// "line" and "prog". Coordinates have at most m.decimals digits with
+/// "motion" ("rapid", "linear", "cw", "ccw"), one key per axis in lower case
+/// (workpiece frame), "m" + each axis (machine coordinates of the control
+/// point), "f" (not for rapids), for arcs "c" + each plane axis in lower case,
+/// then "line" and "prog". Coordinates have at most m.decimals digits with
 /// trailing zeros dropped; independent of the C locale.
 std::string toolpathJsonLine(const mbrt_motion& m);
 

@@ -1,0 +1,37 @@
+// The G codes that set coordinate frames (frames.h) from a block's words:
+// G52 local origin, G92 coordinate system setting and G92.1 preset,
+// G51/G50 scaling,
+// G51.1/G50.1 programmable mirror, G68/G69 rotation and G43/G44/G49 tool
+// length offset. None of them moves, except a tool length change in a
+// block without motion (motion.h moveToFrame).
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "context.h"
+#include "motion.h"
+
+namespace mbc::rt {
+
+/// What a block says about frames.
+struct FrameWords {
+  int code = 0; // 520 G52, 920 G92, 921 G92.1, 510 G51, 511 G51.1,
+                // 501 G50.1, 680 G68
+  bool cancelScaling = false;  // G50
+  bool cancelRotation = false; // G69
+  int lengthCode = 0;          // 43, 44, 49
+  bool hasH = false;
+  const MotionWords* axes = nullptr;
+  std::array<const mbrt_word*, 26> words{}; // the last word of each letter
+};
+
+/// True for the G codes a FrameWords::code holds.
+bool isFrameCode(int tenths);
+
+/// Applies the block's frame codes; `lengthChanged` tells that the tool
+/// length offset changed, so that a block without motion moves by it.
+mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
+                              bool* lengthChanged);
+
+} // namespace mbc::rt

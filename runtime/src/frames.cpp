@@ -1,0 +1,160 @@
+// The transforms between program, workpiece and machine coordinates, in
+// counts of the least increment. Mirror, scaling and rotation each keep
+// their centre (a program point) in place; only these make positions that
+// are not whole counts, and they are rounded half away from zero.
+#include "frames.h"
+
+#include <mbc/arith.h>
+
+namespace mbc::rt {
+
+namespace {
+
+AxisValues toValues(const AxisCounts& counts) {
+  AxisValues values{};
+  for (std::size_t axis = 0; axis < counts.size(); ++axis) {
+    values[axis] = static_cast<double>(counts[axis]);
+  }
+  return values;
+}
+
+AxisCounts toCounts(const AxisValues& values) {
+  AxisCounts counts{};
+  for (std::size_t axis = 0; axis < values.size(); ++axis) {
+    counts[axis] = static_cast<Counts>(roundHalfAway(values[axis]));
+  }
+  return counts;
+}
+
+/// The sum of the work offset, the external offset and the G92 shift.
+AxisCounts originOf(const mbrt_ctx& ctx) {
+  const AxisCounts& offset = ctx.workOffsets[ctx.modal.workOffset];
+  const AxisCounts& external = ctx.workOffsets[kExternalOffset];
+  AxisCounts origin{};
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    origin[axis] = offset[axis] + external[axis] + ctx.frames.preset[axis];
+  }
+  return origin;
+}
+
+/// Its own inverse.
+void mirror(const Frames& frames, AxisValues& point) {
+  for (std::size_t axis = 0; axis < point.size(); ++axis) {
+    if ((frames.mirrorMask >> axis & 1) != 0) {
+      point[axis] = 2.0 * frames.mirrorCenter[axis] - point[axis];
+    }
+  }
+}
+
+/// Rotation by the G68 angle; `sign` -1 turns back.
+void rotate(const Frames& frames, AxisValues& point, double sign) {
+  const int p = frames.rotationAxes[0];
+  const int q = frames.rotationAxes[1];
+  const double sine = sign * frames.sinAngle;
+  const double dp = point[p] - frames.rotationCenter[0];
+  const double dq = point[q] - frames.rotationCenter[1];
+  point[p] = frames.rotationCenter[0] + frames.cosAngle * dp - sine * dq;
+  point[q] = frames.rotationCenter[1] + sine * dp + frames.cosAngle * dq;
+}
+
+/// Scaling by the G51 factors; `power` -1 divides by them.
+void scale(const Frames& frames, AxisValues& point, int power) {
+  for (std::size_t axis = 0; axis < point.size(); ++axis) {
+    const double factor =
+        power > 0 ? frames.scale[axis] : 1.0 / frames.scale[axis];
+    point[axis] = frames.scaleCenter[axis] +
+                  (point[axis] - frames.scaleCenter[axis]) * factor;
+  }
+}
+
+AxisValues untransformPoint(const Frames& frames, AxisValues point) {
+  if (frames.rotation) {
+    rotate(frames, point, -1.0);
+  }
+  if (frames.scaling) {
+    scale(frames, point, -1);
+  }
+  mirror(frames, point);
+  return point;
+}
+
+} // namespace
+
+AxisValues transformPoint(const mbrt_ctx& ctx, AxisValues point) {
+  const Frames& frames = ctx.frames;
+  mirror(frames, point);
+  if (frames.scaling) {
+    scale(frames, point, 1);
+  }
+  if (frames.rotation) {
+    rotate(frames, point, 1.0);
+  }
+  return point;
+}
+
+AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
+  AxisCounts work = ctx.frames.transforms()
+                        ? toCounts(transformPoint(ctx, toValues(program)))
+                        : program;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    work[axis] += ctx.frames.local[axis];
+  }
+  return work;
+}
+
+AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work) {
+  AxisCounts machine = originOf(ctx);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    machine[axis] += work[axis];
+  }
+  if (ctx.frames.lengthAxis >= 0) {
+    machine[ctx.frames.lengthAxis] += ctx.frames.length;
+  }
+  return machine;
+}
+
+AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
+  const AxisCounts origin = originOf(ctx);
+  AxisCounts work{};
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    work[axis] = machine[axis] - origin[axis];
+  }
+  if (ctx.frames.lengthAxis >= 0) {
+    work[ctx.frames.lengthAxis] -= ctx.frames.length;
+  }
+  return work;
+}
+
+void resyncProgram(mbrt_ctx& ctx) {
+  AxisCounts local = machineToWork(ctx, ctx.machine);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    local[axis] -= ctx.frames.local[axis];
+  }
+  ctx.program = ctx.frames.transforms()
+                    ? toCounts(untransformPoint(ctx.frames, toValues(local)))
+                    : local;
+}
+
+ArcFrame arcFrame(const mbrt_ctx& ctx, int firstAxis, int secondAxis) {
+  const Frames& frames = ctx.frames;
+  ArcFrame arc;
+  const auto mirrored = [&](int axis) {
+    return (frames.mirrorMask >> axis & 1) != 0;
+  };
+  arc.reversed = mirrored(firstAxis) != mirrored(secondAxis);
+  if (frames.scaling) {
+    const double first = frames.scale[firstAxis];
+    const double second = frames.scale[secondAxis];
+    arc.supported = std::fabs(first) == std::fabs(second);
+    arc.reversed = arc.reversed != ((first < 0) != (second < 0));
+    arc.scale = std::fabs(first);
+  }
+  if (frames.rotation) {
+    const bool samePlane = (frames.rotationAxes[0] == firstAxis &&
+                            frames.rotationAxes[1] == secondAxis);
+    arc.supported = arc.supported && samePlane;
+  }
+  return arc;
+}
+
+} // namespace mbc::rt

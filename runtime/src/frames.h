@@ -1,0 +1,43 @@
+// Coordinate frames (spec §6.5, docs/language.md "Coordinates"): a point a
+// program commands goes through the programmable mirror (G51.1), scaling
+// (G51) and rotation (G68) into the workpiece frame, where the G52 local
+// origin is added; the work offset, the external offset and the G92 shift
+// make it a machine position, and the tool length offset (G43/G44) moves
+// the control point. The machine position is the truth; the program
+// position is kept beside it so that rotated and scaled moves do not drift.
+#pragma once
+
+#include "context.h"
+
+namespace mbc::rt {
+
+/// A program point through mirror, scaling and rotation, unrounded; the
+/// local origin is not added.
+AxisValues transformPoint(const mbrt_ctx& ctx, AxisValues point);
+
+/// A program position in the workpiece frame (local origin added).
+AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program);
+
+/// A workpiece-frame position as the control point's machine position.
+AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work);
+
+/// The workpiece-frame position of a machine position.
+AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine);
+
+/// After a frame or offset changed under a standing machine: the program
+/// position that now names the control point.
+void resyncProgram(mbrt_ctx& ctx);
+
+/// How an arc in `plane` looks in the workpiece frame: its radius is
+/// multiplied by `scale` and, when `reversed`, it turns the other way.
+/// `supported` is false when mirror, scaling or rotation would make it an
+/// ellipse or move it out of its plane.
+struct ArcFrame {
+  bool supported = true;
+  bool reversed = false;
+  double scale = 1.0;
+};
+
+ArcFrame arcFrame(const mbrt_ctx& ctx, int firstAxis, int secondAxis);
+
+} // namespace mbc::rt
