@@ -15,13 +15,10 @@ namespace mbc::rt {
 
 namespace {
 
-constexpr double kMmPerInch = 25.4;
-
 /// A length parameter in mm as counts of the current input unit.
 Counts parameterCounts(const mbrt_ctx& ctx, int number) {
   const double mm = ctx.profile.parameter(number);
-  return static_cast<Counts>(
-      roundHalfAway(mm * (ctx.modal.inch ? 10'000.0 / kMmPerInch : 1000.0)));
+  return static_cast<Counts>(roundHalfAway(mm * ctx.countsPerMm()));
 }
 
 /// The moves of one hole; `axis` is the drilling axis.

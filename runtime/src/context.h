@@ -88,7 +88,11 @@ struct ModalState {
   bool returnToR = false; // G99
   int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80
   CycleData cycleData;
+  int cuttingMode = 64;               // G61 G62 G63 G64 (no effect here)
+  int feedMode = 94;                  // G93 G94 G95
   int workOffset = kFirstG54Offset;   // index into workOffsets
+  AxisCounts intermediate{};          // of the last G28/G30, for G29
+  std::uint32_t intermediateMask = 0; // the axes it has
   double feed = 0.0;                  // modal F
   std::array<double, 30> lastWords{}; // #4101..#4130 by index
 };
@@ -179,6 +183,7 @@ struct mbrt_ctx {
   mbc::rt::Frames frames;
   mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
   mbc::rt::AxisCounts program{}; // the same point as the program sees it
+  bool feedInBlock = false;      // the block has F (G93 needs it)
 
   // The run: the block being executed and the count of blocks.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
@@ -207,6 +212,9 @@ struct mbrt_ctx {
   double scale() const { return modal.inch ? 10000.0 : 1000.0; }
 
   int decimals() const { return modal.inch ? 4 : 3; }
+
+  /// Counts per mm, for parameters given in mm whatever the input unit.
+  double countsPerMm() const { return modal.inch ? 10000.0 / 25.4 : 1000.0; }
 
   mbc::rt::LocalLevel& locals() { return levels.back(); }
 

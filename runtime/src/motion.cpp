@@ -53,14 +53,21 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
   return target;
 }
 
-/// Feed moves take length / F minutes (G94); rapids length / rapid rate,
-/// the rate being in mm/min whatever the input unit.
+constexpr int kLastSIndex = 18; // #4119
+
+/// Feed moves take length / F minutes (G94), 1 / F (G93) or length / (F S)
+/// (G95); rapids length / rapid rate, the rate being in mm/min whatever the
+/// input unit.
 void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
   const double length = lengthCounts / ctx.scale();
   double minutes = 0.0;
   if (rapid) {
     minutes =
         length * (ctx.modal.inch ? kMmPerInch : 1.0) / ctx.profile.rapidRate;
+  } else if (ctx.modal.feedMode == 93) {
+    minutes = 1.0 / ctx.modal.feed;
+  } else if (ctx.modal.feedMode == 95) {
+    minutes = length / (ctx.modal.feed * ctx.modal.lastWords[kLastSIndex]);
   } else {
     minutes = length / ctx.modal.feed;
   }
@@ -147,8 +154,7 @@ double sweepAngle(Point start, Point end, Point center, bool clockwise) {
 
 /// PS0020 when the start and end radii differ by more than parameter 3410.
 mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
-  const double tolerance = ctx.profile.parameter(3410) *
-                           (ctx.modal.inch ? 10'000.0 / kMmPerInch : 1000.0);
+  const double tolerance = ctx.profile.parameter(3410) * ctx.countsPerMm();
   const double startRadius = std::hypot(start.x - center.x, start.y - center.y);
   const double endRadius = std::hypot(end.x - center.x, end.y - center.y);
   if (tolerance > 0.0 && std::fabs(startRadius - endRadius) > tolerance) {
@@ -267,8 +273,15 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
 
 namespace {
 
-/// PS0011 for a feed move without F; `cycle` names the canned cycle.
+/// PS0011 for a feed move without F (in G93 without F in its block, in G95
+/// without S); `cycle` names the canned cycle.
 mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
+  if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
+    return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
+  }
+  if (ctx.modal.feedMode == 95 && ctx.modal.lastWords[kLastSIndex] <= 0.0) {
+    return raise(ctx, AlarmId::FeedZero, "G95 needs a spindle speed (S)");
+  }
   if (ctx.modal.feed > 0.0) {
     return 0;
   }
@@ -332,15 +345,47 @@ mbrt_status moveToFrame(mbrt_ctx& ctx) {
   return moveToMachine(ctx, work, machine, ctx.modal.motion == 0, 0);
 }
 
-mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words) {
+mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
+                              int reference) {
   const AxisCounts intermediate = workTarget(ctx, words, ctx.program);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((words.axisMask >> axis & 1) != 0) {
+      ctx.modal.intermediate[axis] = intermediate[axis];
+    }
+  }
+  ctx.modal.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
   if (workToMachine(ctx, work) != ctx.machine) {
     if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
       return status;
     }
   }
-  return rapidInMachineCoordinates(ctx, words.axisMask, AxisCounts{});
+  AxisCounts position{};
+  if (reference > 1) {
+    for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+      position[axis] = static_cast<Counts>(
+          roundHalfAway(ctx.profile.axisParameter(1239 + reference, axis) *
+                        ctx.countsPerMm()));
+    }
+  }
+  return rapidInMachineCoordinates(ctx, words.axisMask, position);
+}
+
+mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words) {
+  const std::uint32_t mask = words.axisMask & ctx.modal.intermediateMask;
+  AxisCounts through = ctx.program;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((mask >> axis & 1) != 0) {
+      through[axis] = ctx.modal.intermediate[axis];
+    }
+  }
+  if (through != ctx.program) {
+    if (const mbrt_status status = moveStraight(ctx, through, true)) {
+      return status;
+    }
+  }
+  // In G91 the words count from the intermediate point.
+  return moveStraight(ctx, workTarget(ctx, words, ctx.program), true);
 }
 
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {

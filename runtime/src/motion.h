@@ -37,9 +37,16 @@ mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
 /// moves Z by the offset), a rapid in G00 and a feed otherwise.
 mbrt_status moveToFrame(mbrt_ctx& ctx);
 
-/// G28: rapid to the intermediate point the axis words give, then the
-/// control point to the reference position (machine zero) on those axes.
-mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words);
+/// G28 (`reference` 1) and G30 P2-P4: rapid to the intermediate point the
+/// axis words give, then the control point to the reference position on
+/// those axes: machine zero, or parameter 1241-1243. G29 remembers the
+/// intermediate point.
+mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
+                              int reference);
+
+/// G29: rapid through the last G28/G30 intermediate point to the point the
+/// axis words give.
+mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words);
 
 /// G53: rapid to machine coordinates on the axes written (ignored in G91).
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words);

@@ -55,7 +55,7 @@ struct Block {
   double l = 0.0;
   std::optional<Counts> q;
   std::optional<double> k;   // the repeat count of a canned cycle
-  int nonModal = 0;          // G04 (40), G28 (280), G53 (530)
+  int nonModal = 0;          // G04 (40), G28 (280), G29, G30, G53 (530)
   double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
   FrameWords frames;
@@ -111,6 +111,8 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       return 0;
     case 40:  // G04 dwell
     case 280: // G28 reference position return
+    case 290: // G29 return from the reference position
+    case 300: // G30 2nd to 4th reference position return
     case 530: // G53 machine coordinates
       block.nonModal = tenths;
       return 0;
@@ -155,12 +157,21 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       return 0;
     case 541:
       return selectG541(ctx, next, block);
+    case 610: // exact stop mode
+    case 620: // automatic corner override
+    case 630: // tapping mode
+    case 640: // cutting mode
+      next.cuttingMode = tenths / 10;
+      return 0;
+    case 930: // inverse time feed
+    case 940: // feed per minute
+    case 950: // feed per revolution
+      next.feedMode = tenths / 10;
+      return 0;
     // The one state mbc keeps these groups in (#4001.. reads them).
     case 150: // G15
     case 400: // G40
-    case 640: // G64
     case 670: // G67
-    case 940: // G94
     case 970: // G97
       return 0;
     default:
@@ -257,6 +268,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return toCounts(ctx, word, &block.motion.center[index]);
   }
   if (letter == 'F') {
+    ctx.feedInBlock = true;
     ctx.modal.feed = numeric(word.value);
     ctx.modal.lastWords[lastWordIndex('F')] = ctx.modal.feed;
     return 0;
@@ -364,7 +376,18 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
     return 0;
   }
   if (block.nonModal == 280) {
-    return returnToReference(ctx, motion);
+    return returnToReference(ctx, motion, 1);
+  }
+  if (block.nonModal == 300) {
+    const double reference = block.hasP ? block.p : 2.0;
+    if (reference < 2.0 || reference > 4.0) {
+      return raise(ctx, AlarmId::IllegalReferenceReturn,
+                   fmt::format("G30 P{}: P must be 2, 3 or 4", reference));
+    }
+    return returnToReference(ctx, motion, static_cast<int>(reference));
+  }
+  if (block.nonModal == 290) {
+    return returnFromReference(ctx, motion);
   }
   if (block.nonModal == 530) {
     return moveInMachineCoordinates(ctx, motion);
@@ -391,6 +414,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       (words[i].letter == 'P' ? block.p : block.l) = value;
     }
   }
+  ctx.feedInBlock = false;
   block.frames.axes = &block.motion;
   for (size_t i = 0; i < count; ++i) {
     const char letter = words[i].letter;

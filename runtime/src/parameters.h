@@ -9,8 +9,9 @@ struct ParameterSpec {
   int last;
   double low;
   double high;
-  double fallback; // the value of a parameter the profile does not set
-  bool whole;      // bit parameters and codes take whole numbers
+  double fallback;      // the value of a parameter the profile does not set
+  bool whole;           // bit parameters and codes take whole numbers
+  bool perAxis = false; // one value per axis: a JSON array in the profile
 };
 
 /// The spec of parameter `number`, or nullptr when profiles cannot set it.

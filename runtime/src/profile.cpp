@@ -107,6 +107,30 @@ void parseUnits(const json& value, Profile& profile) {
   fail("units", "must be \"metric\" or \"inch\"");
 }
 
+void checkRange(const ParameterSpec& spec, double x, const std::string& path) {
+  if ((spec.whole && x != std::floor(x)) || x < spec.low || x > spec.high) {
+    fail(path, fmt::format("must be a{} number from {} to {}",
+                           spec.whole ? " whole" : "", spec.low, spec.high));
+  }
+}
+
+/// A per-axis parameter: an array of at most one number per axis.
+void parseAxisParameter(const json& item, const std::string& path, int n,
+                        const ParameterSpec& spec, Profile& profile) {
+  if (!item.is_array() || item.size() > profile.axes.size()) {
+    fail(path, fmt::format("must be an array of at most {} numbers, one per "
+                           "axis",
+                           profile.axes.size()));
+  }
+  AxisValues values{};
+  for (std::size_t axis = 0; axis < item.size(); ++axis) {
+    const std::string itemPath = fmt::format("{}[{}]", path, axis);
+    values[axis] = number(item[axis], itemPath);
+    checkRange(spec, values[axis], itemPath);
+  }
+  profile.axisParameters[n] = values;
+}
+
 void parseParameters(const json& value, Profile& profile) {
   for (const auto& [key, item] : object(value, "parameters").items()) {
     const std::string path = child("parameters", key);
@@ -115,13 +139,12 @@ void parseParameters(const json& value, Profile& profile) {
     if (spec == nullptr) {
       unknownKey(path);
     }
-    const double x = number(item, path);
-    if ((spec->whole && x != std::floor(x)) || x < spec->low ||
-        x > spec->high) {
-      fail(path,
-           fmt::format("must be a{} number from {} to {}",
-                       spec->whole ? " whole" : "", spec->low, spec->high));
+    if (spec->perAxis) {
+      parseAxisParameter(item, path, *n, *spec, profile);
+      continue;
     }
+    const double x = number(item, path);
+    checkRange(*spec, x, path);
     // The compiler assumes FANUC's own G codes never call a macro.
     if (*n >= 6050 && *n <= 6059 &&
         isFanucGCode(static_cast<int>(std::fabs(x)) * 10)) {
@@ -317,6 +340,11 @@ double Profile::parameter(int number) const {
   }
   const ParameterSpec* spec = findParameter(number);
   return spec != nullptr ? spec->fallback : 0.0;
+}
+
+double Profile::axisParameter(int number, int axis) const {
+  const auto it = axisParameters.find(number);
+  return it != axisParameters.end() ? it->second[axis] : 0.0;
 }
 
 bool Profile::parameterBit(int number, int bit) const {

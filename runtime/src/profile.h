@@ -40,6 +40,7 @@ struct Profile {
   double rapidRate = 10000.0; // mm/min
   // The parameters the profile sets (parameters.h has the others' defaults).
   std::map<int, double> parameters;
+  std::map<int, AxisValues> axisParameters; // 1241: one value per axis
   int toolOffsetCount = 400;
   std::vector<ToolOffset> toolOffsets;           // index 0 unused
   std::vector<AxisValues> workOffsets;           // kWorkOffsetCount entries
@@ -64,6 +65,9 @@ struct Profile {
   /// it, 0 for a parameter mbc does not model.
   double parameter(int number) const;
   bool parameterBit(int number, int bit) const;
+  /// A per-axis parameter's value for `axis`, 0 when the profile does not
+  /// set it.
+  double axisParameter(int number, int axis) const;
 };
 
 /// The built-in 3-axis metric vertical mill.

@@ -174,7 +174,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 3:
       return modal.incremental ? 91 : 90;
     case 5:
-      return 94;
+      return modal.feedMode;
     case 6:
       return modal.inch ? 20 : 21;
     case 7:
@@ -194,7 +194,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 14:
       return modal.workOffset < kFirstG541Offset ? 53 + modal.workOffset : 54.1;
     case 15:
-      return 64;
+      return modal.cuttingMode;
     case 16:
       return ctx.frames.rotation ? 68 : 69;
     case 17:

@@ -89,14 +89,22 @@ TEST(RuntimeNcBlock, FeedZeroAlarm) {
 
 TEST(RuntimeNcBlock, UnsupportedGCodes) {
   Machine m;
-  EXPECT_EQ(m.block("G30 X0", 3), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.block("G41 D1", 3), status(AlarmId::Unsupported));
   EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
-                        "G30 (2nd, 3rd and 4th reference position return)\n");
+                        "G41 (cutter compensation left)\n");
   for (const char* block :
-       {"G41 D1", "G29 X0", "G68 X0 Y0 I0 J0 K1 R45.", "G16", "G05.1 Q1"}) {
+       {"G31 X0", "G68 X0 Y0 I0 J0 K1 R45.", "G16", "G05.1 Q1"}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
   }
+}
+
+TEST(RuntimeNcBlock, ReferencePositionNumber) {
+  Machine m;
+  EXPECT_EQ(m.block("G30 P5 Z0", 6), status(AlarmId::IllegalReferenceReturn));
+  EXPECT_EQ(m.report(), "test.nc:6: alarm PS0046: ILLEGAL REFERENCE RETURN "
+                        "COMMAND: G30 P5: P must be 2, 3 or 4\n");
+  EXPECT_TRUE(m.motions().empty());
 }
 
 TEST(RuntimeNcBlock, UnknownGCodes) {
