@@ -86,6 +86,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.levels.assign(1, LocalLevel{});
   ctx.machine = AxisCounts{};
   ctx.frames = Frames{};
+  ctx.skipPosition = AxisCounts{};
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};

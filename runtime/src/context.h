@@ -184,6 +184,7 @@ struct mbrt_ctx {
   mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
   mbc::rt::AxisCounts program{}; // the same point as the program sees it
   bool feedInBlock = false;      // the block has F (G93 needs it)
+  mbc::rt::AxisCounts skipPosition{}; // #5061: where the last G31 ended
 
   // The run: the block being executed and the count of blocks.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};

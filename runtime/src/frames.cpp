@@ -125,6 +125,17 @@ AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
   return work;
 }
 
+AxisCounts localPosition(const mbrt_ctx& ctx) {
+  AxisCounts local = machineToWork(ctx, ctx.machine);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    local[axis] -= ctx.frames.local[axis];
+  }
+  if (ctx.frames.lengthAxis >= 0) {
+    local[ctx.frames.lengthAxis] += ctx.frames.length;
+  }
+  return local;
+}
+
 void resyncProgram(mbrt_ctx& ctx) {
   AxisCounts local = machineToWork(ctx, ctx.machine);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {

@@ -24,6 +24,10 @@ AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work);
 /// The workpiece-frame position of a machine position.
 AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine);
 
+/// The control point in local coordinates (after mirror, scaling and
+/// rotation), the tool length offset in it: #5041, and #5061 at a skip.
+AxisCounts localPosition(const mbrt_ctx& ctx);
+
 /// After a frame or offset changed under a standing machine: the program
 /// position that now names the control point.
 void resyncProgram(mbrt_ctx& ctx);

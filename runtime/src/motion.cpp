@@ -260,6 +260,7 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   convertAll(ctx.machine);
   std::for_each(ctx.workOffsets.begin(), ctx.workOffsets.end(), convertAll);
   Frames& frames = ctx.frames;
+  convertAll(ctx.skipPosition);
   convertAll(frames.local);
   convertAll(frames.preset);
   convert(frames.length);
@@ -386,6 +387,49 @@ mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words) {
   }
   // In G91 the words count from the intermediate point.
   return moveStraight(ctx, workTarget(ctx, words, ctx.program), true);
+}
+
+namespace {
+
+/// The stylus ball centre, mm: the control point less the tool length.
+Point3 tipOf(const mbrt_ctx& ctx, const AxisCounts& machine) {
+  Point3 tip{};
+  for (int i = 0; i < 3; ++i) {
+    const int axis = ctx.axisOf(static_cast<char>('X' + i));
+    if (axis >= 0) {
+      const Counts length =
+          axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
+      tip[i] = static_cast<double>(machine[axis] - length) / ctx.countsPerMm();
+    }
+  }
+  return tip;
+}
+
+} // namespace
+
+mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words) {
+  constexpr int kSkipCode = 31;
+  if (const mbrt_status status = checkFeed(ctx, kSkipCode)) {
+    return status;
+  }
+  const AxisCounts target = workTarget(ctx, words, ctx.program);
+  const AxisCounts machine = workToMachine(ctx, programToWork(ctx, target));
+  const std::optional<double> contact = firstContact(
+      ctx.profile.probe, tipOf(ctx, ctx.machine), tipOf(ctx, machine));
+  mbrt_status status = 0;
+  if (contact) {
+    AxisCounts stop = ctx.machine;
+    for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+      stop[axis] += static_cast<Counts>(roundHalfAway(
+          *contact * static_cast<double>(machine[axis] - ctx.machine[axis])));
+    }
+    status = moveToMachine(ctx, machineToWork(ctx, stop), stop, false, 0);
+    resyncProgram(ctx);
+  } else {
+    status = moveStraight(ctx, target, false);
+  }
+  ctx.skipPosition = localPosition(ctx);
+  return status;
 }
 
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {

@@ -48,6 +48,10 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
 /// axis words give.
 mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words);
 
+/// G31: a feed move that stops where the probe first touches the profile's
+/// scene, or completes without contact; #5061 takes where it ended.
+mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words);
+
 /// G53: rapid to machine coordinates on the axes written (ignored in G91).
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words);
 

@@ -55,7 +55,7 @@ struct Block {
   double l = 0.0;
   std::optional<Counts> q;
   std::optional<double> k;   // the repeat count of a canned cycle
-  int nonModal = 0;          // G04 (40), G28 (280), G29, G30, G53 (530)
+  int nonModal = 0;          // G04 (40), G28 (280), G29, G30, G31, G53 (530)
   double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
   FrameWords frames;
@@ -113,6 +113,7 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 280: // G28 reference position return
     case 290: // G29 return from the reference position
     case 300: // G30 2nd to 4th reference position return
+    case 310: // G31 skip
     case 530: // G53 machine coordinates
       block.nonModal = tenths;
       return 0;
@@ -388,6 +389,9 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   }
   if (block.nonModal == 290) {
     return returnFromReference(ctx, motion);
+  }
+  if (block.nonModal == 310) {
+    return motion.axisMask != 0 ? skipMove(ctx, motion) : 0;
   }
   if (block.nonModal == 530) {
     return moveInMachineCoordinates(ctx, motion);

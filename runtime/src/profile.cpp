@@ -9,74 +9,16 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <stdexcept>
 
 #include "parameters.h"
+#include "profile_json.h"
 
 namespace mbc::rt {
 
 namespace {
 
 using nlohmann::json;
-
-struct ProfileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void fail(const std::string& key, const std::string& what) {
-  throw ProfileError("machine profile: \"" + key + "\" " + what);
-}
-
-std::string child(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-
-const json& object(const json& value, const std::string& path) {
-  if (!value.is_object()) {
-    fail(path, "must be an object");
-  }
-  return value;
-}
-
-double number(const json& value, const std::string& path) {
-  if (!value.is_number()) {
-    fail(path, "must be a number");
-  }
-  return value.get<double>();
-}
-
-int integer(const json& value, const std::string& path, int low, int high) {
-  const double x = number(value, path);
-  if (x != std::floor(x) || x < low || x > high) {
-    fail(path, "must be a whole number from " + std::to_string(low) + " to " +
-                   std::to_string(high));
-  }
-  return static_cast<int>(x);
-}
-
-bool boolean(const json& value, const std::string& path) {
-  if (!value.is_boolean()) {
-    fail(path, "must be true or false");
-  }
-  return value.get<bool>();
-}
-
-/// A decimal key such as "3401" or "7"; nullopt when it is not one.
-std::optional<int> keyNumber(std::string_view key) {
-  int n = 0;
-  const auto [end, ec] =
-      std::from_chars(key.data(), key.data() + key.size(), n);
-  if (ec != std::errc() || end != key.data() + key.size()) {
-    return std::nullopt;
-  }
-  return n;
-}
-
-[[noreturn]] void unknownKey(const std::string& path) {
-  throw ProfileError("machine profile: unknown key \"" + path + "\"");
-}
 
 void parseAxes(const json& value, Profile& profile) {
   const std::string what = "must be an array of 1 to 8 distinct axis "
@@ -325,6 +267,8 @@ Profile parseTopLevel(const json& root) {
       parseParts(item, profile);
     } else if (key == "block_skip") {
       profile.blockSkip = boolean(item, key);
+    } else if (key == "probe") {
+      profile.probe = parseProbeScene(item);
     } else {
       unknownKey(key);
     }

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "probe_scene.h"
+
 namespace mbc::rt {
 
 /// Axis letters a profile may name.
@@ -52,6 +54,7 @@ struct Profile {
   double partsCount = 0.0;
   double partsRequired = 0.0;
   bool blockSkip = false;
+  ProbeScene probe; // what G31 touches
 
   // Bits read on every NC word or function call, kept out of the map.
   bool decimalPointInput = false; // 3401#0 DPI: X10 is 10 mm, not 0.010

@@ -237,12 +237,12 @@ Counts machinePosition(const mbrt_ctx& ctx, int axis) {
   return ctx.machine[axis];
 }
 
-/// #5041: the control point in local coordinates, so with the tool length
-/// offset in it.
 Counts currentPosition(const mbrt_ctx& ctx, int axis) {
-  const Counts length = axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
-  return machineToWork(ctx, ctx.machine)[axis] + length -
-         ctx.frames.local[axis];
+  return localPosition(ctx)[axis];
+}
+
+Counts skipPosition(const mbrt_ctx& ctx, int axis) {
+  return ctx.skipPosition[axis];
 }
 
 Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
@@ -338,7 +338,7 @@ constexpr std::array kSystemVariables = {
     SysVarRange{5001, 5020, readPosition<blockEndPosition>, nullptr},
     SysVarRange{5021, 5040, readPosition<machinePosition>, nullptr},
     SysVarRange{5041, 5060, readPosition<currentPosition>, nullptr},
-    SysVarRange{5061, 5080, readZero, nullptr}, // skip position
+    SysVarRange{5061, 5080, readPosition<skipPosition>, nullptr},
     SysVarRange{5081, 5100, readPosition<toolLengthOffset>, nullptr},
     SysVarRange{5101, 5120, readZero, nullptr}, // servo deviation
     SysVarRange{5201, 5340, readG54Offset, writeG54Offset},

@@ -1,5 +1,6 @@
 O9130 (TOOL BREAK DETECTION)
 (FIXED: #34 #35 ARE NOT VARIABLES - LOCALS END AT #33 - NOW #134 #135)
+(FIXED: A SHORT OR BROKEN TOOL TOUCHES LOWER, NOT HIGHER - LT/GT SWAPPED)
 ; Uses laser or touch probe to verify tool
 ; G65 P9130 T_ L_ D_
 ; T = Tool number to check
@@ -33,8 +34,8 @@ G53 G00 Z#32
 G31 Z#33 F500.
 ;
 ; Check if tool found
-IF [#5063 GT #135 - #134] GOTO 100  ; Tool shorter than expected or broken
-IF [#5063 LT #135 + #134] GOTO 100  ; Tool longer (wrong tool?)
+IF [#5063 LT #135 - #134] GOTO 100  ; Tool shorter than expected or broken
+IF [#5063 GT #135 + #134] GOTO 100  ; Tool longer (wrong tool?)
 ;
 ; Tool OK
 #100 = 0                         ; Status: OK
@@ -46,8 +47,8 @@ N100 (TOOL PROBLEM)
 #102 = #135                       ; Expected position
 #103 = #5063 - #135               ; Difference
 ;
-IF [#103 GT 0] THEN #3000 = 231 (TOOL BROKEN OR SHORT)
-IF [#103 LT 0] THEN #3000 = 232 (WRONG TOOL LENGTH)
+IF [#103 LT 0] THEN #3000 = 231 (TOOL BROKEN OR SHORT)
+IF [#103 GT 0] THEN #3000 = 232 (WRONG TOOL LENGTH)
 ;
 N900
 G53 G00 Z0
