@@ -9,6 +9,7 @@
 
 #include <numbers>
 
+#include "data_input.h"
 #include "frames.h"
 
 namespace mbc::rt {
@@ -228,6 +229,8 @@ mbrt_status executeFrameCode(mbrt_ctx& ctx, const FrameWords& words) {
       return 0;
     case 680:
       return setRotation(ctx, words);
+    case 100:
+      return programmableDataInput(ctx, words);
     default:
       return 0;
   }
@@ -236,8 +239,8 @@ mbrt_status executeFrameCode(mbrt_ctx& ctx, const FrameWords& words) {
 } // namespace
 
 bool isFrameCode(int tenths) {
-  return tenths == 520 || tenths == 920 || tenths == 921 || tenths == 510 ||
-         tenths == 511 || tenths == 501 || tenths == 680;
+  return tenths == 100 || tenths == 520 || tenths == 920 || tenths == 921 ||
+         tenths == 510 || tenths == 511 || tenths == 501 || tenths == 680;
 }
 
 mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,

@@ -1,4 +1,5 @@
-// The G codes that set coordinate frames (frames.h) from a block's words:
+// The G codes whose axis words are data, not a move: those that set
+// coordinate frames (frames.h) and G10 (data_input.h):
 // G52 local origin, G92 coordinate system setting and G92.1 preset,
 // G51/G50 scaling,
 // G51.1/G50.1 programmable mirror, G68/G69 rotation and G43/G44/G49 tool
@@ -16,8 +17,8 @@ namespace mbc::rt {
 
 /// What a block says about frames.
 struct FrameWords {
-  int code = 0; // 520 G52, 920 G92, 921 G92.1, 510 G51, 511 G51.1,
-                // 501 G50.1, 680 G68
+  int code = 0;                // 100 G10, 520 G52, 920 G92, 921 G92.1, 510 G51,
+                               // 511 G51.1, 501 G50.1, 680 G68
   bool cancelScaling = false;  // G50
   bool cancelRotation = false; // G69
   int lengthCode = 0;          // 43, 44, 49
