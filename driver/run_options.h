@@ -15,6 +15,7 @@ namespace mbc::driver {
 struct RunOptions {
   std::string mainProgram; // --main O1234 / <NAME>
   std::string toolpathPath;
+  std::string gcodePath; // the flattened program
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;

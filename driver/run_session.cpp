@@ -51,6 +51,21 @@ void printSummary(const mbrt_ctx* ctx, const std::string& program,
   }
 }
 
+/// The flattened program is one ISO tape: '%', the blocks, '%'.
+bool openGcode(const RunOptions& o, mbrt_ctx* ctx, OutputFile& gcode) {
+  if (o.gcodePath.empty()) {
+    return true;
+  }
+  if (!gcode.open(o.gcodePath)) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                 o.gcodePath.c_str());
+    return false;
+  }
+  OutputFile::writeText(&gcode, "%\n", 2);
+  mbrt_set_gcode_sink(ctx, &OutputFile::writeText, &gcode);
+  return true;
+}
+
 bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, OutputFile& toolpath,
                  OutputFile& dprnt) {
   if (!o.toolpathPath.empty()) {
@@ -96,8 +111,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
   if (!ctx) {
     return 2;
   }
-  OutputFile toolpath, dprnt;
-  if (!openOutputs(o, ctx.get(), toolpath, dprnt)) {
+  OutputFile toolpath, dprnt, gcode;
+  if (!openOutputs(o, ctx.get(), toolpath, dprnt) ||
+      !openGcode(o, ctx.get(), gcode)) {
     return 2;
   }
   mbrt_set_message_sink(ctx.get(), &writeStderr, nullptr);
@@ -118,6 +134,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
     mbrt_alarm_report(ctx.get(), report, sizeof report);
     std::fflush(stdout);
     std::fputs(report, stderr);
+  }
+  if (gcode.get() != nullptr) {
+    OutputFile::writeText(&gcode, "%\n", 2);
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx.get(), o.varsOutPath)) {
     std::fprintf(stderr, "mbc: error: cannot write '%s'\n",

@@ -7,18 +7,7 @@
 set -u
 mbc=$(realpath "$1")
 case_path=$2
-dir=${case_path%/*}
-[ "$dir" = "$case_path" ] && dir=.
-name=${case_path##*/}
-name=${name%.nc}
-cd "$dir" || exit 2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export LC_ALL=C SOURCE_DATE_EPOCH=1767225600
-args=()
-if [ -f "$name.args" ]; then
-  mapfile -t args < <(grep -v '^[[:space:]]*$' "$name.args")
-fi
+source "$(dirname "$0")/case_env.sh"
 run() { # engine out-dir
   mkdir -p "$2"
   "$mbc" run "$name.nc" "${args[@]}" --engine "$1" --trace \

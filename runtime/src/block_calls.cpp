@@ -192,6 +192,7 @@ struct Wanted {
   int common = 0; // #149, #147 or #146 takes the code's value
   double value = 0.0;
   std::string what;
+  char letter = 0; // the code that calls: M, T, S or B
 };
 
 void wantCodeSubprograms(const mbrt_ctx& ctx, const BlockCodes& codes,
@@ -199,15 +200,16 @@ void wantCodeSubprograms(const mbrt_ctx& ctx, const BlockCodes& codes,
   for (int i = 0; i < codes.mCount; ++i) {
     const int program = findCode(ctx, kSubprogramM, codes.m[i]);
     if (program >= 0) {
-      wanted.push_back({MBRT_CALL_CODE_SUB, program, 0, 0.0,
-                        fmt::format("M{:02}", codes.m[i])});
+      wanted.push_back({MBRT_CALL_CODE_SUB, program, 0,
+                        static_cast<double>(codes.m[i]),
+                        fmt::format("M{:02}", codes.m[i]), 'M'});
     }
   }
   const auto want = [&](const std::optional<double>& code, bool enabled,
                         char letter, int program, int common) {
     if (code && enabled) {
       wanted.push_back({MBRT_CALL_CODE_SUB, program, common, *code,
-                        fmt::format("{}{}", letter, *code)});
+                        fmt::format("{}{}", letter, *code), letter});
     }
   };
   want(codes.t, ctx.profile.parameterBit(6001, 5), 'T', kTProgram, kTCommon);
@@ -265,7 +267,7 @@ mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
       ctx.modalCalls.empty() ? nullptr : &ctx.modalCalls.back();
   if (codes.moved && modal != nullptr && !modal->everyBlock &&
       !insideModalCall(ctx, modal->id)) {
-    wanted.push_back({MBRT_CALL_MODAL, modal->program, 0, 0.0, "G66"});
+    wanted.push_back({MBRT_CALL_MODAL, modal->program, 0, 0.0, "G66", 0});
   }
   if (wanted.empty()) {
     return 0;
@@ -278,6 +280,7 @@ mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                              wanted[0].what, second));
   }
   const Wanted& call = wanted[0];
+  ctx.callingCode = {call.letter, call.value};
   if (call.common != 0) {
     ctx.commons[call.common] = call.value;
   }

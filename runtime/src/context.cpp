@@ -232,6 +232,10 @@ void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
   ctx->block.tracing = fn != nullptr ? 1 : 0;
 }
 
+void mbrt_set_gcode_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
+  ctx->gcodeSink = {fn, user};
+}
+
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
   ctx->block.max_blocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
 }

@@ -173,6 +173,9 @@ struct mbrt_ctx {
   std::vector<mbc::rt::ModalCall> modalCalls; // G66 in force, innermost last
   int nextModalId = 1;
   std::deque<mbc::rt::BlockCall> blockCalls; // by call level
+  // The M, T, S or B code of the block that called a subprogram ('\0':
+  // none), so that the flattened program leaves it out.
+  std::pair<char, double> callingCode{'\0', 0.0};
   int macroDepth = 0;
   int subDepth = 0;
   std::string mainProgram;
@@ -202,6 +205,7 @@ struct mbrt_ctx {
   mbc::rt::Sink<mbrt_text_fn> printSink;
   mbc::rt::Sink<mbrt_text_fn> messageSink;
   mbc::rt::Sink<mbrt_text_fn> traceSink;
+  mbc::rt::Sink<mbrt_text_fn> gcodeSink; // the flattened program
 
   int axisCount() const { return static_cast<int>(profile.axes.size()); }
 

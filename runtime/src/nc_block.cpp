@@ -7,6 +7,7 @@
 
 #include "block_calls.h"
 #include "canned_cycles.h"
+#include "flat_gcode.h"
 #include "frame_codes.h"
 #include "frames.h"
 #include "g_codes.h"
@@ -419,6 +420,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     }
   }
   ctx.feedInBlock = false;
+  ctx.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
   for (size_t i = 0; i < count; ++i) {
     const char letter = words[i].letter;
@@ -466,7 +468,10 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     return status;
   }
   block.codes.moved = block.motion.axisMask != 0 && block.frames.code == 0;
-  return callAfterBlock(ctx, block.codes, flow);
+  // A block whose calls alarm still moved: it goes to the flattened program.
+  const mbrt_status status = callAfterBlock(ctx, block.codes, flow);
+  flattenBlock(ctx, words, count, *flow);
+  return status;
 }
 
 } // namespace

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "block_calls.h"
+#include "flat_gcode.h"
 #include "frames.h"
 #include "motion.h"
 
@@ -73,13 +74,21 @@ mbrt_status readToolOffset(mbrt_ctx& ctx, int index, Num* out) {
   return 0;
 }
 
-template <double ToolOffset::*Field>
+/// Offset memory holds least increments, like the work offsets.
+template <double ToolOffset::*Field, int L>
 mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   Num ignored;
   if (const mbrt_status status = readToolOffset<Field>(ctx, index, &ignored)) {
     return status;
   }
-  ctx.toolOffsets[index + 1].*Field = numeric(value);
+  const double counts = roundToCounts(numeric(value), ctx.scale());
+  if (!fitsAddress(counts)) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("tool offset {}", numeric(value)));
+  }
+  const double units = countsToUnits(static_cast<Counts>(counts), ctx.scale());
+  ctx.toolOffsets[index + 1].*Field = units;
+  flattenToolOffset(ctx, L, index + 1, units);
   return 0;
 }
 
@@ -270,6 +279,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
   // The machine position stays; the workpiece position follows the offset.
   ctx.workOffsets[offset][axis] = static_cast<Counts>(counts);
   resyncProgram(ctx);
+  flattenWorkOffset(ctx, offset);
   return 0;
 }
 
@@ -308,9 +318,9 @@ constexpr std::array kSystemVariables = {
     SysVarRange{1100, 1115, readOutputSignal, writeOutputSignal},
     SysVarRange{1132, 1133, readOutputWord, writeOutputWord},
     SysVarRange{2001, 2200, readToolOffset<&ToolOffset::hWear>,
-                writeToolOffset<&ToolOffset::hWear>},
+                writeToolOffset<&ToolOffset::hWear, 11>},
     SysVarRange{2201, 2400, readToolOffset<&ToolOffset::hGeometry>,
-                writeToolOffset<&ToolOffset::hGeometry>},
+                writeToolOffset<&ToolOffset::hGeometry, 10>},
     SysVarRange{3000, 3000, readZero, writeMacroAlarm},
     SysVarRange{3001, 3001, readClockMs, writeClockMs},
     SysVarRange{3002, 3002, readClockHours, writeClockHours},
@@ -345,13 +355,13 @@ constexpr std::array kSystemVariables = {
     SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
                 writeG541Offset<kOffsetStride>},
     SysVarRange{10001, 10999, readToolOffset<&ToolOffset::hWear>,
-                writeToolOffset<&ToolOffset::hWear>},
+                writeToolOffset<&ToolOffset::hWear, 11>},
     SysVarRange{11001, 11999, readToolOffset<&ToolOffset::hGeometry>,
-                writeToolOffset<&ToolOffset::hGeometry>},
+                writeToolOffset<&ToolOffset::hGeometry, 10>},
     SysVarRange{12001, 12999, readToolOffset<&ToolOffset::dWear>,
-                writeToolOffset<&ToolOffset::dWear>},
+                writeToolOffset<&ToolOffset::dWear, 13>},
     SysVarRange{13001, 13999, readToolOffset<&ToolOffset::dGeometry>,
-                writeToolOffset<&ToolOffset::dGeometry>},
+                writeToolOffset<&ToolOffset::dGeometry, 12>},
     SysVarRange{14001, 19988, readG541Offset<MBRT_MAX_AXES>,
                 writeG541Offset<MBRT_MAX_AXES>},
 };

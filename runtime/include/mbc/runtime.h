@@ -81,6 +81,11 @@ void mbrt_set_print_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
 void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
 /* --trace lines ("file:line: text\n"); fn NULL switches tracing off. */
 void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
+/* The flattened program (mbc run --gcode): one line per NC block executed,
+ * words evaluated, without the words that called a program (M98 P L, M99
+ * P, an M/T/S/B code that called a subprogram), and G10 lines for the
+ * offsets macro statements write. */
+void mbrt_set_gcode_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user);
 /* Alarms as they are raised: fn gets the text mbrt_alarm_report gives. The
  * call that raised it then returns the alarm id, which unwinds to the
  * caller of the program. */

@@ -1,0 +1,165 @@
+// Words print so that they read back the same. Coordinates (axes, I J K
+// R Q) print rounded to the least increment, as the block used them, with
+// a decimal point; other words print a literal without decimal point as an
+// integer and any other value with a decimal point and as many digits as
+// it takes to round-trip (never in exponent form). In G04, G51 and G68
+// blocks the coordinate letters mean time, factors and angles: they print
+// the second way.
+#include "flat_gcode.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace mbc::rt {
+
+namespace {
+
+/// The shortest fixed-point text of `value` that parses back to it.
+std::string fixedText(double value) {
+  std::string text;
+  for (int digits = 0; digits <= 20; ++digits) {
+    text = fmt::format("{:.{}f}", value, digits);
+    if (std::strtod(text.c_str(), nullptr) == value) {
+      break;
+    }
+  }
+  return text;
+}
+
+/// K is the repeat count of a canned cycle.
+bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
+  return ctx.axisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
+         (letter == 'K' && ctx.modal.cycle == 0) || letter == 'R' ||
+         letter == 'Q';
+}
+
+std::string unitsText(double value, int decimals) {
+  std::string text = fmt::format("{:.{}f}", value, decimals);
+  text.erase(text.find_last_not_of('0') + 1);
+  return text == "-0." ? "0." : text;
+}
+
+std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {
+  const double value = numeric(word.value);
+  const double counts =
+      word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
+          ? value
+          : roundToCounts(value, ctx.scale());
+  return fmt::format("{}{}", word.letter,
+                     unitsText(counts / ctx.scale(), ctx.decimals()));
+}
+
+/// G04, G51, G68: blocks whose coordinate letters are no coordinates.
+bool hasOtherMeanings(const mbrt_word* words, size_t count) {
+  for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter == 'G') {
+      const double tenths = std::round(numeric(words[i].value) * 10.0);
+      if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::string wordText(const mbrt_word& word) {
+  const double value = numeric(word.value);
+  std::string text = fixedText(value);
+  const bool integral = std::floor(value) == value;
+  // G54.1 keeps its point; other G and M codes are whole.
+  const bool code = word.letter == 'G' || word.letter == 'M';
+  if (word.kind != MBRT_WORD_INT_LITERAL && !code &&
+      text.find('.') == std::string::npos) {
+    text += '.';
+  } else if (code && integral) {
+    text = fmt::format("{}", static_cast<long long>(value));
+  }
+  return fmt::format("{}{}", word.letter, text);
+}
+
+bool isCode(const mbrt_word& word, char letter, double value) {
+  return word.letter == letter && numeric(word.value) == value;
+}
+
+/// Whether the block hands its P and L to M98 or M99.
+bool transfers(const mbrt_word* words, size_t count) {
+  for (size_t i = 0; i < count; ++i) {
+    if (isCode(words[i], 'M', 98) || isCode(words[i], 'M', 99)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void send(mbrt_ctx& ctx, const std::string& line) {
+  ctx.gcodeSink.fn(ctx.gcodeSink.user, line.data(), line.size());
+}
+
+/// G10 writes in G90; a run in G91 goes back to it after.
+void sendData(mbrt_ctx& ctx, const std::string& data) {
+  send(ctx,
+       fmt::format("G90 {}\n{}", data, ctx.modal.incremental ? "G91\n" : ""));
+}
+
+} // namespace
+
+void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                  const mbrt_flow& flow) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  const bool dropTransfer = transfers(words, count);
+  const bool exact = hasOtherMeanings(words, count);
+  const auto [callLetter, callValue] = ctx.callingCode;
+  const bool codeCall =
+      flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
+  std::string line;
+  for (size_t i = 0; i < count; ++i) {
+    const mbrt_word& word = words[i];
+    if (dropTransfer && (isCode(word, 'M', 98) || isCode(word, 'M', 99) ||
+                         word.letter == 'P' || word.letter == 'L')) {
+      continue;
+    }
+    // G67 is a macro statement: the flattened program has no modal calls.
+    if ((codeCall && isCode(word, callLetter, callValue)) ||
+        isCode(word, 'G', 67)) {
+      continue;
+    }
+    line += line.empty() ? "" : " ";
+    line += !exact && isCoordinateLetter(ctx, word.letter)
+                ? coordinateText(ctx, word)
+                : wordText(word);
+  }
+  if (!line.empty()) {
+    send(ctx, line + "\n");
+  }
+}
+
+void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  std::string data =
+      offset < kFirstG541Offset
+          ? fmt::format("G10 L2 P{}", offset - kExternalOffset)
+          : fmt::format("G10 L20 P{}", offset - kFirstG541Offset + 1);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    data += fmt::format(
+        " {}{}", ctx.profile.axes[axis],
+        unitsText(countsToUnits(ctx.workOffsets[offset][axis], ctx.scale()),
+                  ctx.decimals()));
+  }
+  sendData(ctx, data);
+}
+
+void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  sendData(ctx, fmt::format("G10 L{} P{} R{}", l, number,
+                            unitsText(value, ctx.decimals())));
+}
+
+} // namespace mbc::rt

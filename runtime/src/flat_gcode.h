@@ -1,0 +1,23 @@
+// The flattened program (`mbc run --gcode`): every NC block the run
+// executes with its words evaluated, and the offsets macro statements write
+// as G10 blocks, so that a control without the macro option or a
+// backplotter reproduces the run's toolpath.
+#pragma once
+
+#include "context.h"
+
+namespace mbc::rt {
+
+/// An executed block, less the words that called a program (M98 P L, M99
+/// P, the M/T/S/B code of a code call) and G67.
+void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                  const mbrt_flow& flow);
+
+/// A macro statement wrote a work offset (index into workOffsets).
+void flattenWorkOffset(mbrt_ctx& ctx, int offset);
+
+/// A macro statement wrote a tool offset: L10 H geometry, L11 H wear, L12
+/// D geometry, L13 D wear.
+void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value);
+
+} // namespace mbc::rt
