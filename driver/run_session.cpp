@@ -1,8 +1,11 @@
-// A run and its summary line (see run_session.h).
+// A run and its summary lines (see run_session.h).
 #include "driver/run_session.h"
 
 #include "driver/output_files.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -33,6 +36,28 @@ CtxPtr createContext(const RunOptions& o) {
   return CtxPtr(ctx);
 }
 
+/// "1:02:03.4" or "2:03.4".
+std::string clockText(double seconds) {
+  const auto tenths = static_cast<long long>(std::llround(seconds * 10.0));
+  const long long hours = tenths / 36000;
+  const long long minutes = tenths / 600 % 60;
+  const double rest = static_cast<double>(tenths % 600) / 10.0;
+  return hours > 0 ? fmt::format("{}:{:02}:{:04.1f}", hours, minutes, rest)
+                   : fmt::format("{}:{:04.1f}", minutes, rest);
+}
+
+/// Path lengths, the estimated cycle time and the bounding box.
+std::string toolpathSummary(const mbrt_stats& st) {
+  std::string box;
+  for (int axis = 0; axis < st.axis_count; ++axis) {
+    box += fmt::format(" {} {:.3f}..{:.3f}", st.axis_names[axis],
+                       st.box_min[axis], st.box_max[axis]);
+  }
+  return fmt::format(
+      "mbc: toolpath ({}): feed {:.3f}, rapid {:.3f}, time {};{}\n", st.unit,
+      st.feed_length, st.rapid_length, clockText(st.cycle_time), box);
+}
+
 void printSummary(const mbrt_ctx* ctx, const std::string& program,
                   bool alarmed) {
   mbrt_stats st{};
@@ -41,6 +66,9 @@ void printSummary(const mbrt_ctx* ctx, const std::string& program,
                program.c_str(), static_cast<unsigned long long>(st.blocks),
                static_cast<unsigned long long>(st.moves), alarmed ? 1 : 0,
                alarmed ? "" : "s");
+  if (st.moves > 0) {
+    std::fputs(toolpathSummary(st).c_str(), stderr);
+  }
   if (st.optional_stops) {
     std::fprintf(stderr, "mbc: note: %llu M00/M01 stop(s) passed through\n",
                  static_cast<unsigned long long>(st.optional_stops));

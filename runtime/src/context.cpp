@@ -96,6 +96,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.line = 0;
   ctx.block.blocks = 0;
   ctx.moves = 0;
+  ctx.stats = RunStats{};
   ctx.optionalStops = 0;
   ctx.mainM99 = false;
   ctx.clockMs = 0.0;
@@ -341,4 +342,17 @@ void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
   out->moves = ctx->moves;
   out->optional_stops = ctx->optionalStops;
   out->main_m99 = ctx->mainM99;
+  // Stats are kept in mm: the summary speaks the profile's unit.
+  const double unit = ctx->profile.inch ? 25.4 : 1.0;
+  const RunStats& stats = ctx->stats;
+  out->unit = ctx->profile.inch ? "inch" : "mm";
+  out->feed_length = stats.feedLength / unit;
+  out->rapid_length = stats.rapidLength / unit;
+  out->cycle_time = stats.seconds;
+  out->axis_count = ctx->axisCount();
+  out->axis_names = ctx->profile.axes.c_str();
+  for (int axis = 0; axis < ctx->axisCount(); ++axis) {
+    out->box_min[axis] = stats.low[axis] / unit;
+    out->box_max[axis] = stats.high[axis] / unit;
+  }
 }

@@ -122,6 +122,15 @@ struct Frames {
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
 };
 
+/// What the summary tells about the toolpath (mbrt_stats), in mm.
+struct RunStats {
+  double feedLength = 0.0;
+  double rapidLength = 0.0;
+  double seconds = 0.0;
+  AxisValues low{};
+  AxisValues high{};
+};
+
 /// A G66/G66.1 (or modal custom G code) in force: what it calls.
 struct ModalCall {
   int id = 0;
@@ -193,6 +202,7 @@ struct mbrt_ctx {
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
   std::uint64_t moves = 0;
+  mbc::rt::RunStats stats;
   std::uint64_t optionalStops = 0;
   bool mainM99 = false;
   mbc::rt::PendingAlarm alarm;

@@ -73,12 +73,30 @@ void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
   }
   ctx.clockMs += minutes * 60'000.0;
   ctx.clockHours += minutes / 60.0;
+  const double mm = lengthCounts / ctx.countsPerMm();
+  (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += mm;
+  ctx.stats.seconds += minutes * 60.0;
+}
+
+/// Widens the toolpath's bounding box (mm) by a workpiece point (counts).
+void widenBox(mbrt_ctx& ctx, int axis, double counts, bool first) {
+  const double mm = counts / ctx.countsPerMm();
+  RunStats& stats = ctx.stats;
+  stats.low[axis] = first ? mm : std::min(stats.low[axis], mm);
+  stats.high[axis] = first ? mm : std::max(stats.high[axis], mm);
+}
+
+void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    widenBox(ctx, axis, static_cast<double>(work[axis]), first);
+  }
 }
 
 /// The control point moves to `machine`, workpiece position `work`; the
 /// motion goes to the sink with its arc centre in workpiece counts.
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, int cycle = 0) {
+  widenBox(ctx, work, ctx.moves == 0);
   ctx.machine = machine;
   ++ctx.moves;
   if (ctx.motionSink.fn == nullptr) {
@@ -174,6 +192,22 @@ double travel(const mbrt_ctx& ctx, const AxisCounts& machine,
                     distance(ctx.machine, machine, ctx.axisCount(), pathAxes));
 }
 
+/// The points of an arc farthest along its plane axes, where it passes
+/// 0, 90, 180 or 270 degrees.
+void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
+                   double radius, double sweep, bool clockwise) {
+  const double begin = std::atan2(start.y - center.y, start.x - center.x);
+  for (int quarter = 0; quarter < 4; ++quarter) {
+    const double angle = quarter * std::numbers::pi / 2.0;
+    double travel = clockwise ? begin - angle : angle - begin;
+    travel = std::fmod(travel + 4.0 * std::numbers::pi, 2.0 * std::numbers::pi);
+    if (travel <= sweep) {
+      widenBox(ctx, p, center.x + radius * std::cos(angle), false);
+      widenBox(ctx, q, center.y + radius * std::sin(angle), false);
+    }
+  }
+}
+
 Point planePoint(const AxisValues& point, int p, int q) {
   return {point[p], point[q]};
 }
@@ -232,8 +266,14 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                       (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
                false);
   ctx.program = target;
-  moveTo(ctx, clockwise != frame.reversed ? MBRT_MOTION_CW : MBRT_MOTION_CCW,
-         work, machine, workCenter);
+  const bool turnsClockwise = clockwise != frame.reversed;
+  const AxisCounts workStart = machineToWork(ctx, ctx.machine);
+  moveTo(ctx, turnsClockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
+         workCenter);
+  widenBoxByArc(
+      ctx, p, q, workCenter,
+      {static_cast<double>(workStart[p]), static_cast<double>(workStart[q])},
+      radius, sweepAngle(from, to, center, clockwise), turnsClockwise);
   return 0;
 }
 
@@ -442,6 +482,7 @@ mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
 void dwell(mbrt_ctx& ctx, double seconds) {
   ctx.clockMs += seconds * 1000.0;
   ctx.clockHours += seconds / 3600.0;
+  ctx.stats.seconds += seconds;
 }
 
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {

@@ -341,6 +341,15 @@ typedef struct mbrt_stats {
   uint64_t moves;
   uint64_t optional_stops; /* M00/M01 met (the run went on) */
   int main_m99;            /* the run ended by M99 in the main program */
+  /* The toolpath, in `unit`: "mm", or "inch" when the profile's unit is */
+  const char* unit;
+  double feed_length;  /* path length of feed moves */
+  double rapid_length; /* and of rapids */
+  double cycle_time; /* seconds: feeds at F, rapids at the rapid rate, dwells */
+  int axis_count;    /* the bounding box of the workpiece coordinates, */
+  const char* axis_names; /* arcs included (when moves > 0) */
+  double box_min[MBRT_MAX_AXES];
+  double box_max[MBRT_MAX_AXES];
 } mbrt_stats;
 
 void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out);
