@@ -16,6 +16,7 @@ struct RunOptions {
   std::string mainProgram; // --main O1234 / <NAME>
   std::string toolpathPath;
   std::string gcodePath; // the flattened program
+  std::string svgPath;   // the toolpath drawn
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;

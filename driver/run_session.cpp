@@ -2,12 +2,14 @@
 #include "driver/run_session.h"
 
 #include "driver/output_files.h"
+#include "driver/svg_writer.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mbc::driver {
@@ -94,15 +96,34 @@ bool openGcode(const RunOptions& o, mbrt_ctx* ctx, OutputFile& gcode) {
   return true;
 }
 
-bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, OutputFile& toolpath,
-                 OutputFile& dprnt) {
-  if (!o.toolpathPath.empty()) {
-    if (!toolpath.open(o.toolpathPath)) {
-      std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
-                   o.toolpathPath.c_str());
-      return false;
+/// Where the motions go: the toolpath file and the drawing, either or both.
+struct MotionOutputs {
+  OutputFile toolpath;
+  std::optional<SvgWriter> svg;
+
+  static void write(void* self, const mbrt_motion* motion) {
+    auto* outputs = static_cast<MotionOutputs*>(self);
+    if (outputs->toolpath.get() != nullptr) {
+      OutputFile::writeMotion(&outputs->toolpath, motion);
     }
-    mbrt_set_motion_sink(ctx, &OutputFile::writeMotion, &toolpath);
+    if (outputs->svg) {
+      SvgWriter::addMotion(&*outputs->svg, motion);
+    }
+  }
+};
+
+bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
+                 OutputFile& dprnt) {
+  if (!o.toolpathPath.empty() && !motions.toolpath.open(o.toolpathPath)) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                 o.toolpathPath.c_str());
+    return false;
+  }
+  if (!o.svgPath.empty()) {
+    motions.svg.emplace();
+  }
+  if (!o.toolpathPath.empty() || motions.svg) {
+    mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
   }
   if (o.dprntPath.empty()) {
     dprnt.useStdout();
@@ -139,8 +160,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
   if (!ctx) {
     return 2;
   }
-  OutputFile toolpath, dprnt, gcode;
-  if (!openOutputs(o, ctx.get(), toolpath, dprnt) ||
+  MotionOutputs motions;
+  OutputFile dprnt, gcode;
+  if (!openOutputs(o, ctx.get(), motions, dprnt) ||
       !openGcode(o, ctx.get(), gcode)) {
     return 2;
   }
@@ -165,6 +187,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
   }
   if (gcode.get() != nullptr) {
     OutputFile::writeText(&gcode, "%\n", 2);
+  }
+  if (motions.svg && !replaceFile(o.svgPath, motions.svg->document())) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n", o.svgPath.c_str());
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx.get(), o.varsOutPath)) {
     std::fprintf(stderr, "mbc: error: cannot write '%s'\n",

@@ -97,6 +97,7 @@ void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, int cycle = 0) {
   widenBox(ctx, work, ctx.moves == 0);
+  const AxisCounts start = machineToWork(ctx, ctx.machine);
   ctx.machine = machine;
   ++ctx.moves;
   if (ctx.motionSink.fn == nullptr) {
@@ -111,6 +112,7 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     motion.end[axis] = countsToUnits(work[axis], scale);
     motion.machine[axis] = countsToUnits(machine[axis], scale);
+    motion.start[axis] = countsToUnits(start[axis], scale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : ctx.modal.feed;
   motion.plane = ctx.modal.plane;

@@ -69,6 +69,7 @@ typedef struct mbrt_motion {
   const char* program; /* "O1000", "<NAME>" or "MAIN" */
   int cycle;           /* the canned cycle making the move (81 for G81), 0 */
   double machine[MBRT_MAX_AXES]; /* end point in machine coordinates */
+  double start[MBRT_MAX_AXES];   /* where the move began, like `end` */
 } mbrt_motion;
 
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);

@@ -1,0 +1,40 @@
+// `mbc run --svg`: the toolpath drawn in the XY plane of the workpiece
+// coordinates, rapids dashed, feeds solid, XY arcs as arcs, with a scale.
+#pragma once
+
+#include <mbc/runtime.h>
+
+#include <string>
+
+namespace mbc::driver {
+
+class SvgWriter {
+public:
+  /// The motion sink: records one move.
+  static void addMotion(void* self, const mbrt_motion* motion);
+
+  /// The whole drawing; it fits the moves with a margin.
+  std::string document() const;
+
+private:
+  void add(const mbrt_motion& m);
+  void include(double x, double y);
+  void moveTo(bool rapid, double x, double y);
+
+  /// Where a path's last segment ended.
+  struct Pen {
+    bool open = false;
+    double x = 0.0;
+    double y = 0.0;
+  };
+
+  std::string rapids_; // path data, SVG coordinates (y down)
+  std::string feeds_;
+  Pen rapidPen_;
+  Pen feedPen_;
+  bool haveBox_ = false;
+  double minX_ = 0, maxX_ = 0, minY_ = 0, maxY_ = 0;
+  const char* unit_ = "mm";
+};
+
+} // namespace mbc::driver
