@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace mbc::driver {
 
@@ -62,6 +63,9 @@ bool replaceFile(const std::string& path, const std::string& content) {
     return false;
   }
   bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  // On disk before the rename, so that a crash leaves the old file or the
+  // new one.
+  ok = std::fflush(f) == 0 && fsync(fileno(f)) == 0 && ok;
   ok = (std::fclose(f) == 0) && ok;
   ok = ok && std::rename(tmp.c_str(), path.c_str()) == 0;
   if (!ok) {

@@ -54,6 +54,8 @@ bool setValue(RunOptions& o, const std::string& name, const std::string& value,
     o.gcodePath = value;
   } else if (name == "--svg") {
     o.svgPath = value;
+  } else if (name == "--state") {
+    o.statePath = value;
   } else if (name == "--vars-out") {
     o.varsOutPath = value;
   } else if (name == "--machine") {
@@ -85,9 +87,9 @@ bool setValue(RunOptions& o, const std::string& name, const std::string& value,
 
 bool takesValue(const std::string& name) {
   return name == "--main" || name == "--toolpath" || name == "--dprnt" ||
-         name == "--gcode" || name == "--svg" || name == "--vars-out" ||
-         name == "--machine" || name == "--set" || name == "--arg" ||
-         name == "--max-blocks";
+         name == "--gcode" || name == "--svg" || name == "--state" ||
+         name == "--vars-out" || name == "--machine" || name == "--set" ||
+         name == "--arg" || name == "--max-blocks";
 }
 
 } // namespace
@@ -122,7 +124,7 @@ std::string runOptionsUsage(int indent) {
   std::string pad(static_cast<std::size_t>(indent), ' ');
   return pad +
          "[--main O1234] [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n" +
-         pad + "[--gcode PATH] [--svg PATH]\n" + pad +
+         pad + "[--gcode PATH] [--svg PATH] [--state PATH]\n" + pad +
          "[--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n" + pad +
          "[--max-blocks N] [--block-skip[=N]] [--trace]\n";
 }

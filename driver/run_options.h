@@ -17,6 +17,7 @@ struct RunOptions {
   std::string toolpathPath;
   std::string gcodePath; // the flattened program
   std::string svgPath;   // the toolpath drawn
+  std::string statePath; // nonvolatile variables and offsets, kept
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;

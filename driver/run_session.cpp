@@ -2,6 +2,7 @@
 #include "driver/run_session.h"
 
 #include "driver/output_files.h"
+#include "driver/state_file.h"
 #include "driver/svg_writer.h"
 
 #include <fmt/format.h>
@@ -175,6 +176,12 @@ int runSession(const RunOptions& o, const std::string& mainName,
   }
   mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
   mbrt_start(ctx.get(), mainName.c_str());
+  std::string stateError;
+  if (!o.statePath.empty() && !loadState(ctx.get(), o.statePath, stateError)) {
+    std::fprintf(stderr, "mbc: error: state file '%s': %s\n",
+                 o.statePath.c_str(), stateError.c_str());
+    return 2;
+  }
   mbrt_status st = presetAndPass(o, ctx.get());
   if (!st) {
     st = engine(ctx.get());
@@ -187,6 +194,10 @@ int runSession(const RunOptions& o, const std::string& mainName,
   }
   if (gcode.get() != nullptr) {
     OutputFile::writeText(&gcode, "%\n", 2);
+  }
+  if (!o.statePath.empty() && !saveState(ctx.get(), o.statePath)) {
+    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
+                 o.statePath.c_str());
   }
   if (motions.svg && !replaceFile(o.svgPath, motions.svg->document())) {
     std::fprintf(stderr, "mbc: error: cannot write '%s'\n", o.svgPath.c_str());

@@ -111,6 +111,10 @@ mbrt_num* mbrt_common_base(mbrt_ctx* ctx) {
   return ctx->commons.data();
 }
 
+int mbrt_tool_offset_count(const mbrt_ctx* ctx) {
+  return ctx->profile.toolOffsetCount;
+}
+
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {
   if (!isCommon(*ctx, number)) {
     return 0;
