@@ -31,11 +31,15 @@ build: deps $(BUILD_DIR)/CMakeCache.txt
 demo: build
 	@echo "== mbc run examples/bolt_circle.nc (toolpath, DPRNT, variables) =="
 	$(BUILD_DIR)/mbc run examples/bolt_circle.nc --toolpath $(BUILD_DIR)/demo.toolpath.jsonl \
-	  --vars-out $(BUILD_DIR)/demo.vars.json
+	  --vars-out $(BUILD_DIR)/demo.vars.json --gcode $(BUILD_DIR)/demo.flat.nc \
+	  --svg $(BUILD_DIR)/demo.svg
 	@echo "== toolpath ($(BUILD_DIR)/demo.toolpath.jsonl) =="
 	@cat $(BUILD_DIR)/demo.toolpath.jsonl
 	@echo "== variables ($(BUILD_DIR)/demo.vars.json) =="
 	@cat $(BUILD_DIR)/demo.vars.json; echo
+	@echo "== flattened G-code ($(BUILD_DIR)/demo.flat.nc) =="
+	@cat $(BUILD_DIR)/demo.flat.nc
+	@echo "== drawing: open $(BUILD_DIR)/demo.svg in a browser =="
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
