@@ -195,11 +195,15 @@ std::string SvgWriter::document() const {
       "width=\"800\" height=\"{}\">\n",
       number(left), number(top), number(viewWidth), number(viewHeight),
       number(800.0 * viewHeight / viewWidth));
-  const char* stroke =
-      "fill=\"none\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\"";
+  // Strokes and dashes in drawing units, one per pixel of the 800 wide
+  // picture, so that every renderer draws them alike.
+  const double pixel = viewWidth / 800.0;
+  const std::string stroke =
+      fmt::format("fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
+                  number(1.2 * pixel));
   svg += fmt::format("<path class=\"rapid\" {} stroke=\"#888\" "
                      "stroke-dasharray=\"{} {}\" d=\"{}\"/>\n",
-                     stroke, number(font * 0.4), number(font * 0.3), rapids_);
+                     stroke, number(6.0 * pixel), number(4.0 * pixel), rapids_);
   svg += fmt::format("<path class=\"feed\" {} stroke=\"#0057b8\" d=\"{}\"/>\n",
                      stroke, feeds_);
   svg += fmt::format("<path class=\"scale\" {} stroke=\"#000\" "
