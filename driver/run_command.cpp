@@ -38,10 +38,13 @@ int findMain(const Unit& unit, const std::string& wanted) {
 } // namespace
 
 int runCommand(const Options& o) {
+  PhaseTimes phases;
+  auto start = std::chrono::steady_clock::now();
   CompiledUnit cu;
   if (!loadUnit(o.files, false, cu)) {
     return 1;
   }
+  phases.emplace_back("front end", millisecondsSince(start));
   if (cu.unit.programs.empty() && o.run.mainProgram.empty()) {
     std::fprintf(stderr, "mbc: warning: the input has no blocks to run\n");
     return 0;
@@ -53,11 +56,15 @@ int runCommand(const Options& o) {
     return 2;
   }
   ir::Module module;
-  if (o.engine != "interp" &&
-      (!buildModule(cu, o, module) || !optimizeModule(module, o))) {
-    return 4;
+  start = std::chrono::steady_clock::now();
+  if (o.engine != "interp") {
+    if (!buildModule(cu, o, module) || !optimizeModule(module, o)) {
+      return 4;
+    }
+    phases.emplace_back("IR", millisecondsSince(start));
   }
   std::unique_ptr<codegen::Jit> jit;
+  start = std::chrono::steady_clock::now();
   if (o.engine == "jit") {
     std::string error;
     codegen::JitOptions jo;
@@ -68,19 +75,21 @@ int runCommand(const Options& o) {
       std::fprintf(stderr, "mbc: internal error: %s\n", error.c_str());
       return 4;
     }
+    phases.emplace_back("code generation", millisecondsSince(start));
   }
-  return runSession(o.run, cu.unit.programs[mainIndex].name,
-                    [&](mbrt_ctx* ctx) -> mbrt_status {
-                      if (jit) {
-                        return mbrt_run_body(
-                            ctx, &jit->programs()->programs[mainIndex]);
-                      }
-                      if (o.engine == "ir") {
-                        return ir::evaluate(module, mainIndex, ctx);
-                      }
-                      Interpreter interp(cu.unit, cu.sources, ctx);
-                      return interp.run(mainIndex);
-                    });
+  return runSession(
+      o.run, cu.unit.programs[mainIndex].name,
+      [&](mbrt_ctx* ctx) -> mbrt_status {
+        if (jit) {
+          return mbrt_run_body(ctx, &jit->programs()->programs[mainIndex]);
+        }
+        if (o.engine == "ir") {
+          return ir::evaluate(module, mainIndex, ctx);
+        }
+        Interpreter interp(cu.unit, cu.sources, ctx);
+        return interp.run(mainIndex);
+      },
+      phases);
 }
 
 } // namespace mbc::driver

@@ -100,6 +100,10 @@ OptionStatus readRunOption(ArgReader& args, RunOptions& o, std::string& error) {
     o.trace = true;
     return OptionStatus::Taken;
   }
+  if (name == "--time") {
+    o.time = true;
+    return OptionStatus::Taken;
+  }
   if (name == "--block-skip") {
     double n = 1;
     if (args.hasInlineValue() &&
@@ -126,7 +130,7 @@ std::string runOptionsUsage(int indent) {
          "[--main O1234] [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n" +
          pad + "[--gcode PATH] [--svg PATH] [--state PATH]\n" + pad +
          "[--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n" + pad +
-         "[--max-blocks N] [--block-skip[=N]] [--trace]\n";
+         "[--max-blocks N] [--block-skip[=N]] [--trace] [--time]\n";
 }
 
 } // namespace mbc::driver

@@ -18,6 +18,7 @@ struct RunOptions {
   std::string gcodePath; // the flattened program
   std::string svgPath;   // the toolpath drawn
   std::string statePath; // nonvolatile variables and offsets, kept
+  bool time = false;     // --time: the phases' wall-clock times
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;

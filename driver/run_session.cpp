@@ -155,8 +155,14 @@ mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
 
 } // namespace
 
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(
+             std::chrono::steady_clock::now() - start)
+      .count();
+}
+
 int runSession(const RunOptions& o, const std::string& mainName,
-               const Engine& engine) {
+               const Engine& engine, const PhaseTimes& phases) {
   CtxPtr ctx = createContext(o);
   if (!ctx) {
     return 2;
@@ -183,9 +189,11 @@ int runSession(const RunOptions& o, const std::string& mainName,
     return 2;
   }
   mbrt_status st = presetAndPass(o, ctx.get());
+  const auto runStart = std::chrono::steady_clock::now();
   if (!st) {
     st = engine(ctx.get());
   }
+  const double runMs = millisecondsSince(runStart);
   if (st) {
     char report[4096];
     mbrt_alarm_report(ctx.get(), report, sizeof report);
@@ -207,6 +215,13 @@ int runSession(const RunOptions& o, const std::string& mainName,
                  o.varsOutPath.c_str());
   }
   printSummary(ctx.get(), mainName, st != 0);
+  if (o.time) {
+    std::string text = "mbc: time:";
+    for (const auto& [phase, ms] : phases) {
+      text += fmt::format(" {} {:.3f} ms,", phase, ms);
+    }
+    std::fprintf(stderr, "%s run %.3f ms\n", text.c_str(), runMs);
+  }
   return st ? 3 : 0;
 }
 
