@@ -6,7 +6,7 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build demo test check-format format clean
+.PHONY: all deps build demo test bench check-format format clean
 
 all: build
 
@@ -43,6 +43,10 @@ demo: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+# Not part of `make test`: timings need a quiet machine (bench/README.md).
+bench: build
+	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --out bench/RESULTS.md
 
 check-format:
 	clang-format --dry-run -Werror $$(git ls-files '*.cpp' '*.h')

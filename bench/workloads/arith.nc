@@ -1,0 +1,20 @@
+%
+O1001 (ARITHMETIC: TRIG, SQRT AND INDIRECTION INTO #100-#199)
+(A LOOKUP TABLE IS FILLED, THEN READ BACK AND MIXED 400 000 TIMES)
+#1 = 0
+WHILE [#1 LT 100] DO1
+  #[100 + #1] = SIN[#1 * 3.6] * 10
+  #1 = #1 + 1
+END1
+#2 = 0
+#3 = 0
+WHILE [#2 LT 400000] DO1
+  #4 = #[100 + [#2 MOD 100]]
+  #5 = SQRT[ABS[#4] + #2] + COS[#2 * 0.5] * ATAN[#4]/[1]
+  #[100 + [[#2 * 7] MOD 100]] = #4 * 0.5 + #5 * 0.001
+  #3 = #3 + #5
+  #2 = #2 + 1
+END1
+#500 = #3
+M30
+%

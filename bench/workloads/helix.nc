@@ -1,0 +1,27 @@
+%
+O1002 (HELICAL THREAD MILLING OF A 60 X 60 GRID OF M10 HOLES)
+(EACH HOLE: 12 TURNS OF PITCH 1.5 IN QUARTER ARCS, THEN OUT)
+#20 = 60 (HOLES PER ROW)
+#21 = 25. (HOLE PITCH)
+#22 = 3.75 (HELIX RADIUS)
+#23 = 1.5 (THREAD PITCH)
+#24 = 12 (TURNS)
+G90 G17 G21 G54 G00 Z5.
+#1 = 0
+WHILE [#1 LT #20 * #20] DO1
+  #2 = [#1 MOD #20] * #21
+  #3 = FIX[#1 / #20] * #21
+  G00 X[#2 + #22] Y#3
+  G01 Z-18. F800
+  #4 = 0
+  WHILE [#4 LT #24 * 4] DO2
+    #5 = #4 + 1
+    G03 X[#2 + #22 * COS[#5 * 90]] Y[#3 + #22 * SIN[#5 * 90]] Z[-18. + #23 * #5 / 4] I[-#22 * COS[#4 * 90]] J[-#22 * SIN[#4 * 90]]
+    #4 = #5
+  END2
+  G01 X#2 Y#3
+  G00 Z5.
+  #1 = #1 + 1
+END1
+M30
+%

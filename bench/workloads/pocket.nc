@@ -1,0 +1,29 @@
+%
+O1003 (ZIG-ZAG POCKET 120 X 80, STEPOVER 0.1, 80 LAYERS OF 0.125)
+#20 = 120. (LENGTH)
+#21 = 80. (WIDTH)
+#22 = 0.1 (STEPOVER)
+#23 = 0.125 (DEPTH PER LAYER)
+#24 = 80 (LAYERS)
+G90 G17 G21 G54 G00 X0 Y0 Z5.
+#1 = 1
+WHILE [#1 LE #24] DO1
+  G00 X0 Y0
+  G01 Z[-#1 * #23] F300
+  #2 = 0
+  #3 = 0
+  WHILE [#2 LE #21] DO2
+    G01 Y#2 F1200
+    IF [#3 EQ 0] GOTO 10
+    G01 X0
+    #3 = 0
+    GOTO 20
+    N10 G01 X#20
+    #3 = 1
+    N20 #2 = #2 + #22
+  END2
+  G00 Z5.
+  #1 = #1 + 1
+END1
+M30
+%

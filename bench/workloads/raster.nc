@@ -1,0 +1,22 @@
+%
+O1004 (3D SURFACE RASTER: Z = 4 SIN X COS Y, 1000 X 1000 POINTS)
+#20 = 1000 (POINTS PER ROW)
+#21 = 1000 (ROWS)
+#22 = 0.1 (STEP)
+G90 G17 G21 G54 G00 X0 Y0 Z10.
+G01 F2000
+#1 = 0
+WHILE [#1 LT #21] DO1
+  #3 = #1 * #22
+  #4 = COS[#3 * 12] * 4
+  #2 = 0
+  WHILE [#2 LT #20] DO2
+    #5 = #2 * #22
+    X#5 Y#3 Z[SIN[#5 * 12] * #4]
+    #2 = #2 + 1
+  END2
+  #1 = #1 + 1
+END1
+G00 Z10.
+M30
+%
