@@ -83,6 +83,9 @@ def engines(mbc, workload, runs, work):
     results["build"] = time.perf_counter() - start
     results["aot"] = measure([str(exe), "--time", "--dprnt", "/dev/null"],
                              runs)
+    hand = Path(mbc).parent / "bench" / f"hand_{workload.stem}"
+    if hand.exists():
+        results["hand"] = measure([str(hand)], runs)
     return results
 
 
@@ -107,26 +110,32 @@ def main():
             print(f"bench: {workload.name}", file=sys.stderr)
             r = engines(mbc, workload, args.runs, work)
             run = {name: r[name]["phases"]["run"]
-                   for name in ("interp", "ir", "jit", "aot")}
+                   for name in ("interp", "ir", "jit", "aot", "hand")
+                   if name in r}
             jit_compile = sum(v for k, v in r["jit"]["phases"].items()
                               if k != "run")
             moves = r["jit"]["moves"]
             rate = moves / (run["jit"] / 1000.0) / 1e6 if run["jit"] else 0
+            hand = run.get("hand")
             rows.append(
                 f"| {workload.stem} | {moves} | {ms(run['interp'])} | "
                 f"{ms(run['ir'])} | {ms(run['jit'])} | "
                 f"{ms(run['jit'] + jit_compile)} | {ms(run['aot'])} | "
+                f"{ms(hand) if hand else '-'} | "
                 f"{ratio(run['interp'], run['jit'])} | "
-                f"{ratio(run['interp'], run['aot'])} | {rate:.2f} | "
+                f"{ratio(run['jit'], hand) if hand else '-'} | {rate:.2f} | "
                 f"{r['jit']['peak']:.0f} |")
     report = "\n".join([
         "# mbc benchmarks", "",
         f"Machine: {machine_text()}.",
         f"Median of {args.runs} runs; times in ms of the run phase (`mbc run"
-        " --time`), no toolpath output (null sink).", "",
+        " --time`), no toolpath output (null sink). hand C++: the workload"
+        " written in C++ on the same runtime path (bench/hand/); jit / hand"
+        " is how much slower compiled Macro B is than that bound.", "",
         "| workload | moves | interp | ir | jit | jit incl. compile | aot |"
-        " jit vs interp | aot vs interp | Mmoves/s (jit) | peak MiB (jit) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
+        " hand C++ | interp / jit | jit / hand | Mmoves/s (jit) |"
+        " peak MiB (jit) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
         *rows, ""])
     print(report)
     if args.out:
