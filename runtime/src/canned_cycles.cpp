@@ -73,8 +73,7 @@ public:
 
 private:
   int planeAxis(int index) const {
-    static constexpr char kPlanes[3][2] = {{'X', 'Y'}, {'Z', 'X'}, {'Y', 'Z'}};
-    return ctx_.axisOf(kPlanes[ctx_.modal.plane - 17][index]);
+    return ctx_.axisOf(planeAxes(ctx_.modal.plane).letters[index]);
   }
 
   mbrt_ctx& ctx_;

@@ -137,8 +137,8 @@ mbrt_status setRotation(mbrt_ctx& ctx, const FrameWords& words) {
     return raise(ctx, AlarmId::Unsupported,
                  "G68 with I, J, K (3-dimensional coordinate conversion)");
   }
-  static constexpr char kPlanes[3][2] = {{'X', 'Y'}, {'Z', 'X'}, {'Y', 'Z'}};
-  const char* letters = kPlanes[ctx.modal.plane - 17];
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const char* letters = plane.letters;
   const int p = ctx.axisOf(letters[0]);
   const int q = ctx.axisOf(letters[1]);
   if (p < 0 || q < 0) {

@@ -15,21 +15,6 @@
 
 namespace mbc::rt {
 
-namespace {
-
-constexpr double kMmPerInch = 25.4;
-
-struct Point {
-  double x;
-  double y;
-};
-
-/// The two axes of an arc plane and the I/J/K index of each.
-struct PlaneAxes {
-  char letters[2];
-  int centerIndex[2];
-};
-
 PlaneAxes planeAxes(int plane) {
   switch (plane) {
     case 18:
@@ -40,6 +25,15 @@ PlaneAxes planeAxes(int plane) {
       return {{'X', 'Y'}, {0, 1}};
   }
 }
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+struct Point {
+  double x;
+  double y;
+};
 
 AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
                       const AxisCounts& start) {

@@ -16,6 +16,15 @@ struct MotionWords {
   Counts r = 0;
 };
 
+/// The two axes of a plane (G17 X Y, G18 Z X, G19 Y Z) and the I/J/K index
+/// of each.
+struct PlaneAxes {
+  char letters[2];
+  int centerIndex[2];
+};
+
+PlaneAxes planeAxes(int plane);
+
 /// G20/G21: re-expresses the position, the offsets and the frames in the
 /// new unit.
 void switchUnits(mbrt_ctx& ctx, bool inch);
