@@ -4,6 +4,8 @@
 // box takes every arc's extreme points.
 #include "driver/svg_writer.h"
 
+#include <mbc/toolpath_json.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -89,12 +91,7 @@ std::vector<double> extremes(const Arc& arc) {
 }
 
 std::string number(double value) {
-  std::string text = fmt::format("{:.4f}", value);
-  text.erase(text.find_last_not_of('0') + 1);
-  if (text.back() == '.') {
-    text.pop_back();
-  }
-  return text == "-0" ? "0" : text;
+  return trimmedFixed(value, 4);
 }
 
 /// 1, 2 or 5 times a power of ten, at most `limit`.

@@ -7,6 +7,8 @@
 // the second way.
 #include "flat_gcode.h"
 
+#include <mbc/toolpath_json.h>
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -35,10 +37,10 @@ bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
          letter == 'Q';
 }
 
+/// "12.5", "12.": a coordinate that reads as one under any 3401#0 DPI.
 std::string unitsText(double value, int decimals) {
-  std::string text = fmt::format("{:.{}f}", value, decimals);
-  text.erase(text.find_last_not_of('0') + 1);
-  return text == "-0." ? "0." : text;
+  std::string text = trimmedFixed(value, decimals);
+  return text.find('.') == std::string::npos ? text + '.' : text;
 }
 
 std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {

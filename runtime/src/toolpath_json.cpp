@@ -21,17 +21,8 @@ const char* motionName(int kind) {
   }
 }
 
-/// Fixed with `decimals` digits, then trailing zeros and '.' dropped;
-/// "-0" becomes "0".
 void appendCoordinate(std::string& out, double value, int decimals) {
-  std::string text = fmt::format("{:.{}f}", value, decimals);
-  if (text.find('.') != std::string::npos) {
-    text.erase(text.find_last_not_of('0') + 1);
-    if (text.back() == '.') {
-      text.pop_back();
-    }
-  }
-  out += text == "-0" ? "0" : text;
+  out += trimmedFixed(value, decimals);
 }
 
 void appendString(std::string& out, const char* text) {
@@ -62,6 +53,17 @@ void appendKey(std::string& out, char prefix, char axis) {
 }
 
 } // namespace
+
+std::string trimmedFixed(double value, int decimals) {
+  std::string text = fmt::format("{:.{}f}", value, decimals);
+  if (text.find('.') != std::string::npos) {
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') {
+      text.pop_back();
+    }
+  }
+  return text == "-0" ? "0" : text;
+}
 
 std::string toolpathJsonLine(const mbrt_motion& m) {
   std::string out = "{\"motion\":\"";
