@@ -87,6 +87,8 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.machine = AxisCounts{};
   ctx.frames = Frames{};
   ctx.skipPosition = AxisCounts{};
+  ctx.intermediate = AxisCounts{};
+  ctx.intermediateMask = 0;
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};

@@ -91,8 +91,6 @@ struct ModalState {
   int cuttingMode = 64;               // G61 G62 G63 G64 (no effect here)
   int feedMode = 94;                  // G93 G94 G95
   int workOffset = kFirstG54Offset;   // index into workOffsets
-  AxisCounts intermediate{};          // of the last G28/G30, for G29
-  std::uint32_t intermediateMask = 0; // the axes it has
   double feed = 0.0;                  // modal F
   std::array<double, 30> lastWords{}; // #4101..#4130 by index
 };
@@ -197,6 +195,10 @@ struct mbrt_ctx {
   mbc::rt::AxisCounts program{}; // the same point as the program sees it
   bool feedInBlock = false;      // the block has F (G93 needs it)
   mbc::rt::AxisCounts skipPosition{}; // #5061: where the last G31 ended
+  // The last G28/G30 intermediate point, for G29, and the axes it has (not
+  // in ModalState: that is copied for every block).
+  mbc::rt::AxisCounts intermediate{};
+  std::uint32_t intermediateMask = 0;
 
   // The run: the block being executed and the count of blocks.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};

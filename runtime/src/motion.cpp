@@ -387,10 +387,10 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
   const AxisCounts intermediate = workTarget(ctx, words, ctx.program);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axisMask >> axis & 1) != 0) {
-      ctx.modal.intermediate[axis] = intermediate[axis];
+      ctx.intermediate[axis] = intermediate[axis];
     }
   }
-  ctx.modal.intermediateMask |= words.axisMask;
+  ctx.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
   if (workToMachine(ctx, work) != ctx.machine) {
     if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
@@ -409,11 +409,11 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
 }
 
 mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words) {
-  const std::uint32_t mask = words.axisMask & ctx.modal.intermediateMask;
+  const std::uint32_t mask = words.axisMask & ctx.intermediateMask;
   AxisCounts through = ctx.program;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((mask >> axis & 1) != 0) {
-      through[axis] = ctx.modal.intermediate[axis];
+      through[axis] = ctx.intermediate[axis];
     }
   }
   if (through != ctx.program) {
