@@ -297,6 +297,7 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   std::for_each(ctx.workOffsets.begin(), ctx.workOffsets.end(), convertAll);
   Frames& frames = ctx.frames;
   convertAll(ctx.skipPosition);
+  convertAll(ctx.intermediate);
   convertAll(frames.local);
   convertAll(frames.preset);
   convert(frames.length);

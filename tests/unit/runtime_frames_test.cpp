@@ -115,6 +115,17 @@ TEST(RuntimeFrames, UnitSwitchKeepsTheLocalOriginAndTheOffset) {
   EXPECT_EQ(m.read(5083), 1.0);
 }
 
+TEST(RuntimeFrames, UnitSwitchKeepsTheG29IntermediatePoint) {
+  Machine m;
+  ASSERT_EQ(m.block("G21 G91 G28 X25.4"), 0);
+  ASSERT_EQ(m.block("G20 G90 G29 X2."), 0);
+  ASSERT_GE(m.motions().size(), 2u);
+  // Through X 1 inch (the 25.4 mm of G28), then to X 2 inch.
+  const auto& through = m.motions()[m.motions().size() - 2];
+  EXPECT_EQ(through.machine[0], 1.0);
+  EXPECT_EQ(endOf(m, 0), 2.0);
+}
+
 TEST(RuntimeFrames, ToolLengthTypeBFollowsThePlane) {
   Machine m(R"({"parameters": {"5001": 2},
                 "tool_offsets": {"1": {"h_geometry": 10}}})");
