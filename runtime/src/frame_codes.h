@@ -22,7 +22,6 @@ struct FrameWords {
   bool cancelScaling = false;  // G50
   bool cancelRotation = false; // G69
   int lengthCode = 0;          // 43, 44, 49
-  bool hasH = false;
   const MotionWords* axes = nullptr;
   std::array<const mbrt_word*, 26> words{}; // the last word of each letter
 };

@@ -125,11 +125,21 @@ AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
   return work;
 }
 
-AxisCounts localPosition(const mbrt_ctx& ctx) {
+namespace {
+
+/// The control point in local coordinates without the tool length offset.
+AxisCounts localTip(const mbrt_ctx& ctx) {
   AxisCounts local = machineToWork(ctx, ctx.machine);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     local[axis] -= ctx.frames.local[axis];
   }
+  return local;
+}
+
+} // namespace
+
+AxisCounts localPosition(const mbrt_ctx& ctx) {
+  AxisCounts local = localTip(ctx);
   if (ctx.frames.lengthAxis >= 0) {
     local[ctx.frames.lengthAxis] += ctx.frames.length;
   }
@@ -137,10 +147,7 @@ AxisCounts localPosition(const mbrt_ctx& ctx) {
 }
 
 void resyncProgram(mbrt_ctx& ctx) {
-  AxisCounts local = machineToWork(ctx, ctx.machine);
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    local[axis] -= ctx.frames.local[axis];
-  }
+  const AxisCounts local = localTip(ctx);
   ctx.program = ctx.frames.transforms()
                     ? toCounts(untransformPoint(ctx.frames, toValues(local)))
                     : local;

@@ -49,6 +49,13 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
 
 constexpr int kLastSIndex = 18; // #4119
 
+/// The simulated clocks #3001/#3002 and the cycle time of the summary.
+void passTime(mbrt_ctx& ctx, double seconds) {
+  ctx.clockMs += seconds * 1000.0;
+  ctx.clockHours += seconds / 3600.0;
+  ctx.stats.seconds += seconds;
+}
+
 /// Feed moves take length / F minutes (G94), 1 / F (G93) or length / (F S)
 /// (G95); rapids length / rapid rate, the rate being in mm/min whatever the
 /// input unit.
@@ -65,11 +72,9 @@ void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
   } else {
     minutes = length / ctx.modal.feed;
   }
-  ctx.clockMs += minutes * 60'000.0;
-  ctx.clockHours += minutes / 60.0;
+  passTime(ctx, minutes * 60.0);
   const double mm = lengthCounts / ctx.countsPerMm();
   (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += mm;
-  ctx.stats.seconds += minutes * 60.0;
 }
 
 /// Widens the toolpath's bounding box (mm) by a workpiece point (counts).
@@ -91,12 +96,13 @@ void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, int cycle = 0) {
   widenBox(ctx, work, ctx.moves == 0);
-  const AxisCounts start = machineToWork(ctx, ctx.machine);
+  const AxisCounts previous = ctx.machine;
   ctx.machine = machine;
   ++ctx.moves;
   if (ctx.motionSink.fn == nullptr) {
     return;
   }
+  const AxisCounts start = machineToWork(ctx, previous);
   const double scale = ctx.scale();
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
   mbrt_motion motion{};
@@ -477,9 +483,7 @@ mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
 }
 
 void dwell(mbrt_ctx& ctx, double seconds) {
-  ctx.clockMs += seconds * 1000.0;
-  ctx.clockHours += seconds / 3600.0;
-  ctx.stats.seconds += seconds;
+  passTime(ctx, seconds);
 }
 
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {

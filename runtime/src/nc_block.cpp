@@ -428,7 +428,6 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       block.frames.words[letter - 'A'] = &words[i];
     }
   }
-  block.frames.hasH = block.frames.words['H' - 'A'] != nullptr;
   bool taken = false;
   if (const mbrt_status status =
           callInsteadOfBlock(ctx, words, count, flow, &taken);
