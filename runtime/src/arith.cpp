@@ -39,7 +39,13 @@ AlarmId evalMod(double a, double b, Num* out) {
   if (divisor == 0.0) {
     return AlarmId::ZeroDivide;
   }
-  // fmod is exact and keeps the dividend's sign, as FANUC's MOD does.
+  // fmod is exact and keeps the dividend's sign, as FANUC's MOD does; so
+  // does the integer remainder, many times faster, where it is exact.
+  if (std::fabs(dividend) < 0x1p53 && std::fabs(divisor) < 0x1p53) {
+    return finish(static_cast<double>(static_cast<std::int64_t>(dividend) %
+                                      static_cast<std::int64_t>(divisor)),
+                  out);
+  }
   return finish(std::fmod(dividend, divisor), out);
 }
 
@@ -76,7 +82,9 @@ AlarmId evalBitwise(BinOp op, double a, double b, Num* out) {
 /// The angle reduced exactly to [0, 360) so that multiples of 30 degrees can
 /// be recognised whatever the number of turns.
 double reduceDegrees(double degrees) {
-  double reduced = std::fmod(degrees, 360.0);
+  // fmod leaves an angle under one turn as it is; it is slow enough to skip.
+  double reduced =
+      std::fabs(degrees) < 360.0 ? degrees : std::fmod(degrees, 360.0);
   if (reduced < 0.0) {
     reduced += 360.0;
   }
@@ -108,10 +116,13 @@ std::optional<double> exactSinOfSteps(int steps) {
 
 /// `phaseSteps` is 0 for sine and 3 (90 degrees) for cosine.
 std::optional<double> exactTrig(double reduced, int phaseSteps) {
-  if (std::fmod(reduced, 30.0) != 0.0) {
+  // steps * 30 is exact, so the comparison tells an exact multiple of 30
+  // (the quotient alone can round to a whole number).
+  const double steps = roundHalfAway(reduced / 30.0);
+  if (steps * 30.0 != reduced) {
     return std::nullopt;
   }
-  return exactSinOfSteps(static_cast<int>(reduced / 30.0) + phaseSteps);
+  return exactSinOfSteps(static_cast<int>(steps) + phaseSteps);
 }
 
 double sinDegrees(double degrees) {
@@ -366,10 +377,6 @@ AlarmId evalBuiltin(Builtin f, const Num* args, const MathParams& params,
       return evalBcd(x, out);
   }
   return AlarmId::ImproperCommand;
-}
-
-double roundHalfAway(double x) {
-  return std::round(x);
 }
 
 namespace {

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -104,6 +106,18 @@ TEST(ArithBinary, ModRoundsOperandsFirst) {
   EXPECT_EQ(binaryAlarm(BinOp::Mod, 5.0, 0.0), AlarmId::ZeroDivide);
   EXPECT_EQ(binaryAlarm(BinOp::Mod, 5.0, 0.4), AlarmId::ZeroDivide);
   EXPECT_EQ(binaryAlarm(BinOp::Mod, 5.0, vacant()), AlarmId::ZeroDivide);
+}
+
+// Below 2^53 MOD divides as integers; beyond, fmod: both give its bits.
+TEST(ArithBinary, ModOfLargeNumbersIsExact) {
+  const double big = 0x1p53 - 1.0;
+  EXPECT_EQ(binary(BinOp::Mod, big, 10.0), std::fmod(big, 10.0));
+  EXPECT_EQ(binary(BinOp::Mod, -big, 7.0), std::fmod(-big, 7.0));
+  EXPECT_EQ(binary(BinOp::Mod, 1e300, 7.0), std::fmod(1e300, 7.0));
+  EXPECT_EQ(binary(BinOp::Mod, 12.0, 1e20), 12.0);
+  EXPECT_EQ(binary(BinOp::Mod, 0x1p60, 0x1p53 - 1.0),
+            std::fmod(0x1p60, 0x1p53 - 1.0));
+  EXPECT_FALSE(isNegativeZero(binary(BinOp::Mod, -0x1p60, 2.0)));
 }
 
 TEST(ArithBinary, Bitwise) {
@@ -211,6 +225,18 @@ TEST(ArithSinCos, ReducesAnyNumberOfTurns) {
   EXPECT_FALSE(isNegativeZero(call(Builtin::Sin, {-180.0})));
   EXPECT_FALSE(isNegativeZero(call(Builtin::Sin, {-360.0})));
   EXPECT_FALSE(isNegativeZero(call(Builtin::Cos, {-90.0})));
+}
+
+// An angle one ulp off a multiple of 30 is not exact, though its quotient
+// by 30 rounds to a whole number.
+TEST(ArithSinCos, OnlyExactMultiplesAreExact) {
+  const double off150 = std::nextafter(150.0, 151.0);
+  EXPECT_EQ(call(Builtin::Sin, {off150}),
+            std::sin(off150 / (180.0 / std::numbers::pi)));
+  EXPECT_NE(call(Builtin::Sin, {off150}), 0.5);
+  EXPECT_NE(call(Builtin::Cos, {std::nextafter(60.0, 61.0)}), 0.5);
+  EXPECT_EQ(call(Builtin::Sin, {-359.0}), call(Builtin::Sin, {1.0}));
+  EXPECT_EQ(call(Builtin::Cos, {1e6 * 360.0 + 60.0}), 0.5);
 }
 
 TEST(ArithSinCos, OtherAngles) {
@@ -342,6 +368,49 @@ TEST(ArithRound, HalfAwayFromZero) {
   EXPECT_EQ(roundHalfAway(-0.5), -1.0);
   EXPECT_EQ(roundHalfAway(-2.5), -3.0);
   EXPECT_EQ(roundHalfAway(3.49), 3.0);
+}
+
+// The inline rounding must give std::round's bits for every double: next to
+// the halves, at the limits of exact int64 conversion, for the specials and
+// signed zeros, and for random numbers of every magnitude.
+TEST(ArithRound, SameBitsAsStdRound) {
+  std::vector<double> samples = {0.0,
+                                 -0.0,
+                                 0.49999999999999994,
+                                 0.5,
+                                 -0.5,
+                                 1e-300,
+                                 -1e-300,
+                                 0x1p52,
+                                 -0x1p52,
+                                 0x1p53,
+                                 0x1p63,
+                                 -0x1p63,
+                                 1e300,
+                                 std::numeric_limits<double>::infinity(),
+                                 -std::numeric_limits<double>::infinity()};
+  for (double whole = -4.0; whole <= 4.0; whole += 1.0) {
+    for (double base : {whole + 0.5, 0x1p52 - whole, 0x1p51 + whole + 0.5}) {
+      samples.push_back(base);
+      samples.push_back(std::nextafter(base, 0.0));
+      samples.push_back(std::nextafter(base, 1e308));
+    }
+  }
+  std::uint64_t state = 88172645463325252ULL; // xorshift: reproducible
+  for (int i = 0; i < 200000; ++i) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    const double unit = static_cast<double>(state >> 11) * 0x1p-53;
+    samples.push_back((unit - 0.5) * std::ldexp(1.0, i % 70));
+  }
+  for (double x : samples) {
+    const double expected = std::round(x);
+    const double got = roundHalfAway(x);
+    EXPECT_EQ(std::signbit(got), std::signbit(expected)) << x;
+    EXPECT_EQ(got, expected) << std::hexfloat << x;
+  }
+  EXPECT_TRUE(std::isnan(roundHalfAway(std::nan(""))));
 }
 
 TEST(ArithFixFup, Positive) {

@@ -7,6 +7,9 @@
 #include <mbc/alarm.h>
 #include <mbc/value.h>
 
+#include <cmath>
+#include <cstdint>
+
 namespace mbc {
 
 enum class BinOp : std::uint8_t { Add, Sub, Mul, Div, Mod, And, Or, Xor };
@@ -44,7 +47,17 @@ AlarmId evalBuiltin(Builtin f, const Num* args, const MathParams& params,
 
 /// Rounds half away from zero to an integer: variable numbers, AND/OR/XOR
 /// operands, integer addresses and ROUND in macro statements (spec §2.2).
-double roundHalfAway(double x);
+/// The same result as std::round, inline: that is a libm call, and NC
+/// blocks round every address. Every double from 2^52 up is whole; below,
+/// adding the largest double under 0.5 and truncating through int64 is exact.
+inline double roundHalfAway(double x) {
+  if (!(std::fabs(x) < 0x1p52)) {
+    return x; // also infinity and NaN
+  }
+  const double biased = x + std::copysign(0.49999999999999994, x);
+  return std::copysign(static_cast<double>(static_cast<std::int64_t>(biased)),
+                       x);
+}
 
 /// Name and arity of a builtin, from builtins.def.
 const char* builtinName(Builtin f);
