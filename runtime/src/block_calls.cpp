@@ -234,6 +234,9 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
                                size_t count, mbrt_flow* flow, bool* taken) {
   *taken = false;
   for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter != 'G') {
+      continue;
+    }
     const int tenths = gTenths(words[i]);
     if (tenths == 660 || tenths == 661) {
       *taken = true;
@@ -259,6 +262,9 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
 
 mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                            mbrt_flow* flow) {
+  if (!ctx.profile.codeCalls && ctx.modalCalls.empty()) {
+    return 0; // nothing can call: most runs, every block
+  }
   std::vector<Wanted> wanted;
   if (ctx.profile.codeCalls && !insideCodeCall(ctx)) {
     wantCodeSubprograms(ctx, codes, wanted);

@@ -93,6 +93,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};
   ctx.modal.inch = inch;
+  ctx.lastWords = {};
   resyncProgram(ctx);
   ctx.block.file = nullptr;
   ctx.block.line = 0;

@@ -79,7 +79,7 @@ struct CycleData {
   double p = 0; // dwell at the bottom, ms
 };
 
-/// Modal G codes (#4001..) and the last value of each address (#4101..).
+/// Modal G codes (#4001..) and F.
 struct ModalState {
   int motion = 0; // 0 1 2 3
   int plane = 17;
@@ -88,11 +88,10 @@ struct ModalState {
   bool returnToR = false; // G99
   int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80
   CycleData cycleData;
-  int cuttingMode = 64;               // G61 G62 G63 G64 (no effect here)
-  int feedMode = 94;                  // G93 G94 G95
-  int workOffset = kFirstG54Offset;   // index into workOffsets
-  double feed = 0.0;                  // modal F
-  std::array<double, 30> lastWords{}; // #4101..#4130 by index
+  int cuttingMode = 64;             // G61 G62 G63 G64 (no effect here)
+  int feedMode = 94;                // G93 G94 G95
+  int workOffset = kFirstG54Offset; // index into workOffsets
+  double feed = 0.0;                // modal F
 };
 
 /// The coordinate frames between a program and the machine (frames.h):
@@ -190,6 +189,9 @@ struct mbrt_ctx {
 
   // Machine state.
   mbc::rt::ModalState modal;
+  // #4101..#4130 by index: the last value of each address (not in
+  // ModalState, which a block with G codes copies).
+  std::array<double, 30> lastWords{};
   mbc::rt::Frames frames;
   mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
   mbc::rt::AxisCounts program{}; // the same point as the program sees it

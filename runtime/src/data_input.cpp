@@ -13,7 +13,7 @@ namespace mbc::rt {
 namespace {
 
 double wordValue(const FrameWords& words, char letter) {
-  const mbrt_word* word = words.words[letter - 'A'];
+  const mbrt_word* word = words.word(letter);
   return word != nullptr ? numeric(word->value) : 0.0;
 }
 
@@ -21,8 +21,7 @@ double wordValue(const FrameWords& words, char letter) {
 mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   const double p = roundHalfAway(wordValue(words, 'P'));
   const double last = l == 2 ? 6.0 : kG541Count;
-  if (words.words['P' - 'A'] == nullptr || p < (l == 2 ? 0.0 : 1.0) ||
-      p > last) {
+  if (words.word('P') == nullptr || p < (l == 2 ? 0.0 : 1.0) || p > last) {
     return raise(ctx, AlarmId::IllegalPInG10,
                  fmt::format("G10 L{} P{}: P must be {} to {}", l, p,
                              l == 2 ? 0 : 1, last));
@@ -43,7 +42,7 @@ mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
 /// L10 H geometry, L11 H wear, L12 D geometry, L13 D wear; P the number.
 mbrt_status setToolOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   const double p = roundHalfAway(wordValue(words, 'P'));
-  if (words.words['P' - 'A'] == nullptr || p < 1.0 ||
+  if (words.word('P') == nullptr || p < 1.0 ||
       p > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalPInG10,
                  fmt::format("G10 L{} P{}: P must be 1 to {}", l, p,
@@ -64,7 +63,7 @@ mbrt_status setToolOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
 } // namespace
 
 mbrt_status programmableDataInput(mbrt_ctx& ctx, const FrameWords& words) {
-  const mbrt_word* lWord = words.words['L' - 'A'];
+  const mbrt_word* lWord = words.word('L');
   const double l = lWord != nullptr ? roundHalfAway(numeric(lWord->value)) : 0;
   if (l == 2.0 || l == 20.0) {
     return setWorkOffset(ctx, words, static_cast<int>(l));

@@ -14,13 +14,18 @@
 
 namespace mbc::rt {
 
+const mbrt_word* FrameWords::word(char letter) const {
+  for (std::size_t i = count; i > 0; --i) {
+    if (words[i - 1].letter == letter) {
+      return &words[i - 1];
+    }
+  }
+  return nullptr;
+}
+
 namespace {
 
 constexpr int kLastHIndex = 10; // #4111
-
-const mbrt_word* wordOf(const FrameWords& words, char letter) {
-  return words.words[letter - 'A'];
-}
 
 bool has(const MotionWords& axes, int axis) {
   return (axes.axisMask >> axis & 1) != 0;
@@ -110,7 +115,7 @@ mbrt_status setScaling(mbrt_ctx& ctx, const FrameWords& words) {
     if (axis < 0) {
       continue;
     }
-    const mbrt_word* word = wordOf(words, perAxis ? "IJK"[i] : 'P');
+    const mbrt_word* word = words.word(perAxis ? "IJK"[i] : 'P');
     double factor = word != nullptr ? magnification(ctx, *word) : 0.0;
     if (word == nullptr) {
       const double fallback = ctx.profile.parameter(5411);
@@ -133,7 +138,7 @@ mbrt_status setScaling(mbrt_ctx& ctx, const FrameWords& words) {
 /// decimal point in 0.001 degree), incremental in G91 with parameter
 /// 5400#0 RIN; without R the angle of parameter 5410.
 mbrt_status setRotation(mbrt_ctx& ctx, const FrameWords& words) {
-  if (wordOf(words, 'I') || wordOf(words, 'J') || wordOf(words, 'K')) {
+  if (words.word('I') || words.word('J') || words.word('K')) {
     return raise(ctx, AlarmId::Unsupported,
                  "G68 with I, J, K (3-dimensional coordinate conversion)");
   }
@@ -147,7 +152,7 @@ mbrt_status setRotation(mbrt_ctx& ctx, const FrameWords& words) {
                              letters[0], letters[1]));
   }
   double angle = ctx.profile.parameter(5410) / 1000.0;
-  if (const mbrt_word* r = wordOf(words, 'R')) {
+  if (const mbrt_word* r = words.word('R')) {
     const bool thousandths =
         r->kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput;
     angle = numeric(r->value) / (thousandths ? 1000.0 : 1.0);
@@ -192,7 +197,7 @@ mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
         ctx, AlarmId::ImproperNcAddress,
         fmt::format("G{} offsets {}, which this machine lacks", mode, letter));
   }
-  const double h = ctx.modal.lastWords[kLastHIndex];
+  const double h = ctx.lastWords[kLastHIndex];
   if (h < 0.0 || h > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
                  fmt::format("H{} (the machine has {})", h,
@@ -256,9 +261,9 @@ mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
   if (frameChanged) {
     resyncProgram(ctx);
   }
-  const int mode = words.lengthCode != 0           ? words.lengthCode
-                   : wordOf(words, 'H') != nullptr ? ctx.frames.lengthMode
-                                                   : 0;
+  const int mode = words.lengthCode != 0        ? words.lengthCode
+                   : words.word('H') != nullptr ? ctx.frames.lengthMode
+                                                : 0;
   if (mode == 0 || (mode == 49 && ctx.frames.lengthMode == 49)) {
     return 0;
   }

@@ -23,7 +23,11 @@ struct FrameWords {
   bool cancelRotation = false; // G69
   int lengthCode = 0;          // 43, 44, 49
   const MotionWords* axes = nullptr;
-  std::array<const mbrt_word*, 26> words{}; // the last word of each letter
+  const mbrt_word* words = nullptr; // the whole block
+  std::size_t count = 0;
+
+  /// The last word of `letter` in the block, or nullptr.
+  const mbrt_word* word(char letter) const;
 };
 
 /// True for the G codes a FrameWords::code holds.

@@ -68,7 +68,7 @@ void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
   } else if (ctx.modal.feedMode == 93) {
     minutes = 1.0 / ctx.modal.feed;
   } else if (ctx.modal.feedMode == 95) {
-    minutes = length / (ctx.modal.feed * ctx.modal.lastWords[kLastSIndex]);
+    minutes = length / (ctx.modal.feed * ctx.lastWords[kLastSIndex]);
   } else {
     minutes = length / ctx.modal.feed;
   }
@@ -190,8 +190,10 @@ mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
 /// frame (`path`, counts) combined with what the other axes travel.
 double travel(const mbrt_ctx& ctx, const AxisCounts& machine,
               std::uint32_t pathAxes, double path) {
-  return std::hypot(path,
-                    distance(ctx.machine, machine, ctx.axisCount(), pathAxes));
+  const double others =
+      distance(ctx.machine, machine, ctx.axisCount(), pathAxes);
+  // hypot(0, d) is d exactly; std::hypot is slow enough to show per move.
+  return path == 0.0 ? others : std::hypot(path, others);
 }
 
 /// The points of an arc farthest along its plane axes, where it passes
@@ -323,7 +325,7 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
   if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
     return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
   }
-  if (ctx.modal.feedMode == 95 && ctx.modal.lastWords[kLastSIndex] <= 0.0) {
+  if (ctx.modal.feedMode == 95 && ctx.lastWords[kLastSIndex] <= 0.0) {
     return raise(ctx, AlarmId::FeedZero, "G95 needs a spindle speed (S)");
   }
   if (ctx.modal.feed > 0.0) {

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "block_calls.h"
 #include "canned_cycles.h"
 #include "flat_gcode.h"
@@ -57,6 +59,7 @@ struct Block {
   std::optional<Counts> q;
   std::optional<double> k;   // the repeat count of a canned cycle
   int nonModal = 0;          // G04 (40), G28 (280), G29, G30, G31, G53 (530)
+  bool selectsG541 = false;  // #4130 becomes its P
   double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
   FrameWords frames;
@@ -87,14 +90,14 @@ mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
   return 0;
 }
 
-mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, const Block& block) {
+mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, Block& block) {
   const double p = block.hasP ? block.p : 1.0;
   if (p < 1.0 || p > kG541Count) {
     return raise(ctx, AlarmId::ImproperNcAddress,
                  fmt::format("G54.1 P{}: P must be 1 to {}", p, kG541Count));
   }
   next.workOffset = kFirstG541Offset + static_cast<int>(p) - 1;
-  next.lastWords[kLastPIndex] = p;
+  block.selectsG541 = true;
   return 0;
 }
 
@@ -204,6 +207,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
 /// how the block's own coordinates read.
 mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                         Block& block) {
+  const bool hasG = std::any_of(
+      words, words + count, [](const mbrt_word& w) { return w.letter == 'G'; });
+  if (!hasG) {
+    return 0; // most blocks: no modal state to copy
+  }
   ModalState next = ctx.modal;
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter != 'G') {
@@ -225,6 +233,9 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   next.cycle = ctx.modal.cycle;
   const bool newOrigin = next.workOffset != ctx.modal.workOffset;
   ctx.modal = next;
+  if (block.selectsG541) {
+    ctx.lastWords[kLastPIndex] = block.hasP ? block.p : 1.0;
+  }
   if (newOrigin) {
     resyncProgram(ctx); // the machine stays, the program position moves
   }
@@ -272,7 +283,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   if (letter == 'F') {
     ctx.feedInBlock = true;
     ctx.modal.feed = numeric(word.value);
-    ctx.modal.lastWords[lastWordIndex('F')] = ctx.modal.feed;
+    ctx.lastWords[lastWordIndex('F')] = ctx.modal.feed;
     return 0;
   }
   if (letter == 'Q') {
@@ -285,7 +296,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
                  fmt::format("{} is not an address of this machine", letter));
   }
   const double value = roundHalfAway(numeric(word.value));
-  ctx.modal.lastWords[index] = value;
+  ctx.lastWords[index] = value;
   switch (letter) {
     case 'M':
       return readMCode(ctx, value, block.codes);
@@ -422,12 +433,8 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   ctx.feedInBlock = false;
   ctx.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
-  for (size_t i = 0; i < count; ++i) {
-    const char letter = words[i].letter;
-    if (letter >= 'A' && letter <= 'Z') {
-      block.frames.words[letter - 'A'] = &words[i];
-    }
-  }
+  block.frames.words = words;
+  block.frames.count = count;
   bool taken = false;
   if (const mbrt_status status =
           callInsteadOfBlock(ctx, words, count, flow, &taken);

@@ -236,6 +236,20 @@ TEST(RuntimeNcBlock, AdditionalWorkOffsets) {
   EXPECT_EQ(m.read(5041), 6.0);
   Machine n;
   EXPECT_EQ(n.block("G54.1 P301"), status(AlarmId::ImproperNcAddress));
+  EXPECT_EQ(n.read(4130), 0.0); // the alarmed block set nothing
+}
+
+// The last value of each address belongs to the run: a new run starts
+// without them, like the modal codes.
+TEST(RuntimeNcBlock, NewRunForgetsTheLastWords) {
+  Machine m;
+  ASSERT_EQ(m.block("G01 X1. F250 S1200 M03"), 0);
+  EXPECT_EQ(m.read(4109), 250.0);
+  EXPECT_EQ(m.read(4119), 1200.0);
+  mbrt_start(m.ctx(), "O2");
+  EXPECT_EQ(m.read(4109), 0.0);
+  EXPECT_EQ(m.read(4119), 0.0);
+  EXPECT_EQ(m.read(4113), 0.0);
 }
 
 TEST(RuntimeNcBlock, SubprogramCallFlow) {
