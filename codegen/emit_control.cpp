@@ -89,6 +89,10 @@ void FunctionEmitter::emitPrologue() {
   commons_ = b_.CreateCall(abi_.fn(Rt::mbrt_common_base), {ctx_}, "commons");
   blockState_ =
       b_.CreateCall(abi_.fn(Rt::mbrt_block_state_of), {ctx_}, "blockstate");
+  blockFile_ = b_.CreateStructGEP(abi_.blockState, blockState_, kBlockFile);
+  blockLine_ = b_.CreateStructGEP(abi_.blockState, blockState_, kBlockLine);
+  blockCount_ = b_.CreateStructGEP(abi_.blockState, blockState_, kBlockCount);
+  blockMax_ = b_.CreateStructGEP(abi_.blockState, blockState_, kBlockMax);
   file_ = m_.cstring(fn_.file);
   name_ = m_.cstring(fn_.name);
   flowSlot_ = b_.CreateAlloca(abi_.flow, nullptr, "flow");
@@ -165,11 +169,11 @@ void FunctionEmitter::leave(llvm::Value* status) {
   b_.CreateBr(exit_);
 }
 
+// Straight to the exit with the status: no block of its own per check.
 void FunctionEmitter::check(llvm::Value* status) {
-  llvm::BasicBlock* rest = splitIf(
-      b_.CreateICmpNE(status, llvm::ConstantInt::get(abi_.i32, 0)), true);
-  leave(status);
-  b_.SetInsertPoint(rest);
+  exitStatus_->addIncoming(status, b_.GetInsertBlock());
+  branchCold(b_.CreateICmpNE(status, llvm::ConstantInt::get(abi_.i32, 0)),
+             exit_);
 }
 
 void FunctionEmitter::raise(int alarmId, const char* detail) {
@@ -181,9 +185,32 @@ void FunctionEmitter::raise(int alarmId, const char* detail) {
 }
 
 void FunctionEmitter::alarmIf(llvm::Value* cond, int alarmId) {
-  llvm::BasicBlock* rest = splitIf(cond, true);
-  raise(alarmId, nullptr);
+  branchCold(cond, sharedExit(Rt::mbrt_raise,
+                              {llvm::ConstantInt::get(abi_.i32, alarmId),
+                               llvm::ConstantPointerNull::get(abi_.ptr)},
+                              alarmId));
+}
+
+void FunctionEmitter::branchCold(llvm::Value* cond, llvm::BasicBlock* cold) {
+  llvm::BasicBlock* rest = newBlock("cont");
+  b_.CreateCondBr(cond, cold, rest,
+                  llvm::MDBuilder(abi_.context).createBranchWeights(1, 2000));
   b_.SetInsertPoint(rest);
+}
+
+llvm::BasicBlock*
+FunctionEmitter::sharedExit(Rt f, std::vector<llvm::Value*> args, int key) {
+  llvm::BasicBlock*& block = sharedExits_[{f, key}];
+  if (block == nullptr) {
+    const llvm::IRBuilderBase::InsertPointGuard guard(b_);
+    block = newBlock("fail");
+    b_.SetInsertPoint(block);
+    // Shared by many lines: the function's first line in debug info.
+    at(firstLine_);
+    args.insert(args.begin(), ctx_);
+    leave(b_.CreateCall(abi_.fn(f), args));
+  }
+  return block;
 }
 
 void FunctionEmitter::leaveStopped(int endKind) {

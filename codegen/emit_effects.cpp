@@ -69,20 +69,14 @@ llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
 // mbrt_begin_block inline: where alarms and motion are reported, and the
 // execution limit.
 void FunctionEmitter::emitBegin(const ir::Inst& inst) {
-  b_.CreateStore(file_,
-                 b_.CreateStructGEP(abi_.blockState, blockState_, kBlockFile));
-  b_.CreateStore(llvm::ConstantInt::get(abi_.i32, inst.attr),
-                 b_.CreateStructGEP(abi_.blockState, blockState_, kBlockLine));
-  llvm::Value* countSlot =
-      b_.CreateStructGEP(abi_.blockState, blockState_, kBlockCount);
-  llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, countSlot),
+  b_.CreateStore(file_, blockFile_);
+  b_.CreateStore(llvm::ConstantInt::get(abi_.i32, inst.attr), blockLine_);
+  llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, blockCount_),
                                     llvm::ConstantInt::get(abi_.i64, 1));
-  b_.CreateStore(count, countSlot);
-  llvm::Value* max = b_.CreateLoad(
-      abi_.i64, b_.CreateStructGEP(abi_.blockState, blockState_, kBlockMax));
-  llvm::BasicBlock* rest = splitIf(b_.CreateICmpUGT(count, max), true);
-  leave(b_.CreateCall(abi_.fn(Rt::mbrt_block_limit), {ctx_}));
-  b_.SetInsertPoint(rest);
+  b_.CreateStore(count, blockCount_);
+  llvm::Value* max = b_.CreateLoad(abi_.i64, blockMax_);
+  branchCold(b_.CreateICmpUGT(count, max),
+             sharedExit(Rt::mbrt_block_limit, {}, 0));
 }
 
 llvm::Value* FunctionEmitter::localSlot(llvm::Value* index) {

@@ -86,6 +86,12 @@ private:
   void raise(int alarmId, const char* detail);
   /// Leaves with alarm `alarmId` when `cond` holds (the unlikely way).
   void alarmIf(llvm::Value* cond, int alarmId);
+  /// Goes to `cold` when `cond` holds (the unlikely way), on in a new block.
+  void branchCold(llvm::Value* cond, llvm::BasicBlock* cold);
+  /// The function's one block that calls `f(ctx, args...)` and leaves with
+  /// its status: alarm sites share it, so that a big program does not get
+  /// a block and an exit edge per check (LLVM's time grows with both).
+  llvm::BasicBlock* sharedExit(Rt f, std::vector<llvm::Value*> args, int key);
   /// Branches on `cond` to a new block (returned, with the insert point in
   /// it) and goes on in another when it does not hold.
   llvm::BasicBlock* splitIf(llvm::Value* cond, bool unlikely);
@@ -158,6 +164,12 @@ private:
   llvm::Value* level_ = nullptr;
   llvm::Value* commons_ = nullptr;
   llvm::Value* blockState_ = nullptr;
+  // The fields of the block state every begin writes, addressed once.
+  llvm::Value* blockFile_ = nullptr;
+  llvm::Value* blockLine_ = nullptr;
+  llvm::Value* blockCount_ = nullptr;
+  llvm::Value* blockMax_ = nullptr;
+  std::map<std::pair<Rt, int>, llvm::BasicBlock*> sharedExits_;
   llvm::Value* file_ = nullptr;
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;
