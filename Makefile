@@ -6,13 +6,19 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build demo test bench check-format format clean
+.PHONY: all deps install-missing build demo test bench check-format format clean
 
 all: build
 
+# `make bench` adds its contenders: LinuxCNC's rs274 and valgrind.
+BENCH_PACKAGES := linuxcnc-uspace valgrind
+
 deps:
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(DEB_PACKAGES)"
+
+install-missing:
 	@missing=""; \
-	for p in $(DEB_PACKAGES); do \
+	for p in $(PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' \
 	    || missing="$$missing $$p"; \
 	done; \
@@ -46,6 +52,7 @@ test: build
 
 # Not part of `make test`: timings need a quiet machine (bench/README.md).
 bench: build
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(BENCH_PACKAGES)"
 	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --out bench/RESULTS.md
 
 check-format:

@@ -1,17 +1,20 @@
 #!/usr/bin/env python3
-"""Runs the mbc benchmarks and prints one markdown table (bench/README.md).
+"""Runs the mbc benchmarks and prints one markdown report (bench/README.md).
 
-Every number is the median of several runs in one session on one machine:
-compare the ratios, not the absolute times, across machines.
+Every number is measured in one session on one machine: compare the
+ratios, not the absolute times, across machines.
 """
 import argparse
 import os
 import platform
 import re
+import shutil
+import signal
 import statistics
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -19,41 +22,57 @@ HERE = Path(__file__).resolve().parent
 TIME_LINE = re.compile(r"mbc: time: (.*)")
 PHASE = re.compile(r"([a-zA-Z ]+?) ([0-9.]+) ms")
 MOVES = re.compile(r"(\d+) blocks, (\d+) moves")
+INSTRUCTIONS = re.compile(r"I\s+refs:\s+([0-9,]+)")
+RS274_MOVES = re.compile(r"STRAIGHT_FEED|STRAIGHT_TRAVERSE|ARC_FEED")
+SIZES = (1000, 10000, 100000)
+LEVELS = ("-O0", "-O1", "-O2")
 
 
-def run_once(command):
-    """Wall time (s), peak memory (MiB), stderr of one run."""
-    start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL,
-                               stderr=subprocess.PIPE, text=True)
-    stderr = process.stderr.read()
-    _, status, usage = os.wait4(process.pid, 0)
-    wall = time.perf_counter() - start
-    process.returncode = os.waitstatus_to_exitcode(status)
-    if process.returncode not in (0,):
+def run_once(command, timeout=None):
+    """Wall time (s), peak memory (MiB), stderr of one run; None when it
+    ran past `timeout` seconds and was killed."""
+    with tempfile.TemporaryFile("w+") as err:
+        start = time.perf_counter()
+        process = subprocess.Popen(command, stdout=subprocess.DEVNULL,
+                                   stderr=err, text=True)
+        timer = threading.Timer(timeout, process.kill) if timeout else None
+        if timer:
+            timer.start()
+        _, status, usage = os.wait4(process.pid, 0)
+        wall = time.perf_counter() - start
+        if timer:
+            timer.cancel()
+        process.returncode = os.waitstatus_to_exitcode(status)
+        err.seek(0)
+        stderr = err.read()
+    if timer and process.returncode == -signal.SIGKILL:
+        return None
+    if process.returncode != 0:
         sys.exit(f"bench: {' '.join(command)} failed:\n{stderr}")
     return wall, usage.ru_maxrss / 1024.0, stderr
 
 
 def phases_of(stderr):
     match = TIME_LINE.search(stderr)
+    if not match:
+        return {}
     return {name.strip(): float(ms) for name, ms in PHASE.findall(match.group(1))}
 
 
 def measure(command, runs):
     """Medians over `runs`: wall s, peak MiB, phases (ms), moves."""
-    walls, peaks, phase_runs, moves = [], [], [], 0
+    walls, phase_runs, moves, peak = [], [], 0, 0.0
     for _ in range(runs):
-        wall, peak, stderr = run_once(command)
+        wall, run_peak, stderr = run_once(command)
         walls.append(wall)
-        peaks.append(peak)
+        peak = max(peak, run_peak)
         phase_runs.append(phases_of(stderr))
         found = MOVES.search(stderr)
         moves = int(found.group(2)) if found else 0
     phases = {name: statistics.median(p[name] for p in phase_runs)
               for name in phase_runs[0]}
-    return {"wall": statistics.median(walls), "peak": max(peaks),
-            "phases": phases, "moves": moves}
+    return {"wall": statistics.median(walls), "peak": peak, "phases": phases,
+            "moves": moves}
 
 
 def machine_text():
@@ -71,22 +90,107 @@ def machine_text():
             f"{platform.release()}; mbc {commit.strip() or 'unknown'}")
 
 
-def engines(mbc, workload, runs, work):
+def build_exe(mbc, workload, work):
+    exe = Path(work) / workload.stem
+    subprocess.run([mbc, "build", str(workload), "-o", str(exe)], check=True,
+                   stderr=subprocess.DEVNULL)
+    return exe
+
+
+def hand_of(mbc, workload):
+    hand = Path(mbc).parent / "bench" / f"hand_{workload.stem}"
+    return hand if hand.exists() else None
+
+
+def engines(mbc, workload, runs, exe):
     base = [mbc, "run", str(workload), "--time", "--dprnt", "/dev/null"]
     results = {}
     for engine in ("interp", "ir", "jit"):
         results[engine] = measure(base + ["--engine", engine], runs)
-    exe = Path(work) / workload.stem
-    start = time.perf_counter()
-    subprocess.run([mbc, "build", str(workload), "-o", str(exe)], check=True,
-                   stderr=subprocess.DEVNULL)
-    results["build"] = time.perf_counter() - start
     results["aot"] = measure([str(exe), "--time", "--dprnt", "/dev/null"],
                              runs)
-    hand = Path(mbc).parent / "bench" / f"hand_{workload.stem}"
-    if hand.exists():
+    if hand := hand_of(mbc, workload):
         results["hand"] = measure([str(hand)], runs)
     return results
+
+
+def rs274_of(workload, runs, startup):
+    """LinuxCNC's interpreter on the .ngc twin: seconds less its start-up,
+    and the moves of its canonical output (to check the twin)."""
+    ngc = HERE / "ngc" / f"{workload.stem}.ngc"
+    if not ngc.exists():
+        return None
+    with tempfile.NamedTemporaryFile("r", suffix=".txt") as out:
+        run_once(["rs274", "-g", str(ngc), out.name])
+        # Line by line: a child's peak memory counts this process's at the
+        # fork, so the script must stay small.
+        moves = sum(1 for line in out if RS274_MOVES.search(line))
+    walls = [run_once(["rs274", "-g", str(ngc), "/dev/null"])[0]
+             for _ in range(runs)]
+    return {"ms": (statistics.median(walls) - startup) * 1000.0,
+            "moves": moves}
+
+
+def rs274_startup(runs, work):
+    empty = Path(work) / "empty.ngc"
+    empty.write_text("M2\n")
+    return statistics.median(
+        run_once(["rs274", "-g", str(empty), "/dev/null"])[0]
+        for _ in range(runs))
+
+
+def instructions(command):
+    """Instructions executed (valgrind's Ir), a count that noise leaves
+    alone; start-up included (about 2 M for mbc, see the report)."""
+    process = subprocess.run(
+        ["valgrind", "--tool=cachegrind", "--cache-sim=no",
+         "--cachegrind-out-file=/dev/null", *command],
+        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    found = INSTRUCTIONS.search(process.stderr)
+    return int(found.group(1).replace(",", "")) if found else None
+
+
+def output_modes(mbc, workload, runs, work):
+    """Run-phase ms of the JIT with no sink, a JSONL toolpath, G-code."""
+    base = [mbc, "run", str(workload), "--time", "--dprnt", "/dev/null"]
+    sink = str(Path(work) / "out")
+    return {mode: measure(base + extra, runs)["phases"]["run"]
+            for mode, extra in (("null", []), ("jsonl", ["--toolpath", sink]),
+                                ("gcode", ["--gcode", sink]))}
+
+
+def compile_scaling(mbc, work, timeout):
+    """Wall s and peak MiB of `mbc compile -c` per program size and level;
+    None past the timeout. One run each: these take seconds."""
+    table = {}
+    for size in SIZES:
+        source = Path(work) / f"large_{size}.nc"
+        subprocess.run([sys.executable, str(HERE / "gen_large.py"), str(size),
+                        str(source)], check=True)
+        for level in LEVELS:
+            print(f"bench: compile {size} lines {level}", file=sys.stderr)
+            result = run_once([mbc, "compile", "-c", str(source), "-o",
+                               str(Path(work) / "large.o"), level],
+                              timeout=timeout)
+            table[(size, level)] = result
+    return table
+
+
+def startup(mbc, runs, work):
+    """Whole-process wall ms for a small macro: what a user waits for."""
+    example = HERE.parent / "examples" / "bolt_circle.nc"
+    exe = Path(work) / "bolt_circle"
+    subprocess.run([mbc, "build", str(example), "-o", str(exe)], check=True,
+                   stderr=subprocess.DEVNULL)
+    base = [mbc, "run", str(example), "--time", "--dprnt", "/dev/null"]
+    rows = {}
+    for name, command in (("interp", base + ["--engine", "interp"]),
+                          ("jit", base + ["--engine", "jit"]),
+                          ("jit -O0", base + ["--engine", "jit", "-O0"]),
+                          ("aot", [str(exe), "--time", "--dprnt",
+                                   "/dev/null"])):
+        rows[name] = measure(command, runs)
+    return rows
 
 
 def ms(value):
@@ -94,49 +198,148 @@ def ms(value):
 
 
 def ratio(a, b):
-    return f"{a / b:.1f}x" if b > 0 else "-"
+    return f"{a / b:.1f}x" if a and b else "-"
+
+
+def engine_table(results, rs274):
+    rows = []
+    for name, r in results.items():
+        run = {engine: r[engine]["phases"]["run"]
+               for engine in ("interp", "ir", "jit", "aot", "hand")
+               if engine in r}
+        compile_ms = sum(v for k, v in r["jit"]["phases"].items()
+                         if k != "run")
+        moves = r["jit"]["moves"]
+        rate = moves / (run["jit"] / 1000.0) / 1e6 if run["jit"] else 0
+        hand = run.get("hand")
+        theirs = rs274.get(name)
+        rows.append(
+            f"| {name} | {moves} | {ms(run['interp'])} | {ms(run['ir'])} | "
+            f"{ms(run['jit'])} | {ms(run['jit'] + compile_ms)} | "
+            f"{ms(run['aot'])} | {ms(hand) if hand else '-'} | "
+            f"{ms(theirs['ms']) if theirs else '-'} | "
+            f"{ratio(run['jit'], hand)} | {ratio(run['interp'], run['jit'])} | "
+            f"{ratio(theirs['ms'], run['jit']) if theirs else '-'} | "
+            f"{rate:.2f} | {r['jit']['peak']:.0f} |")
+    return [
+        "| workload | moves | interp | ir | jit | jit incl. compile | aot |"
+        " hand C++ | rs274 | jit / hand | interp / jit | rs274 / jit |"
+        " Mmoves/s (jit) | peak MiB (jit) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        *rows]
+
+
+def instruction_table(counts):
+    rows = []
+    for name, c in counts.items():
+        cells = [f"{c[k] / 1e6:.0f}" if c.get(k) else "-"
+                 for k in ("interp", "aot", "hand")]
+        rows.append(f"| {name} | {' | '.join(cells)} | "
+                    f"{ratio(c.get('aot'), c.get('hand'))} | "
+                    f"{ratio(c.get('interp'), c.get('aot'))} |")
+    return ["| workload | interp | aot | hand C++ | aot / hand |"
+            " interp / aot |", "|---|---|---|---|---|---|", *rows]
+
+
+def mode_table(modes):
+    rows = [f"| {name} | {ms(m['null'])} | {ms(m['jsonl'])} | "
+            f"{ms(m['gcode'])} | {ratio(m['jsonl'], m['null'])} | "
+            f"{ratio(m['gcode'], m['null'])} |" for name, m in modes.items()]
+    return ["| workload | null sink | JSONL toolpath | flattened G-code |"
+            " JSONL / null | G-code / null |", "|---|---|---|---|---|---|",
+            *rows]
+
+
+def compile_table(table, timeout):
+    def cell(result):
+        if result is None:
+            return f"> {timeout:.0f} s"
+        return f"{result[0]:.2f} s, {result[1]:.0f} MiB"
+    rows = [f"| {size} | " + " | ".join(cell(table[(size, level)])
+                                        for level in LEVELS) + " |"
+            for size in SIZES]
+    return ["| lines | " + " | ".join(LEVELS) + " |",
+            "|---|---|---|---|", *rows]
+
+
+def startup_table(rows):
+    lines = ["| engine | process wall ms | code generation ms | run ms |",
+             "|---|---|---|---|"]
+    for name, r in rows.items():
+        generation = r["phases"].get("code generation")
+        lines.append(f"| {name} | {r['wall'] * 1000:.1f} | "
+                     f"{ms(generation) if generation is not None else '-'} | "
+                     f"{ms(r['phases']['run'])} |")
+    return lines
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--mbc", default=str(HERE.parent / "build" / "mbc"))
     parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--rs274-runs", type=int, default=3)
+    parser.add_argument("--compile-timeout", type=float, default=60.0)
     parser.add_argument("--out", help="also write the report here")
     args = parser.parse_args()
     mbc = str(Path(args.mbc).resolve())
-    rows = []
+    has_rs274 = shutil.which("rs274") is not None
+    has_valgrind = shutil.which("valgrind") is not None
+    results, rs274, counts, modes = {}, {}, {}, {}
     with tempfile.TemporaryDirectory() as work:
+        startup_rs274 = rs274_startup(args.runs, work) if has_rs274 else 0.0
         for workload in sorted((HERE / "workloads").glob("*.nc")):
+            name = workload.stem
             print(f"bench: {workload.name}", file=sys.stderr)
-            r = engines(mbc, workload, args.runs, work)
-            run = {name: r[name]["phases"]["run"]
-                   for name in ("interp", "ir", "jit", "aot", "hand")
-                   if name in r}
-            jit_compile = sum(v for k, v in r["jit"]["phases"].items()
-                              if k != "run")
-            moves = r["jit"]["moves"]
-            rate = moves / (run["jit"] / 1000.0) / 1e6 if run["jit"] else 0
-            hand = run.get("hand")
-            rows.append(
-                f"| {workload.stem} | {moves} | {ms(run['interp'])} | "
-                f"{ms(run['ir'])} | {ms(run['jit'])} | "
-                f"{ms(run['jit'] + jit_compile)} | {ms(run['aot'])} | "
-                f"{ms(hand) if hand else '-'} | "
-                f"{ratio(run['interp'], run['jit'])} | "
-                f"{ratio(run['jit'], hand) if hand else '-'} | {rate:.2f} | "
-                f"{r['jit']['peak']:.0f} |")
+            exe = build_exe(mbc, workload, work)
+            results[name] = engines(mbc, workload, args.runs, exe)
+            moves = results[name]["jit"]["moves"]
+            if has_rs274 and (theirs := rs274_of(workload, args.rs274_runs,
+                                                  startup_rs274)):
+                if abs(theirs["moves"] - moves) > 1:
+                    sys.exit(f"bench: rs274 made {theirs['moves']} moves of "
+                             f"{name}, mbc {moves}: the .ngc is no twin")
+                rs274[name] = theirs
+            if has_valgrind:
+                hand = hand_of(mbc, workload)
+                counts[name] = {
+                    "interp": instructions([mbc, "run", str(workload),
+                                            "--engine", "interp"]),
+                    "aot": instructions([str(exe)]),
+                    "hand": instructions([str(hand)]) if hand else None}
+            if moves:
+                modes[name] = output_modes(mbc, workload, args.runs, work)
+        compiles = compile_scaling(mbc, work, args.compile_timeout)
+        small = startup(mbc, args.runs, work)
     report = "\n".join([
         "# mbc benchmarks", "",
-        f"Machine: {machine_text()}.",
-        f"Median of {args.runs} runs; times in ms of the run phase (`mbc run"
-        " --time`), no toolpath output (null sink). hand C++: the workload"
-        " written in C++ on the same runtime path (bench/hand/); jit / hand"
-        " is how much slower compiled Macro B is than that bound.", "",
-        "| workload | moves | interp | ir | jit | jit incl. compile | aot |"
-        " hand C++ | interp / jit | jit / hand | Mmoves/s (jit) |"
-        " peak MiB (jit) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
-        *rows, ""])
+        f"Machine: {machine_text()}.", "",
+        "## Engines", "",
+        f"Median of {args.runs} runs; ms of the run phase (`mbc run --time`)"
+        " with no toolpath output (null sink). hand C++: the workload written"
+        " in C++ on the same runtime calls (bench/hand/), the practical bound."
+        f" rs274: LinuxCNC's interpreter on the .ngc twin (bench/ngc/, same"
+        f" move count checked), median of {args.rs274_runs} whole runs less"
+        f" its start-up ({startup_rs274 * 1000:.0f} ms), output to /dev/null."
+        if has_rs274 else " rs274 was not installed.", "",
+        *engine_table(results, rs274), "",
+        "## Instructions", "",
+        "Millions of instructions per whole run (valgrind), which machine"
+        " noise leaves alone; interp includes the front end, aot and hand"
+        " their start-up.", "",
+        *(instruction_table(counts) if counts else ["valgrind missing."]), "",
+        "## Output modes (jit)", "",
+        "Run-phase ms writing nothing, the JSONL toolpath, or the flattened"
+        " G-code: what formatting costs.", "",
+        *mode_table(modes), "",
+        "## Compile time and memory against program size", "",
+        "`mbc compile -c` of programs from bench/gen_large.py (a main program"
+        " calling 40-line subprograms): wall time and peak memory, one run"
+        " each.", "",
+        *compile_table(compiles, args.compile_timeout), "",
+        "## Start-up for a small macro", "",
+        "examples/bolt_circle.nc, whole process, median of"
+        f" {args.runs}.", "",
+        *startup_table(small), ""])
     print(report)
     if args.out:
         Path(args.out).write_text(report)

@@ -1,0 +1,32 @@
+%
+O1007 (PLAIN ARITHMETIC: HORNER POLYNOMIALS FROM A TABLE IN #100-#109)
+(NO FUNCTIONS: WHAT THE ENGINES THEMSELVES COST PER STATEMENT)
+#100 = 0.5
+#101 = -1.25
+#102 = 0.75
+#103 = 2
+#104 = -0.125
+#105 = 1
+#106 = 0.0625
+#107 = -3
+#108 = 0.25
+#109 = 1.5
+#1 = 0
+#2 = 0
+#3 = 1
+WHILE [#1 LT 50000] DO1
+  #4 = #1 * 0.00001
+  #5 = #109
+  #6 = 8
+  WHILE [#6 GE 0] DO2
+    #5 = #5 * #4 + #[100 + #6]
+    #6 = #6 - 1
+  END2
+  #2 = #2 + #5 * #3
+  IF [#2 GT 1000] THEN #3 = -1
+  IF [#2 LT -1000] THEN #3 = 1
+  #1 = #1 + 1
+END1
+#500 = #2
+M30
+%
