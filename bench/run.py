@@ -140,8 +140,8 @@ def rs274_startup(runs, work):
 
 
 def instructions(command):
-    """Instructions executed (valgrind's Ir), a count that noise leaves
-    alone; start-up included (about 2 M for mbc, see the report)."""
+    """Instructions executed (valgrind's Ir) by the whole process, a count
+    that machine noise leaves alone."""
     process = subprocess.run(
         ["valgrind", "--tool=cachegrind", "--cache-sim=no",
          "--cachegrind-out-file=/dev/null", *command],

@@ -155,12 +155,20 @@ void FunctionEmitter::jump(ir::BlockId target) {
 
 llvm::BasicBlock* FunctionEmitter::splitIf(llvm::Value* cond, bool unlikely) {
   llvm::BasicBlock* taken = newBlock("then");
+  llvm::BasicBlock* rest = branchOff(cond, taken, unlikely);
+  b_.SetInsertPoint(taken);
+  return rest;
+}
+
+llvm::BasicBlock* FunctionEmitter::branchOff(llvm::Value* cond,
+                                             llvm::BasicBlock* taken,
+                                             bool unlikely) {
   llvm::BasicBlock* rest = newBlock("cont");
   llvm::MDNode* weights =
       unlikely ? llvm::MDBuilder(abi_.context).createBranchWeights(1, 2000)
                : nullptr;
   b_.CreateCondBr(cond, taken, rest, weights);
-  b_.SetInsertPoint(taken);
+  b_.SetInsertPoint(rest);
   return rest;
 }
 
@@ -172,8 +180,8 @@ void FunctionEmitter::leave(llvm::Value* status) {
 // Straight to the exit with the status: no block of its own per check.
 void FunctionEmitter::check(llvm::Value* status) {
   exitStatus_->addIncoming(status, b_.GetInsertBlock());
-  branchCold(b_.CreateICmpNE(status, llvm::ConstantInt::get(abi_.i32, 0)),
-             exit_);
+  branchOff(b_.CreateICmpNE(status, llvm::ConstantInt::get(abi_.i32, 0)), exit_,
+            true);
 }
 
 void FunctionEmitter::raise(int alarmId, const char* detail) {
@@ -185,17 +193,12 @@ void FunctionEmitter::raise(int alarmId, const char* detail) {
 }
 
 void FunctionEmitter::alarmIf(llvm::Value* cond, int alarmId) {
-  branchCold(cond, sharedExit(Rt::mbrt_raise,
-                              {llvm::ConstantInt::get(abi_.i32, alarmId),
-                               llvm::ConstantPointerNull::get(abi_.ptr)},
-                              alarmId));
-}
-
-void FunctionEmitter::branchCold(llvm::Value* cond, llvm::BasicBlock* cold) {
-  llvm::BasicBlock* rest = newBlock("cont");
-  b_.CreateCondBr(cond, cold, rest,
-                  llvm::MDBuilder(abi_.context).createBranchWeights(1, 2000));
-  b_.SetInsertPoint(rest);
+  branchOff(cond,
+            sharedExit(Rt::mbrt_raise,
+                       {llvm::ConstantInt::get(abi_.i32, alarmId),
+                        llvm::ConstantPointerNull::get(abi_.ptr)},
+                       alarmId),
+            true);
 }
 
 llvm::BasicBlock*

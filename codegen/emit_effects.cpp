@@ -75,8 +75,8 @@ void FunctionEmitter::emitBegin(const ir::Inst& inst) {
                                     llvm::ConstantInt::get(abi_.i64, 1));
   b_.CreateStore(count, blockCount_);
   llvm::Value* max = b_.CreateLoad(abi_.i64, blockMax_);
-  branchCold(b_.CreateICmpUGT(count, max),
-             sharedExit(Rt::mbrt_block_limit, {}, 0));
+  branchOff(b_.CreateICmpUGT(count, max),
+            sharedExit(Rt::mbrt_block_limit, {}, 0), true);
 }
 
 llvm::Value* FunctionEmitter::localSlot(llvm::Value* index) {

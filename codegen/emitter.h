@@ -86,8 +86,6 @@ private:
   void raise(int alarmId, const char* detail);
   /// Leaves with alarm `alarmId` when `cond` holds (the unlikely way).
   void alarmIf(llvm::Value* cond, int alarmId);
-  /// Goes to `cold` when `cond` holds (the unlikely way), on in a new block.
-  void branchCold(llvm::Value* cond, llvm::BasicBlock* cold);
   /// The function's one block that calls `f(ctx, args...)` and leaves with
   /// its status: alarm sites share it, so that a big program does not get
   /// a block and an exit edge per check (LLVM's time grows with both).
@@ -95,6 +93,10 @@ private:
   /// Branches on `cond` to a new block (returned, with the insert point in
   /// it) and goes on in another when it does not hold.
   llvm::BasicBlock* splitIf(llvm::Value* cond, bool unlikely);
+  /// Branches on `cond` to `taken` and goes on in a new block (returned,
+  /// with the insert point in it) when it does not hold.
+  llvm::BasicBlock* branchOff(llvm::Value* cond, llvm::BasicBlock* taken,
+                              bool unlikely);
   llvm::BasicBlock* newBlock(const char* name);
 
   // Values (emit_values.cpp).
