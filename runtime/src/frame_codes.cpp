@@ -248,9 +248,8 @@ bool isFrameCode(int tenths) {
          tenths == 510 || tenths == 511 || tenths == 501 || tenths == 680;
 }
 
-mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
-                              bool* lengthChanged) {
-  *lengthChanged = false;
+mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
+                            bool* lengthChanged) {
   const bool frameChanged =
       words.code != 0 || words.cancelScaling || words.cancelRotation;
   ctx.frames.scaling = ctx.frames.scaling && !words.cancelScaling;

@@ -33,9 +33,22 @@ struct FrameWords {
 /// True for the G codes a FrameWords::code holds.
 bool isFrameCode(int tenths);
 
+/// executeFrameCodes for a block that has any frame words.
+mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
+                            bool* lengthChanged);
+
 /// Applies the block's frame codes; `lengthChanged` tells that the tool
 /// length offset changed, so that a block without motion moves by it.
-mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
-                              bool* lengthChanged);
+/// Inline because most blocks have none, and the test is cheaper than the
+/// call.
+inline mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
+                                     bool* lengthChanged) {
+  *lengthChanged = false;
+  if (words.code == 0 && !words.cancelScaling && !words.cancelRotation &&
+      words.lengthCode == 0 && words.word('H') == nullptr) {
+    return 0;
+  }
+  return applyFrameCodes(ctx, words, lengthChanged);
+}
 
 } // namespace mbc::rt

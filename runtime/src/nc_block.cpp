@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-
 #include "block_calls.h"
 #include "canned_cycles.h"
 #include "flat_gcode.h"
@@ -49,8 +47,13 @@ int lastWordIndex(char letter) {
 
 constexpr int kLastPIndex = 29; // #4130: G54.1 P
 
+/// Which G codes a block holds: most hold none or only G00-G03.
+enum class GCodes { None, MotionOnly, Other };
+
 /// The words of one block after conversion.
 struct Block {
+  GCodes gCodes = GCodes::None;
+  int lastMotion = 0; // the last of G00-G03 under GCodes::MotionOnly
   MotionWords motion;
   bool hasP = false;
   bool hasL = false;
@@ -207,10 +210,14 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
 /// how the block's own coordinates read.
 mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                         Block& block) {
-  const bool hasG = std::any_of(
-      words, words + count, [](const mbrt_word& w) { return w.letter == 'G'; });
-  if (!hasG) {
+  if (block.gCodes == GCodes::None) {
     return 0; // most blocks: no modal state to copy
+  }
+  if (block.gCodes == GCodes::MotionOnly && ctx.modal.cycle == 0) {
+    // G00-G03 cannot alarm and change nothing else without a canned cycle
+    // to cancel: no copy of the modal state to commit or drop.
+    ctx.modal.motion = block.lastMotion;
+    return 0;
   }
   ModalState next = ctx.modal;
   for (size_t i = 0; i < count; ++i) {
@@ -420,24 +427,40 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   return executeBlockMotion(ctx, motion);
 }
 
+/// P, L and what kind of G codes the block holds, before anything executes.
+void scanWords(const mbrt_word* words, size_t count, Block& block) {
+  for (size_t i = 0; i < count; ++i) {
+    const char letter = words[i].letter;
+    if (letter == 'P' || letter == 'L') {
+      const double value = roundHalfAway(numeric(words[i].value));
+      (letter == 'P' ? block.hasP : block.hasL) = true;
+      (letter == 'P' ? block.p : block.l) = value;
+    } else if (letter == 'G' && block.gCodes != GCodes::Other) {
+      const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
+      const bool motion =
+          tenths == 0.0 || tenths == 10.0 || tenths == 20.0 || tenths == 30.0;
+      block.gCodes = motion ? GCodes::MotionOnly : GCodes::Other;
+      block.lastMotion = motion ? static_cast<int>(tenths) / 10 : 0;
+    }
+  }
+}
+
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
   Block block;
-  for (size_t i = 0; i < count; ++i) {
-    if (words[i].letter == 'P' || words[i].letter == 'L') {
-      const double value = roundHalfAway(numeric(words[i].value));
-      (words[i].letter == 'P' ? block.hasP : block.hasL) = true;
-      (words[i].letter == 'P' ? block.p : block.l) = value;
-    }
-  }
+  scanWords(words, count, block);
   ctx.feedInBlock = false;
   ctx.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
   block.frames.words = words;
   block.frames.count = count;
+  // G66, G66.1 and G67 are no motion codes, and nothing else calls
+  // instead of a block unless a modal call or a code call is set up.
+  const bool mayCall = block.gCodes == GCodes::Other ||
+                       !ctx.modalCalls.empty() || ctx.profile.codeCalls;
   bool taken = false;
   if (const mbrt_status status =
-          callInsteadOfBlock(ctx, words, count, flow, &taken);
+          mayCall ? callInsteadOfBlock(ctx, words, count, flow, &taken) : 0;
       status != 0 || taken) {
     return status;
   }
