@@ -47,13 +47,19 @@ int lastWordIndex(char letter) {
 
 constexpr int kLastPIndex = 29; // #4130: G54.1 P
 
-/// Which G codes a block holds: most hold none or only G00-G03.
-enum class GCodes { None, MotionOnly, Other };
+/// Which G codes a block holds: most hold none, or only codes that set one
+/// modal field (setsOneField).
+enum class GCodes { None, OneField, Other };
+
+constexpr int kMaxOneFieldCodes = 4;
 
 /// The words of one block after conversion.
 struct Block {
   GCodes gCodes = GCodes::None;
-  int lastMotion = 0; // the last of G00-G03 under GCodes::MotionOnly
+  // Under GCodes::OneField, the codes in tenths, in block order.
+  std::array<int, kMaxOneFieldCodes> oneField{};
+  int oneFieldCount = 0;
+  bool hasMotionCode = false; // G00-G03, which cancel a canned cycle
   MotionWords motion;
   bool hasP = false;
   bool hasL = false;
@@ -102,6 +108,45 @@ mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, Block& block) {
   next.workOffset = kFirstG541Offset + static_cast<int>(p) - 1;
   block.selectsG541 = true;
   return 0;
+}
+
+double gTenths(const mbrt_word& word) {
+  return roundHalfAway(numeric(word.value) * 10.0);
+}
+
+/// The G codes that set one field of the modal state and cannot alarm, and
+/// G00-G03 also cancel a canned cycle. G66 and G67 are not among them: they
+/// take the block in callInsteadOfBlock.
+bool setsOneField(double tenths) {
+  if (!(tenths >= 0.0 && tenths <= 9999.0)) {
+    return false; // applyGCodes raises the alarm
+  }
+  switch (static_cast<int>(tenths)) {
+    case 0: // G00-G03
+    case 10:
+    case 20:
+    case 30:
+    case 170: // G17-G19
+    case 180:
+    case 190:
+    case 900: // G90, G91
+    case 910:
+    case 930: // G93-G95
+    case 940:
+    case 950:
+    case 610: // G61-G64
+    case 620:
+    case 630:
+    case 640:
+    case 980: // G98, G99
+    case 990:
+    case 150: // G15, G40, G97: the one state mbc keeps
+    case 400:
+    case 970:
+      return true;
+    default:
+      return false;
+  }
 }
 
 /// One G code into `next`; codes of one group overwrite each other, so the
@@ -213,10 +258,17 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (block.gCodes == GCodes::None) {
     return 0; // most blocks: no modal state to copy
   }
-  if (block.gCodes == GCodes::MotionOnly && ctx.modal.cycle == 0) {
-    // G00-G03 cannot alarm and change nothing else without a canned cycle
-    // to cancel: no copy of the modal state to commit or drop.
-    ctx.modal.motion = block.lastMotion;
+  if (block.gCodes == GCodes::OneField &&
+      !(block.hasMotionCode && ctx.modal.cycle != 0)) {
+    // Nothing to commit or drop: no copy of the modal state.
+    for (int i = 0; i < block.oneFieldCount; ++i) {
+      const int tenths = block.oneField[i];
+      if (tenths <= 30) {
+        ctx.modal.motion = tenths / 10; // most of them, cheaper than the call
+      } else {
+        applyGCode(ctx, ctx.modal, tenths, block);
+      }
+    }
     return 0;
   }
   ModalState next = ctx.modal;
@@ -224,7 +276,7 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (words[i].letter != 'G') {
       continue;
     }
-    const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
+    const double tenths = gTenths(words[i]);
     if (tenths < 0.0 || tenths > 9999.0) {
       return raise(ctx, AlarmId::ImproperGCode,
                    fmt::format("G{}", numeric(words[i].value)));
@@ -436,11 +488,14 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
       (letter == 'P' ? block.hasP : block.hasL) = true;
       (letter == 'P' ? block.p : block.l) = value;
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
-      const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
-      const bool motion =
-          tenths == 0.0 || tenths == 10.0 || tenths == 20.0 || tenths == 30.0;
-      block.gCodes = motion ? GCodes::MotionOnly : GCodes::Other;
-      block.lastMotion = motion ? static_cast<int>(tenths) / 10 : 0;
+      const double tenths = gTenths(words[i]);
+      if (!setsOneField(tenths) || block.oneFieldCount == kMaxOneFieldCodes) {
+        block.gCodes = GCodes::Other;
+        continue;
+      }
+      block.gCodes = GCodes::OneField;
+      block.oneField[block.oneFieldCount++] = static_cast<int>(tenths);
+      block.hasMotionCode = block.hasMotionCode || tenths <= 30.0;
     }
   }
 }
