@@ -262,9 +262,6 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
 
 mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                            mbrt_flow* flow) {
-  if (!ctx.profile.codeCalls && ctx.modalCalls.empty()) {
-    return 0; // nothing can call: most runs, every block
-  }
   std::vector<Wanted> wanted;
   if (ctx.profile.codeCalls && !insideCodeCall(ctx)) {
     wantCodeSubprograms(ctx, codes, wanted);

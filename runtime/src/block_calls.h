@@ -28,6 +28,7 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
 
 /// After a block executed: M, T, S, B code subprograms and G66 after a
 /// move. A block asks for one transfer at most: a second one alarms.
+/// Only with code calls in the profile or a modal call in force.
 mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                            mbrt_flow* flow);
 

@@ -109,9 +109,6 @@ void sendData(mbrt_ctx& ctx, const std::string& data) {
 
 void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                   const mbrt_flow& flow) {
-  if (ctx.gcodeSink.fn == nullptr) {
-    return;
-  }
   const bool dropTransfer = transfers(words, count);
   const bool exact = hasOtherMeanings(words, count);
   const auto [callLetter, callValue] = ctx.callingCode;

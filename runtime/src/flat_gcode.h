@@ -9,7 +9,7 @@
 namespace mbc::rt {
 
 /// An executed block, less the words that called a program (M98 P L, M99
-/// P, the M/T/S/B code of a code call) and G67.
+/// P, the M/T/S/B code of a code call) and G67. Only with a G-code sink.
 void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                   const mbrt_flow& flow);
 

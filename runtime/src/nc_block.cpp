@@ -553,8 +553,13 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   block.codes.moved = block.motion.axisMask != 0 && block.frames.code == 0;
   // A block whose calls alarm still moved: it goes to the flattened program.
-  const mbrt_status status = callAfterBlock(ctx, block.codes, flow);
-  flattenBlock(ctx, words, count, *flow);
+  // Most runs neither call codes nor flatten: no calls to say so.
+  const mbrt_status status = ctx.profile.codeCalls || !ctx.modalCalls.empty()
+                                 ? callAfterBlock(ctx, block.codes, flow)
+                                 : 0;
+  if (ctx.gcodeSink.fn != nullptr) {
+    flattenBlock(ctx, words, count, *flow);
+  }
   return status;
 }
 
@@ -567,7 +572,9 @@ using namespace mbc::rt;
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow) {
   *flow = mbrt_flow{};
-  mbrt_trace_words(ctx, "", words, count);
+  if (ctx->traceSink.fn != nullptr) {
+    mbrt_trace_words(ctx, "", words, count);
+  }
   const mbrt_status status = executeBlock(*ctx, words, count, flow);
   if (status != 0) {
     *flow = mbrt_flow{};
