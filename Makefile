@@ -11,7 +11,7 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 all: build
 
 # `make bench` adds its contenders: LinuxCNC's rs274 and valgrind.
-BENCH_PACKAGES := linuxcnc-uspace valgrind
+BENCH_PACKAGES := linuxcnc-uspace valgrind libbenchmark-dev
 
 deps:
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(DEB_PACKAGES)"
@@ -53,7 +53,10 @@ test: build
 # Not part of `make test`: timings need a quiet machine (bench/README.md).
 bench: build
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(BENCH_PACKAGES)"
-	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --out bench/RESULTS.md
+	cmake -S . -B $(BUILD_DIR) -DMBC_MICRO_BENCH=ON
+	cmake --build $(BUILD_DIR) -j$(JOBS) --target mbc_micro
+	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --micro $(BUILD_DIR)/bench/mbc_micro \
+	  --out bench/RESULTS.md
 
 check-format:
 	clang-format --dry-run -Werror $$(git ls-files '*.cpp' '*.h')

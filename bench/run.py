@@ -5,6 +5,7 @@ Every number is measured in one session on one machine: compare the
 ratios, not the absolute times, across machines.
 """
 import argparse
+import json
 import os
 import platform
 import re
@@ -193,6 +194,23 @@ def startup(mbc, runs, work):
     return rows
 
 
+def micro(exe, runs):
+    """Median ns per operation of each Google Benchmark in bench/micro."""
+    output = subprocess.run(
+        [exe, f"--benchmark_repetitions={runs}",
+         "--benchmark_report_aggregates_only=true",
+         "--benchmark_format=json"],
+        check=True, capture_output=True, text=True).stdout
+    return {b["run_name"]: b["cpu_time"]
+            for b in json.loads(output)["benchmarks"]
+            if b.get("aggregate_name") == "median"}
+
+
+def micro_table(medians):
+    return ["| operation | ns |", "|---|---|",
+            *(f"| {name} | {ns:.1f} |" for name, ns in medians.items())]
+
+
 def ms(value):
     return f"{value:.1f}"
 
@@ -279,6 +297,7 @@ def main():
     parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--rs274-runs", type=int, default=3)
     parser.add_argument("--compile-timeout", type=float, default=60.0)
+    parser.add_argument("--micro", help="bench/micro's mbc_micro, when built")
     parser.add_argument("--out", help="also write the report here")
     args = parser.parse_args()
     mbc = str(Path(args.mbc).resolve())
@@ -310,6 +329,7 @@ def main():
                 modes[name] = output_modes(mbc, workload, args.runs, work)
         compiles = compile_scaling(mbc, work, args.compile_timeout)
         small = startup(mbc, args.runs, work)
+        operations = micro(args.micro, args.runs) if args.micro else {}
     report = "\n".join([
         "# mbc benchmarks", "",
         f"Machine: {machine_text()}.", "",
@@ -339,7 +359,16 @@ def main():
         "## Start-up for a small macro", "",
         "examples/bolt_circle.nc, whole process, median of"
         f" {args.runs}.", "",
-        *startup_table(small), ""])
+        *startup_table(small), "",
+        "## Runtime operations", "",
+        "In-process CPU time of one operation of the runtime that every"
+        " engine calls (bench/micro, Google Benchmark), median of"
+        f" {args.runs} repetitions: an NC block with a straight move, the"
+        " same into a motion sink, a half-circle arc, a block without"
+        " motion, the start of a statement, a common variable access and"
+        " functions of the language.", "",
+        *(micro_table(operations) if operations
+          else ["bench/micro was not built (MBC_MICRO_BENCH)."]), ""])
     print(report)
     if args.out:
         Path(args.out).write_text(report)
