@@ -110,8 +110,12 @@ void FunctionEmitter::emitBlock(ir::BlockId b) {
       llvm::Type* type = inst.type == ir::Type::Bool ? abi_.i1 : abi_.f64;
       values_[id] = b_.CreatePHI(type, static_cast<unsigned>(inst.ops.size()));
     } else if (ir::opInfo(inst.op).flags & ir::Terminator) {
+      flushAlarms();
       emitTerminator(inst);
     } else {
+      if (!isInlineValue(inst)) {
+        flushAlarms();
+      }
       emitInst(id);
     }
   }
@@ -190,30 +194,6 @@ void FunctionEmitter::raise(int alarmId, const char* detail) {
                           : llvm::ConstantPointerNull::get(abi_.ptr);
   leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise),
                       {ctx_, llvm::ConstantInt::get(abi_.i32, alarmId), text}));
-}
-
-void FunctionEmitter::alarmIf(llvm::Value* cond, int alarmId) {
-  branchOff(cond,
-            sharedExit(Rt::mbrt_raise,
-                       {llvm::ConstantInt::get(abi_.i32, alarmId),
-                        llvm::ConstantPointerNull::get(abi_.ptr)},
-                       alarmId),
-            true);
-}
-
-llvm::BasicBlock*
-FunctionEmitter::sharedExit(Rt f, std::vector<llvm::Value*> args, int key) {
-  llvm::BasicBlock*& block = sharedExits_[{f, key}];
-  if (block == nullptr) {
-    const llvm::IRBuilderBase::InsertPointGuard guard(b_);
-    block = newBlock("fail");
-    b_.SetInsertPoint(block);
-    // Shared by many lines: the function's first line in debug info.
-    at(firstLine_);
-    args.insert(args.begin(), ctx_);
-    leave(b_.CreateCall(abi_.fn(f), args));
-  }
-  return block;
 }
 
 void FunctionEmitter::leaveStopped(int endKind) {

@@ -24,6 +24,10 @@ bool isFixedCommon(std::int64_t n) {
 
 } // namespace
 
+bool isDirectVariable(std::int64_t n) {
+  return isLocal(n) || isFixedCommon(n);
+}
+
 llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
   switch (inst.op) {
     case ir::Op::LdVar:
@@ -75,8 +79,7 @@ void FunctionEmitter::emitBegin(const ir::Inst& inst) {
                                     llvm::ConstantInt::get(abi_.i64, 1));
   b_.CreateStore(count, blockCount_);
   llvm::Value* max = b_.CreateLoad(abi_.i64, blockMax_);
-  branchOff(b_.CreateICmpUGT(count, max),
-            sharedExit(Rt::mbrt_block_limit, {}, 0), true);
+  alarmIf(b_.CreateICmpUGT(count, max), kBlockLimit);
 }
 
 llvm::Value* FunctionEmitter::localSlot(llvm::Value* index) {

@@ -168,11 +168,31 @@ llvm::Value* FunctionEmitter::emitCompare(const ir::Inst& inst) {
   }
 }
 
+bool isInlineBuiltin(Builtin f) {
+  switch (f) {
+    case Builtin::Abs:
+    case Builtin::Round:
+    case Builtin::Fix:
+    case Builtin::Fup:
+    case Builtin::Sqrt:
+    case Builtin::Adp:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // The rounding functions, ABS and SQRT inline (exact IEEE operations, as in
 // evalBuiltin); the trigonometric and other functions through the runtime.
 llvm::Value* FunctionEmitter::emitFn(const ir::Inst& inst) {
   auto f = static_cast<Builtin>(inst.attr);
   llvm::Value* x = numOperand(inst, 0);
+  if (!isInlineBuiltin(f)) {
+    llvm::Value* y = inst.ops.size() > 1 ? numOperand(inst, 1) : constant(0);
+    return callStatusOut(
+        Rt::mbrt_builtin,
+        {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr), x, y});
+  }
   switch (f) {
     case Builtin::Abs:
       return b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, x);
@@ -188,14 +208,8 @@ llvm::Value* FunctionEmitter::emitFn(const ir::Inst& inst) {
       alarmIf(b_.CreateFCmpOLT(x, constant(0)),
               alarm(AlarmId::ArgumentOutOfRange));
       return b_.CreateUnaryIntrinsic(llvm::Intrinsic::sqrt, x);
-    case Builtin::Adp:
+    default: // ADP of a value that is not a variable
       return x;
-    default: {
-      llvm::Value* y = inst.ops.size() > 1 ? numOperand(inst, 1) : constant(0);
-      return callStatusOut(
-          Rt::mbrt_builtin,
-          {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr), x, y});
-    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include "codegen/debug_info.h"
 #include "codegen/emit_module.h"
 #include "ir/ir.h"
+#include <mbc/arith.h>
 
 #include <llvm/IR/IRBuilder.h>
 
@@ -24,6 +25,14 @@ namespace mbc::codegen::detail {
 /// What mbc.resume answers besides 0 (go on), MBRT_STOP and alarms.
 inline constexpr int kResumeSeq = -2;   // M99 P from a subprogram: flow.seq
 inline constexpr int kResumeLeave = -3; // M99: the program returns (leave set)
+
+/// The key of the block-limit check among alarm ids (emit_alarms.cpp).
+inline constexpr int kBlockLimit = -1;
+
+/// #n is a load or store in the context: a local or a fixed common.
+bool isDirectVariable(std::int64_t n);
+/// The builtin is computed inline: it calls nothing and writes nothing.
+bool isInlineBuiltin(Builtin f);
 
 /// What every function emitter of a module shares.
 struct ModuleState {
@@ -84,8 +93,18 @@ private:
   void leave(llvm::Value* status);
   void leaveStopped(int endKind);
   void raise(int alarmId, const char* detail);
-  /// Leaves with alarm `alarmId` when `cond` holds (the unlikely way).
-  void alarmIf(llvm::Value* cond, int alarmId);
+
+  // Alarm checks (emit_alarms.cpp).
+  /// Emitted without a check of its own between others: no call, no store,
+  /// no branch.
+  bool isInlineValue(const ir::Inst& inst) const;
+  /// Leaves with alarm `key` (an alarm id or kBlockLimit) when `cond` holds,
+  /// at the next flushAlarms().
+  void alarmIf(llvm::Value* cond, int key);
+  /// One branch for the checks gathered since the last flush.
+  void flushAlarms();
+  llvm::BasicBlock* failBlock(int key);
+  llvm::BasicBlock* anyFailBlock();
   /// The function's one block that calls `f(ctx, args...)` and leaves with
   /// its status: alarm sites share it, so that a big program does not get
   /// a block and an exit edge per check (LLVM's time grows with both).
@@ -172,6 +191,9 @@ private:
   llvm::Value* blockCount_ = nullptr;
   llvm::Value* blockMax_ = nullptr;
   std::map<std::pair<Rt, int>, llvm::BasicBlock*> sharedExits_;
+  llvm::Value* pendingFail_ = nullptr; // i1: a gathered check holds
+  llvm::Value* pendingKey_ = nullptr;  // i32: the key of the first that does
+  llvm::PHINode* failKey_ = nullptr;   // in anyFailBlock()
   llvm::Value* file_ = nullptr;
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;

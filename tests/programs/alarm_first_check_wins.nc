@@ -1,0 +1,10 @@
+%
+O1000 (THE FIRST CHECK OF A STATEMENT THAT FAILS GIVES THE ALARM)
+#1 = #100 * #100 * #100 * #100
+#1 = #1 * #1 * #1 * #1 * #1 * #1 * #1
+#2 = 0
+DPRNT[BEFORE]
+#101 = SQRT[[#1 * #1] / #2 - 1]
+DPRNT[AFTER]
+M30
+%

@@ -1,0 +1,8 @@
+%
+O1000 (THE EXECUTION LIMIT COMES BEFORE THE CHECKS OF THE BLOCK IT STOPS)
+#1 = #100 * #100 * #100 * #100
+#1 = #1 * #1 * #1 * #1 * #1 * #1 * #1
+#2 = 0
+#101 = SQRT[[#1 * #1] / #2 - 1]
+M30
+%
