@@ -68,38 +68,93 @@ void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
 
 // What an NC block or a call asks for next. A call's flow is NEXT, with
 // has_seq for M99 P; an NC block's goes to mbc.resume, which makes the M98
-// call, finishes the run or prepares this program's return.
+// call, finishes the run or prepares this program's return. Only NEXT has
+// an edge of its own: M99 P and leaving go to blocks the function's
+// resumes share, so that an NC block costs LLVM no blocks of its own.
 void FunctionEmitter::emitResume(const ir::Inst& inst) {
   llvm::Value* flow = values_[inst.ops[0]];
+  llvm::BasicBlock* here = b_.GetInsertBlock();
+  ir::BlockId next = inst.targets[0];
   if (fn_.insts[inst.ops[0]].op == ir::Op::CallMacro) {
-    llvm::BasicBlock* plain =
-        splitIf(b_.CreateICmpNE(b_.CreateExtractValue(flow, kFlowHasSeq),
-                                llvm::ConstantInt::get(abi_.i32, 0)),
-                false);
-    jumpToSeq(inst, b_.CreateExtractValue(flow, kFlowSeq));
-    b_.SetInsertPoint(plain);
-    jump(inst.targets[0]);
+    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateExtractValue(flow, kFlowHasSeq),
+                                    llvm::ConstantInt::get(abi_.i32, 0)),
+                    seqBlock(inst), blocks_[next]);
+    incoming_[next].push_back({here, current_});
     return;
   }
-  b_.CreateStore(flow, flowSlot_);
+  storeFlow(flow);
   llvm::Value* r = b_.CreateCall(m_.resume, {ctx_, flowSlot_, leave_});
-  llvm::BasicBlock* next = newBlock("next");
+  llvm::BasicBlock* left = leftBlock();
+  resumeStatus_->addIncoming(r, here);
+  llvm::SwitchInst* sw = b_.CreateSwitch(r, left, 2);
+  sw->addCase(llvm::ConstantInt::get(abi_.i32, 0), blocks_[next]);
+  incoming_[next].push_back({here, current_});
+  sw->addCase(llvm::ConstantInt::get(abi_.i32, kResumeSeq), seqBlock(inst));
+}
+
+// The flow an NC block gave is still in its slot unless something wrote
+// memory since it was read.
+void FunctionEmitter::storeFlow(llvm::Value* flow) {
+  auto* load = llvm::dyn_cast<llvm::LoadInst>(flow);
+  bool fresh = load != nullptr && load->getPointerOperand() == flowSlot_ &&
+               load->getParent() == b_.GetInsertBlock();
+  for (llvm::Instruction* i = load; fresh && i != nullptr;
+       i = i->getNextNode()) {
+    fresh = !i->mayWriteToMemory();
+  }
+  if (!fresh) {
+    b_.CreateStore(flow, flowSlot_);
+  } else if (load->use_empty()) {
+    load->eraseFromParent();
+  }
+}
+
+// Where a callee's M99 P comes back: the landing (or the PS0128 that
+// stands for an empty table) is the same for every resume of the function
+// and gets one block; a resume with its own case table gets its own.
+llvm::BasicBlock* FunctionEmitter::seqBlock(const ir::Inst& inst) {
+  bool toLanding = inst.cases.empty() && inst.targets.size() == 2;
+  bool shared =
+      inst.cases.empty() && (!toLanding || !blockHasPhis(inst.targets[1]));
+  llvm::BasicBlock*& block =
+      sharedSeq_[toLanding ? static_cast<std::int64_t>(inst.targets[1]) : -1];
+  if (shared && block != nullptr) {
+    return block;
+  }
+  const llvm::IRBuilderBase::InsertPointGuard guard(b_);
   llvm::BasicBlock* seq = newBlock("m99p");
-  llvm::BasicBlock* ret = newBlock("m99");
-  llvm::BasicBlock* other = newBlock("stop");
-  llvm::SwitchInst* sw = b_.CreateSwitch(r, other, 3);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, 0), next);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, kResumeSeq), seq);
-  sw->addCase(llvm::ConstantInt::get(abi_.i32, kResumeLeave), ret);
-  b_.SetInsertPoint(next);
-  jump(inst.targets[0]);
   b_.SetInsertPoint(seq);
+  if (shared) {
+    at(firstLine_);
+  }
   jumpToSeq(inst, b_.CreateLoad(abi_.f64, b_.CreateStructGEP(
                                               abi_.flow, flowSlot_, kFlowSeq)));
-  b_.SetInsertPoint(ret);
-  leave(llvm::ConstantInt::get(abi_.i32, 0));
-  b_.SetInsertPoint(other);
-  leave(r);
+  if (shared) {
+    block = seq;
+  }
+  return seq;
+}
+
+bool FunctionEmitter::blockHasPhis(ir::BlockId b) const {
+  const std::vector<ir::ValueId>& insts = fn_.blocks[b].insts;
+  return !insts.empty() && fn_.insts[insts.front()].op == ir::Op::Phi;
+}
+
+// M99 (return 0: mbc.resume set `leave`), the end of the run or an alarm.
+llvm::BasicBlock* FunctionEmitter::leftBlock() {
+  if (resumeStatus_ != nullptr) {
+    return resumeStatus_->getParent();
+  }
+  const llvm::IRBuilderBase::InsertPointGuard guard(b_);
+  llvm::BasicBlock* block = newBlock("left");
+  b_.SetInsertPoint(block);
+  at(firstLine_);
+  resumeStatus_ = b_.CreatePHI(abi_.i32, 2, "resumed");
+  leave(b_.CreateSelect(
+      b_.CreateICmpEQ(resumeStatus_,
+                      llvm::ConstantInt::get(abi_.i32, kResumeLeave)),
+      llvm::ConstantInt::get(abi_.i32, 0), resumeStatus_));
+  return block;
 }
 
 } // namespace mbc::codegen::detail

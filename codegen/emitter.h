@@ -79,6 +79,10 @@ private:
 
   // Transfers by sequence number (emit_transfers.cpp).
   void emitResume(const ir::Inst& inst);
+  void storeFlow(llvm::Value* flow);
+  llvm::BasicBlock* seqBlock(const ir::Inst& inst);
+  llvm::BasicBlock* leftBlock();
+  bool blockHasPhis(ir::BlockId b) const;
   void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
   void emitSwitch(const ir::Inst& inst);
   /// Switches on round(number) in 1..99999: cases[i] go to
@@ -191,9 +195,11 @@ private:
   llvm::Value* blockCount_ = nullptr;
   llvm::Value* blockMax_ = nullptr;
   std::map<std::pair<Rt, int>, llvm::BasicBlock*> sharedExits_;
-  llvm::Value* pendingFail_ = nullptr; // i1: a gathered check holds
-  llvm::Value* pendingKey_ = nullptr;  // i32: the key of the first that does
-  llvm::PHINode* failKey_ = nullptr;   // in anyFailBlock()
+  llvm::Value* pendingFail_ = nullptr;    // i1: a gathered check holds
+  llvm::Value* pendingKey_ = nullptr;     // i32: the key of the first that does
+  llvm::PHINode* failKey_ = nullptr;      // in anyFailBlock()
+  llvm::PHINode* resumeStatus_ = nullptr; // in leftBlock()
+  std::map<std::int64_t, llvm::BasicBlock*> sharedSeq_; // by landing, or -1
   llvm::Value* file_ = nullptr;
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;
