@@ -1,4 +1,5 @@
-// The standard LLVM optimisation pipeline at -O0 ... -O3.
+// The LLVM optimisation pipeline at -O0 ... -O3: none at -O0, a short list
+// of function passes at -O1, LLVM's standard pipelines above.
 #pragma once
 
 #include <llvm/IR/Module.h>
@@ -6,7 +7,7 @@
 
 namespace mbc::codegen {
 
-/// Runs the default per-module pipeline for `level` (0..3) tuned for `tm`.
+/// Runs the pipeline for `level` (0..3) tuned for `tm`.
 void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level);
 
 /// The code generator's optimisation level for `level` (0..3), or None
