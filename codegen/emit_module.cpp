@@ -243,6 +243,15 @@ void emitEntryPoints(ModuleState& m, llvm::GlobalVariable* programs) {
 
 } // namespace detail
 
+bool hasUnoptimizedBody(const ir::Module& module) {
+  for (const ir::Function& f : module.functions) {
+    if (f.insts.size() > detail::kOptimizedSizeLimit) {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string entryPointName(int number) {
   return fmt::format("mbc_O{}", number);
 }
@@ -255,16 +264,25 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
   if (options.debugInfo) {
     m.debug = std::make_unique<DebugInfo>(*out, module);
   }
+  bool inParts = !options.bodiesHere.empty();
   for (const ir::Function& f : module.functions) {
-    auto* body =
-        llvm::Function::Create(m.abi.body, llvm::GlobalValue::InternalLinkage,
-                               "mbc.body." + f.name, *out);
+    auto* body = llvm::Function::Create(
+        m.abi.body,
+        inParts ? llvm::GlobalValue::ExternalLinkage
+                : llvm::GlobalValue::InternalLinkage,
+        (inParts ? options.tableName + ".body." : "mbc.body.") + f.name, *out);
+    if (inParts) {
+      body->setVisibility(llvm::GlobalValue::HiddenVisibility);
+    }
     body->addFnAttr(llvm::Attribute::NoUnwind);
     m.bodies.push_back(body);
   }
   m.dispatch = detail::emitDispatch(m);
   m.resume = detail::emitResume(m);
   for (std::size_t i = 0; i < module.functions.size(); ++i) {
+    if (inParts && options.bodiesHere[i] == 0) {
+      continue;
+    }
     detail::FunctionEmitter(m, module.functions[i], m.bodies[i]).emit();
     // LLVM's loop and value passes grow faster than linearly on one huge
     // function (a long part program: thousands of NC blocks that M99 P
@@ -275,9 +293,11 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
       m.bodies[i]->addFnAttr(llvm::Attribute::NoInline);
     }
   }
-  llvm::GlobalVariable* programs = detail::emitTable(m);
-  if (options.entryPoints) {
-    detail::emitEntryPoints(m, programs);
+  if (options.home) {
+    llvm::GlobalVariable* programs = detail::emitTable(m);
+    if (options.entryPoints) {
+      detail::emitEntryPoints(m, programs);
+    }
   }
   if (m.debug) {
     m.debug->finalize();

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mbc::codegen {
 
@@ -25,11 +26,22 @@ struct EmitOptions {
   bool aotMain = false;
   /// DWARF that maps the code to the .nc lines of its IR (`-g`).
   bool debugInfo = false;
+  /// One part of a module compiled in parts (object_file.cpp): when not
+  /// empty, only the programs whose flag is set get their body here, the
+  /// others are declared. Bodies are then hidden symbols named after the
+  /// table, so that the parts link to each other and to nothing else.
+  std::vector<char> bodiesHere;
+  /// The part with the table, the entry points and main.
+  bool home = true;
 };
 
 std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
                                          llvm::LLVMContext& context,
                                          const EmitOptions& options);
+
+/// A program is compiled as at -O0 (see emit_module.cpp): its code
+/// generator level must be None (optimize.h).
+bool hasUnoptimizedBody(const ir::Module& module);
 
 /// The C name of a numbered program's entry point ("mbc_O1000").
 std::string entryPointName(int number);

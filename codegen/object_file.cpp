@@ -2,6 +2,7 @@
 #include "codegen/object_file.h"
 
 #include "codegen/abi.h"
+#include "codegen/link_objects.h"
 #include "codegen/native_target.h"
 #include "codegen/optimize.h"
 #include "codegen/verify.h"
@@ -16,7 +17,11 @@
 #include <llvm/Target/TargetMachine.h>
 #include <llvm/Target/TargetOptions.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <numeric>
+#include <thread>
 
 namespace mbc::codegen {
 
@@ -80,45 +85,131 @@ bool emitTo(llvm::Module& m, llvm::TargetMachine& tm, FileKind kind,
   return true;
 }
 
-} // namespace
-
-bool writeCompiled(const ir::Module& module, const ObjectOptions& options,
-                   FileKind kind, const std::string& path, std::string& error) {
+// The emitted part of `module` (all of it unless `emit` selects) into `out`.
+bool compileModule(const ir::Module& module, const ObjectOptions& options,
+                   const EmitOptions& emit, FileKind kind,
+                   llvm::raw_pwrite_stream& out, std::string& error) {
   std::unique_ptr<llvm::TargetMachine> tm = hostTarget(options, error);
   if (!tm) {
     return false;
   }
   auto context = makeContext();
-  std::unique_ptr<llvm::Module> m = emitModule(module, *context, options.emit);
+  std::unique_ptr<llvm::Module> m = emitModule(module, *context, emit);
   m->setDataLayout(tm->createDataLayout());
   m->setTargetTriple(tm->getTargetTriple().str());
   if (!verifyEmitted(*m, error)) {
     return false;
   }
   optimize(*m, *tm, options.optLevel);
-  tm->setOptLevel(codeGenLevel(options.optLevel, *m));
+  // Decided for the whole module, so that every part is compiled alike.
+  tm->setOptLevel(hasUnoptimizedBody(module)
+                      ? llvm::CodeGenOpt::None
+                      : codeGenLevel(options.optLevel, *m));
+  return emitTo(*m, *tm, kind, out, error);
+}
+
+bool writeFile(const std::string& path, std::string& error,
+               const std::function<bool(llvm::raw_pwrite_stream&)>& write) {
+  std::error_code ec;
+  llvm::raw_fd_ostream out(path, ec, llvm::sys::fs::OF_None);
+  if (ec) {
+    error = "cannot write '" + path + "': " + ec.message();
+    return false;
+  }
+  if (!write(out)) {
+    return false;
+  }
+  out.close();
+  if (out.has_error()) {
+    error = "cannot write '" + path + "': " + out.error().message();
+    out.clear_error();
+    return false;
+  }
+  return true;
+}
+
+/// IR instructions from which an object is compiled in two parts at once:
+/// below, a thread and `ld -r` cost more than they save.
+constexpr std::size_t kPartsThreshold = 20000;
+
+bool worthParts(const ir::Module& module) {
+  std::size_t size = 0;
+  for (const ir::Function& f : module.functions) {
+    size += f.insts.size();
+  }
+  return size >= kPartsThreshold && module.functions.size() > 1 &&
+         std::thread::hardware_concurrency() > 1;
+}
+
+// Two parts of about the same size, the biggest programs first.
+std::vector<char> firstPart(const ir::Module& module) {
+  std::vector<std::size_t> order(module.functions.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+    return module.functions[a].insts.size() > module.functions[b].insts.size();
+  });
+  std::vector<char> first(order.size(), 0);
+  std::size_t sizes[2] = {0, 0};
+  for (std::size_t i : order) {
+    int part = sizes[0] <= sizes[1] ? 0 : 1;
+    first[i] = static_cast<char>(part == 0);
+    sizes[part] += module.functions[i].insts.size();
+  }
+  return first;
+}
+
+// LLVM's time is spent per function, and the two halves of a module
+// compile in their own contexts on two cores; `ld -r` makes them one
+// object again.
+bool compileInParts(const ir::Module& module, const ObjectOptions& options,
+                    const std::string& path, std::string& error) {
+  initializeNativeTarget();
+  std::vector<EmitOptions> emits(2, options.emit);
+  emits[0].bodiesHere = firstPart(module);
+  emits[1].bodiesHere = emits[0].bodiesHere;
+  for (char& here : emits[1].bodiesHere) {
+    here = static_cast<char>(here == 0);
+  }
+  emits[1].home = false;
+  std::vector<std::string> files = {path + ".0", path + ".1"};
+  std::string errors[2];
+  bool ok[2] = {false, false};
+  auto compilePart = [&](int i) {
+    ok[i] = writeFile(files[i], errors[i], [&](llvm::raw_pwrite_stream& out) {
+      return compileModule(module, options, emits[i], FileKind::Object, out,
+                           errors[i]);
+    });
+  };
+  std::thread other(compilePart, 1);
+  compilePart(0);
+  other.join();
+  bool linked = ok[0] && ok[1] && linkRelocatable(files, path, error);
+  if (!ok[0] || !ok[1]) {
+    error = errors[ok[0] ? 1 : 0];
+  }
+  for (const std::string& f : files) {
+    std::remove(f.c_str());
+  }
+  return linked;
+}
+
+} // namespace
+
+bool writeCompiled(const ir::Module& module, const ObjectOptions& options,
+                   FileKind kind, const std::string& path, std::string& error) {
+  auto compile = [&](llvm::raw_pwrite_stream& out) {
+    return compileModule(module, options, options.emit, kind, out, error);
+  };
   if (path == "-") {
-    llvm::raw_fd_ostream& out = llvm::outs();
-    return emitTo(*m, *tm, kind, out, error);
+    return compile(llvm::outs());
   }
   std::string tmp = path + ".tmp";
-  std::error_code ec;
-  {
-    llvm::raw_fd_ostream out(tmp, ec, llvm::sys::fs::OF_None);
-    if (ec || !emitTo(*m, *tm, kind, out, error)) {
-      if (ec) {
-        error = "cannot write '" + tmp + "': " + ec.message();
-      }
-      std::remove(tmp.c_str());
-      return false;
-    }
-    out.close();
-    if (out.has_error()) {
-      error = "cannot write '" + tmp + "': " + out.error().message();
-      out.clear_error();
-      std::remove(tmp.c_str());
-      return false;
-    }
+  // Without a linker to combine the parts, in one piece.
+  bool written = kind == FileKind::Object && worthParts(module) &&
+                 compileInParts(module, options, tmp, error);
+  if (!written && !writeFile(tmp, error, compile)) {
+    std::remove(tmp.c_str());
+    return false;
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     error = "cannot replace '" + path + "'";
