@@ -59,6 +59,7 @@ void FunctionEmitter::emit() {
   // Reverse post-order emits every definition before its uses; blocks
   // that cannot be reached keep no code.
   ir::Cfg cfg = ir::buildCfg(fn_);
+  findStaleFile(cfg);
   for (ir::BlockId b : cfg.rpo) {
     emitBlock(b);
   }
@@ -100,8 +101,53 @@ void FunctionEmitter::emitPrologue() {
   retSeqSlot_ = b_.CreateAlloca(abi_.f64, nullptr, "retseq");
 }
 
+namespace {
+
+bool staleAfter(ir::Op op, bool stale) {
+  switch (op) {
+    case ir::Op::Begin:
+      return false;
+    case ir::Op::CallMacro:
+    case ir::Op::Resume: // of an NC block: mbc.resume may make its call
+      return true;
+    default:
+      return stale;
+  }
+}
+
+} // namespace
+
+// Where the block state's file may not be this program's: on entry (it is
+// the caller's) and after anything that may run another program, which
+// only mbrt_run_call does (G65, and M98 or a code's call in mbc.resume).
+// Nothing else writes it, so a begin stores the file only there; a
+// forward may-dataflow over the IR's CFG.
+void FunctionEmitter::findStaleFile(const ir::Cfg& cfg) {
+  fileStaleIn_.assign(fn_.blocks.size(), 0);
+  if (cfg.rpo.empty()) {
+    return;
+  }
+  fileStaleIn_[cfg.rpo[0]] = 1;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (ir::BlockId b : cfg.rpo) {
+      bool stale = fileStaleIn_[b] != 0;
+      for (ir::ValueId id : fn_.blocks[b].insts) {
+        stale = staleAfter(fn_.insts[id].op, stale);
+      }
+      for (ir::BlockId s : cfg.succs[b]) {
+        if (stale && fileStaleIn_[s] == 0) {
+          fileStaleIn_[s] = 1;
+          changed = true;
+        }
+      }
+    }
+  }
+}
+
 void FunctionEmitter::emitBlock(ir::BlockId b) {
   current_ = b;
+  fileStale_ = fileStaleIn_[b] != 0;
   b_.SetInsertPoint(blocks_[b]);
   for (ir::ValueId id : fn_.blocks[b].insts) {
     const ir::Inst& inst = fn_.insts[id];
@@ -117,6 +163,7 @@ void FunctionEmitter::emitBlock(ir::BlockId b) {
         flushAlarms();
       }
       emitInst(id);
+      fileStale_ = staleAfter(inst.op, fileStale_);
     }
   }
 }

@@ -73,7 +73,9 @@ llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
 // mbrt_begin_block inline: where alarms and motion are reported, and the
 // execution limit.
 void FunctionEmitter::emitBegin(const ir::Inst& inst) {
-  b_.CreateStore(file_, blockFile_);
+  if (fileStale_) {
+    b_.CreateStore(file_, blockFile_);
+  }
   b_.CreateStore(llvm::ConstantInt::get(abi_.i32, inst.attr), blockLine_);
   llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, blockCount_),
                                     llvm::ConstantInt::get(abi_.i64, 1));

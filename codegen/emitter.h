@@ -9,6 +9,7 @@
 #include "codegen/abi.h"
 #include "codegen/debug_info.h"
 #include "codegen/emit_module.h"
+#include "ir/cfg.h"
 #include "ir/ir.h"
 #include <mbc/arith.h>
 
@@ -71,6 +72,7 @@ private:
   /// The line an IR instruction stands for.
   std::uint32_t lineOf(const ir::Inst& inst) const;
   void emitPrologue();
+  void findStaleFile(const ir::Cfg& cfg);
   void emitBlock(ir::BlockId b);
   void fillPhis();
   void emitTerminator(const ir::Inst& inst);
@@ -201,6 +203,8 @@ private:
   llvm::PHINode* resumeStatus_ = nullptr; // in leftBlock()
   std::map<std::int64_t, llvm::BasicBlock*> sharedSeq_; // by landing, or -1
   llvm::Value* file_ = nullptr;
+  std::vector<char> fileStaleIn_; // by IR block: see findStaleFile
+  bool fileStale_ = true;
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;
   llvm::Value* outSlot_ = nullptr;
