@@ -157,10 +157,14 @@ void FunctionEmitter::emitBlock(ir::BlockId b) {
       values_[id] = b_.CreatePHI(type, static_cast<unsigned>(inst.ops.size()));
     } else if (ir::opInfo(inst.op).flags & ir::Terminator) {
       flushAlarms();
+      flushAdp();
       emitTerminator(inst);
     } else {
       if (!isInlineValue(inst)) {
         flushAlarms();
+      }
+      if (!keepsAdpPending(inst)) {
+        flushAdp();
       }
       emitInst(id);
       fileStale_ = staleAfter(inst.op, fileStale_);

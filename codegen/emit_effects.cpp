@@ -93,10 +93,29 @@ llvm::Value* FunctionEmitter::localSlot(llvm::Value* index) {
 
 // A program's own write of a local clears its ADP flag.
 void FunctionEmitter::clearAdp(llvm::Value* index) {
+  clearAdpBits(b_.CreateShl(llvm::ConstantInt::get(abi_.i64, 1), index));
+}
+
+void FunctionEmitter::clearAdpBits(llvm::Value* bits) {
   llvm::Value* slot = b_.CreateStructGEP(abi_.level, level_, kLevelAdpMask);
-  llvm::Value* bit = b_.CreateShl(llvm::ConstantInt::get(abi_.i64, 1), index);
-  b_.CreateStore(b_.CreateAnd(b_.CreateLoad(abi_.i64, slot), b_.CreateNot(bit)),
-                 slot);
+  b_.CreateStore(
+      b_.CreateAnd(b_.CreateLoad(abi_.i64, slot), b_.CreateNot(bits)), slot);
+}
+
+// Only ADP[] (the runtime) and the programs a call runs read the flags, so
+// the writes of locals by number clear theirs together before the next
+// instruction that may: one read-modify-write for a run of statements.
+void FunctionEmitter::flushAdp() {
+  if (pendingAdp_ != 0) {
+    clearAdpBits(llvm::ConstantInt::get(abi_.i64, pendingAdp_));
+    pendingAdp_ = 0;
+  }
+}
+
+bool FunctionEmitter::keepsAdpPending(const ir::Inst& inst) const {
+  return inst.op == ir::Op::Begin ||
+         (inst.op == ir::Op::StVar && isDirectVariable(inst.attr)) ||
+         isInlineValue(inst);
 }
 
 llvm::Value* FunctionEmitter::commonSlot(llvm::Value* number) {
@@ -126,9 +145,9 @@ llvm::Value* FunctionEmitter::emitLoadVar(int number) {
 void FunctionEmitter::emitStoreVar(const ir::Inst& inst, int number,
                                    llvm::Value* value) {
   if (isLocal(number)) {
-    llvm::Value* index = llvm::ConstantInt::get(abi_.i64, number - 1);
-    b_.CreateStore(value, localSlot(index));
-    clearAdp(index);
+    b_.CreateStore(value,
+                   localSlot(llvm::ConstantInt::get(abi_.i64, number - 1)));
+    pendingAdp_ |= std::uint64_t{1} << (number - 1);
     return;
   }
   if (isFixedCommon(number)) {

@@ -161,6 +161,11 @@ private:
                          llvm::Value* value);
   llvm::Value* localSlot(llvm::Value* index);
   void clearAdp(llvm::Value* index);
+  void clearAdpBits(llvm::Value* bits);
+  /// Clears the ADP flags of the locals written since the last flush.
+  void flushAdp();
+  /// `inst` neither reads the ADP flags nor runs code that may.
+  bool keepsAdpPending(const ir::Inst& inst) const;
   llvm::Value* commonSlot(llvm::Value* number);
   llvm::Value* emitNc(const ir::Inst& inst);
   llvm::Value* emitCallMacro(const ir::Inst& inst);
@@ -205,6 +210,7 @@ private:
   llvm::Value* file_ = nullptr;
   std::vector<char> fileStaleIn_; // by IR block: see findStaleFile
   bool fileStale_ = true;
+  std::uint64_t pendingAdp_ = 0; // bit n: #(n+1) written, flag not cleared
   llvm::Value* name_ = nullptr;
   llvm::Value* flowSlot_ = nullptr;
   llvm::Value* outSlot_ = nullptr;
