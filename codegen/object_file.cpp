@@ -130,7 +130,7 @@ bool writeFile(const std::string& path, std::string& error,
 
 /// IR instructions from which an object is compiled in two parts at once:
 /// below, a thread and `ld -r` cost more than they save.
-constexpr std::size_t kPartsThreshold = 20000;
+constexpr std::size_t kPartsThreshold = 4000;
 
 bool worthParts(const ir::Module& module) {
   std::size_t size = 0;
