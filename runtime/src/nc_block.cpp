@@ -509,7 +509,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   block.frames.axes = &block.motion;
   block.frames.words = words;
   block.frames.count = count;
-  // G66, G66.1 and G67 are no motion codes, and nothing else calls
+  // G66, G66.1 and G67 make a block GCodes::Other, and nothing else calls
   // instead of a block unless a modal call or a code call is set up.
   const bool mayCall = block.gCodes == GCodes::Other ||
                        !ctx.modalCalls.empty() || ctx.profile.codeCalls;
