@@ -6,7 +6,8 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps install-missing build demo test bench check-format format clean
+.PHONY: all deps install-missing build demo test bench difftest check-format \
+        format clean
 
 all: build
 
@@ -57,6 +58,14 @@ bench: build
 	cmake --build $(BUILD_DIR) -j$(JOBS) --target mbc_micro
 	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --micro $(BUILD_DIR)/bench/mbc_micro \
 	  --out bench/RESULTS.md
+
+# Random programs under every engine against the interpreter
+# (tools/difftest.py); a difference is reduced and written to $(BUILD_DIR).
+N ?= 1000
+SEED ?= 1
+difftest: build
+	python3 tools/difftest.py --mbc $(BUILD_DIR)/mbc -n $(N) --seed $(SEED) \
+	  --jobs $(JOBS) --out $(BUILD_DIR)
 
 check-format:
 	clang-format --dry-run -Werror $$(git ls-files '*.cpp' '*.h')
