@@ -6,7 +6,7 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps install-missing build demo test bench difftest check-format \
+.PHONY: all deps install-missing build demo test test-asan bench difftest check-format \
         format clean
 
 all: build
@@ -58,6 +58,15 @@ bench: build
 	cmake --build $(BUILD_DIR) -j$(JOBS) --target mbc_micro
 	python3 bench/run.py --mbc $(BUILD_DIR)/mbc --micro $(BUILD_DIR)/bench/mbc_micro \
 	  --out bench/RESULTS.md
+
+# The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer;
+# any report fails its test.
+ASAN_BUILD_DIR ?= build-asan
+test-asan: deps
+	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DMBC_SANITIZE=address,undefined
+	cmake --build $(ASAN_BUILD_DIR) -j$(JOBS)
+	cd $(ASAN_BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
 
 # Random programs under every engine against the interpreter
 # (tools/difftest.py); a difference is reduced and written to $(BUILD_DIR).

@@ -152,6 +152,10 @@ int buildCommand(const Options& options) {
                                      MBC_RUNTIME_LIB,
                                      "-lfmt",
                                      "-lm"};
+    if (*MBC_SANITIZE != '\0') {
+      // A runtime built with sanitizers links only with their libraries.
+      link.push_back(std::string("-fsanitize=") + MBC_SANITIZE);
+    }
     int linked = runProcess(link);
     if (linked != 0) {
       std::remove(tmp.c_str());
