@@ -1,6 +1,8 @@
 // The diagnostic registry and the clang-style renderer.
 #include "frontend/diagnostics.h"
 
+#include "frontend/utf8.h"
+
 #include <algorithm>
 #include <array>
 #include <tuple>
@@ -30,28 +32,6 @@ const char* severityText(Severity s) {
       return "note";
   }
   return "error";
-}
-
-bool isContinuation(unsigned char c) {
-  return (c & 0xC0) == 0x80;
-}
-
-// Length of the valid UTF-8 sequence at line[i], or 0.
-std::size_t utf8Length(std::string_view line, std::size_t i) {
-  auto b = static_cast<unsigned char>(line[i]);
-  std::size_t n = b >= 0xF0 && b <= 0xF4 ? 4
-                  : b >= 0xE0            ? 3
-                  : b >= 0xC2            ? 2
-                                         : 0;
-  if (n == 0 || i + n > line.size()) {
-    return 0;
-  }
-  for (std::size_t k = 1; k < n; ++k) {
-    if (!isContinuation(static_cast<unsigned char>(line[i + k]))) {
-      return 0;
-    }
-  }
-  return n;
 }
 
 // The source line as shown under a diagnostic: control bytes and invalid

@@ -1,6 +1,8 @@
 // The Macro B lexer (see lexer.h for the rules it follows).
 #include "frontend/lexer.h"
 
+#include "frontend/utf8.h"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -298,11 +300,7 @@ Token Lexer::lexSpecial(std::uint32_t begin) {
       break;
   }
   Token t = make(Tok::Invalid, begin);
-  std::string shown =
-      (c >= 0x20 && c < 0x7f)
-          ? std::string(1, c)
-          : fmt::format("\\x{:02x}", static_cast<unsigned char>(c));
-  diags_.report(DiagKind::InvalidCharacter, t.range, shown);
+  diags_.report(DiagKind::InvalidCharacter, t.range, shownCharacter(t.text));
   return t;
 }
 
@@ -326,7 +324,7 @@ Token Lexer::lexNonAscii(std::uint32_t begin) {
     ++pos_;
   }
   Token t = make(Tok::Invalid, begin);
-  diags_.report(DiagKind::InvalidCharacter, t.range, t.text);
+  diags_.report(DiagKind::InvalidCharacter, t.range, shownCharacter(t.text));
   return t;
 }
 

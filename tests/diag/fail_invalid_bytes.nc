@@ -1,0 +1,5 @@
+O0001
+#1 = 2 (BYTES OF A BINARY FILE FOLLOW)
+#2 = #1 ¹€÷ 2
+G01 X1. Ã© F100
+M30
