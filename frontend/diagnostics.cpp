@@ -154,6 +154,7 @@ Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
   Severity sev = severityOf(kind);
   if (sev == Severity::Error) {
     if (errors_ >= kErrorLimit) {
+      lastStored_ = -1;
       // Past the limit nothing is stored; callers may still attach fix-its.
       overflow_ = Diagnostic{kind, sev, range, {}, {}, {}};
       return overflow_;
@@ -163,6 +164,7 @@ Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
     ++warnings_;
   }
   diags_.push_back(Diagnostic{kind, sev, range, std::move(message), {}, {}});
+  lastStored_ = static_cast<int>(diags_.size()) - 1;
   if (errors_ == kErrorLimit && sev == Severity::Error) {
     diags_.push_back(Diagnostic{DiagKind::TooManyErrors,
                                 Severity::Error,

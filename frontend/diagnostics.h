@@ -46,16 +46,21 @@ public:
                fmt::vformat(formatOf(kind), fmt::make_format_args(args...)));
   }
 
-  /// Attaches a note to the last diagnostic.
+  /// Attaches a note to the last diagnostic reported.
   template <typename... Args>
   void note(DiagKind kind, SourceRange range, const Args&... args) {
-    Diagnostic n{
-        kind,  Severity::Note,
-        range, fmt::vformat(formatOf(kind), fmt::make_format_args(args...)),
-        {},    {}};
-    if (!diags_.empty()) {
-      diags_.back().notes.push_back(std::move(n));
+    // Not diags_.back(): "too many errors" follows the last error that
+    // fits, and an error past the limit is not stored at all.
+    if (lastStored_ < 0) {
+      return;
     }
+    diags_[static_cast<std::size_t>(lastStored_)].notes.push_back(
+        Diagnostic{kind,
+                   Severity::Note,
+                   range,
+                   fmt::vformat(formatOf(kind), fmt::make_format_args(args...)),
+                   {},
+                   {}});
   }
 
   int errorCount() const { return errors_; }
@@ -76,6 +81,7 @@ private:
   const SourceManager& sources_;
   std::vector<Diagnostic> diags_;
   Diagnostic overflow_{};
+  int lastStored_ = -1; // diags_ index of the last report, -1 if dropped
   int errors_ = 0;
   int warnings_ = 0;
 };

@@ -24,11 +24,14 @@ void matchLoops(Program& p, DiagnosticEngine& diags) {
       if (open.size() == 3) {
         diags.report(DiagKind::LoopNesting, s.range, 4);
       }
-      for (const Loop& l : open) {
-        if (l.id == s.loopId) {
+      // The innermost open loop of that number is the one to name, and
+      // stopping there keeps thousands of nested WHILEs linear.
+      for (auto l = open.rbegin(); l != open.rend(); ++l) {
+        if (l->id == s.loopId) {
           diags.report(DiagKind::LoopIdReused, s.range, s.loopId);
-          diags.note(DiagKind::DoOpenedHere, p.blocks[l.block].stmt.range,
-                     l.id);
+          diags.note(DiagKind::DoOpenedHere, p.blocks[l->block].stmt.range,
+                     l->id);
+          break;
         }
       }
       open.push_back({s.loopId, i});

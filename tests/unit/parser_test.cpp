@@ -171,5 +171,28 @@ TEST(Sema, WritesToReadOnlyVariables) {
   EXPECT_EQ(p->diags.errorCount(), 3) << p->text;
 }
 
+// Past the error limit nothing is stored, notes included: before, every
+// "DO1 is already open" note of thousands of nested loops piled up on the
+// "too many errors" diagnostic (and each WHILE named every open DO1).
+TEST(Sema, NestedLoopErrorsStopAtTheLimitWithoutStrayNotes) {
+  std::string src = "O1\n";
+  for (int i = 0; i < 80; ++i) {
+    src += "WHILE [1 EQ 1] DO1\n";
+  }
+  for (int i = 0; i < 80; ++i) {
+    src += "END1\n";
+  }
+  auto p = parse(src + "M30\n");
+  const std::vector<Diagnostic>& diags = p->diags.diagnostics();
+  ASSERT_FALSE(diags.empty());
+  EXPECT_EQ(diags.back().kind, DiagKind::TooManyErrors);
+  EXPECT_TRUE(diags.back().notes.empty()) << p->text;
+  for (const Diagnostic& d : diags) {
+    if (d.kind == DiagKind::LoopIdReused) {
+      EXPECT_EQ(d.notes.size(), 1u) << p->text;
+    }
+  }
+}
+
 } // namespace
 } // namespace mbc
