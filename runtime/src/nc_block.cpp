@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "block_calls.h"
 #include "canned_cycles.h"
 #include "flat_gcode.h"
@@ -59,7 +61,6 @@ struct Block {
   // Under GCodes::OneField, the codes in tenths, in block order.
   std::array<int, kMaxOneFieldCodes> oneField{};
   int oneFieldCount = 0;
-  bool hasMotionCode = false; // G00-G03, which cancel a canned cycle
   MotionWords motion;
   bool hasP = false;
   bool hasL = false;
@@ -258,8 +259,14 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (block.gCodes == GCodes::None) {
     return 0; // most blocks: no modal state to copy
   }
-  if (block.gCodes == GCodes::OneField &&
-      !(block.hasMotionCode && ctx.modal.cycle != 0)) {
+  // G00-G03 also cancel a canned cycle: that takes the copy below.
+  const auto cancelsCycle = [&] {
+    return ctx.modal.cycle != 0 &&
+           std::any_of(block.oneField.begin(),
+                       block.oneField.begin() + block.oneFieldCount,
+                       [](int tenths) { return tenths <= 30; });
+  };
+  if (block.gCodes == GCodes::OneField && !cancelsCycle()) {
     // Nothing to commit or drop: no copy of the modal state.
     for (int i = 0; i < block.oneFieldCount; ++i) {
       const int tenths = block.oneField[i];
@@ -495,7 +502,6 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
       }
       block.gCodes = GCodes::OneField;
       block.oneField[block.oneFieldCount++] = static_cast<int>(tenths);
-      block.hasMotionCode = block.hasMotionCode || tenths <= 30.0;
     }
   }
 }
