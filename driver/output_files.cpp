@@ -36,10 +36,10 @@ void OutputFile::writeText(void* self, const char* data, std::size_t size) {
   std::fwrite(data, 1, size, out->file_);
 }
 
-void OutputFile::writeMotion(void* self, const mbrt_motion* motion) {
-  auto* out = static_cast<OutputFile*>(self);
-  std::string line = toolpathJsonLine(*motion);
-  std::fwrite(line.data(), 1, line.size(), out->file_);
+std::size_t OutputFile::write(const mbrt_motion& motion) {
+  const std::string line = toolpathJsonLine(motion);
+  std::fwrite(line.data(), 1, line.size(), file_);
+  return line.size();
 }
 
 bool replaceFile(const std::string& path, const std::string& content) {

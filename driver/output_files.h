@@ -25,7 +25,8 @@ public:
   std::FILE* get() const { return file_; }
 
   static void writeText(void* self, const char* data, std::size_t size);
-  static void writeMotion(void* self, const mbrt_motion* motion);
+  /// Writes one JSONL toolpath record; returns its bytes.
+  std::size_t write(const mbrt_motion& motion);
 
 private:
   std::FILE* file_ = nullptr;

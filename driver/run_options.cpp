@@ -42,6 +42,26 @@ bool parseArg(std::string_view text, std::pair<char, double>& out) {
   return c >= 'A' && c <= 'Z' && parseNumber(text.substr(2), out.second);
 }
 
+// "4096", "64K", "512M", "2G" (1024-based)
+bool parseSize(std::string_view text, std::uint64_t& out) {
+  double unit = 1;
+  if (!text.empty()) {
+    const char suffix = text.back();
+    const std::string_view units = "KMGT";
+    const auto pos = units.find(static_cast<char>(suffix & ~0x20));
+    if (pos != std::string_view::npos) {
+      unit = static_cast<double>(std::uint64_t{1} << (10 * (pos + 1)));
+      text.remove_suffix(1);
+    }
+  }
+  double n = 0;
+  if (!parseNumber(text, n) || n * unit < 1 || n * unit > 0x1p63) {
+    return false;
+  }
+  out = static_cast<std::uint64_t>(n * unit);
+  return true;
+}
+
 bool setValue(RunOptions& o, const std::string& name, const std::string& value,
               std::string& error) {
   if (name == "--main") {
@@ -74,6 +94,13 @@ bool setValue(RunOptions& o, const std::string& name, const std::string& value,
       return false;
     }
     o.args.push_back(p);
+  } else if (name == "--max-output") {
+    if (!parseSize(value, o.maxOutput)) {
+      error = fmt::format("--max-output expects a size in bytes such as "
+                          "4096, 64K, 512M or 2G, got '{}'",
+                          value);
+      return false;
+    }
   } else {
     double n = 0;
     if (!parseNumber(value, n) || n < 1) {
@@ -89,7 +116,7 @@ bool takesValue(const std::string& name) {
   return name == "--main" || name == "--toolpath" || name == "--dprnt" ||
          name == "--gcode" || name == "--svg" || name == "--state" ||
          name == "--vars-out" || name == "--machine" || name == "--set" ||
-         name == "--arg" || name == "--max-blocks";
+         name == "--arg" || name == "--max-blocks" || name == "--max-output";
 }
 
 } // namespace
@@ -130,7 +157,8 @@ std::string runOptionsUsage(int indent) {
          "[--main O1234] [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n" +
          pad + "[--gcode PATH] [--svg PATH] [--state PATH]\n" + pad +
          "[--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n" + pad +
-         "[--max-blocks N] [--block-skip[=N]] [--trace] [--time]\n";
+         "[--max-blocks N] [--max-output SIZE] [--block-skip[=N]]\n" + pad +
+         "[--trace] [--time]\n";
 }
 
 } // namespace mbc::driver

@@ -25,6 +25,7 @@ struct RunOptions {
   std::vector<std::pair<double, double>> presets; // --set '#N=V'
   std::vector<std::pair<char, double>> args;      // --arg A=1.5
   std::uint64_t maxBlocks = 0;
+  std::uint64_t maxOutput = 0; // bytes; 0: the runtime's default
   unsigned blockSkipMask = 0;
   bool trace = false;
 };

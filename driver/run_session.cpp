@@ -98,18 +98,22 @@ bool openGcode(const RunOptions& o, mbrt_ctx* ctx, OutputFile& gcode) {
 }
 
 /// Where the motions go: the toolpath file and the drawing, either or both.
+/// Both count against the output limit: the drawing grows in memory.
 struct MotionOutputs {
+  mbrt_ctx* ctx = nullptr;
   OutputFile toolpath;
   std::optional<SvgWriter> svg;
 
   static void write(void* self, const mbrt_motion* motion) {
     auto* outputs = static_cast<MotionOutputs*>(self);
+    std::size_t bytes = 0;
     if (outputs->toolpath.get() != nullptr) {
-      OutputFile::writeMotion(&outputs->toolpath, motion);
+      bytes += outputs->toolpath.write(*motion);
     }
     if (outputs->svg) {
-      SvgWriter::addMotion(&*outputs->svg, motion);
+      bytes += outputs->svg->add(*motion);
     }
+    mbrt_count_output(outputs->ctx, bytes);
   }
 };
 
@@ -123,6 +127,7 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
   if (!o.svgPath.empty()) {
     motions.svg.emplace();
   }
+  motions.ctx = ctx;
   if (!o.toolpathPath.empty() || motions.svg) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
   }
@@ -177,9 +182,8 @@ int runSession(const RunOptions& o, const std::string& mainName,
   if (o.trace) {
     mbrt_set_trace_sink(ctx.get(), &writeStderr, nullptr);
   }
-  if (o.maxBlocks) {
-    mbrt_set_max_blocks(ctx.get(), o.maxBlocks);
-  }
+  mbrt_set_max_blocks(ctx.get(), o.maxBlocks);
+  mbrt_set_max_output(ctx.get(), o.maxOutput);
   mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
   mbrt_start(ctx.get(), mainName.c_str());
   std::string stateError;

@@ -128,7 +128,13 @@ void SvgWriter::moveTo(bool rapid, double x, double y) {
   include(x, y);
 }
 
-void SvgWriter::add(const mbrt_motion& m) {
+std::size_t SvgWriter::add(const mbrt_motion& m) {
+  const std::size_t before = rapids_.size() + feeds_.size();
+  draw(m);
+  return rapids_.size() + feeds_.size() - before;
+}
+
+void SvgWriter::draw(const mbrt_motion& m) {
   const int x = axisNamed(m, 'X');
   const int y = axisNamed(m, 'Y');
   if (x < 0 || y < 0) {

@@ -13,11 +13,14 @@ public:
   /// The motion sink: records one move.
   static void addMotion(void* self, const mbrt_motion* motion);
 
+  /// Records one move; returns the bytes the drawing grew by.
+  std::size_t add(const mbrt_motion& m);
+
   /// The whole drawing; it fits the moves with a margin.
   std::string document() const;
 
 private:
-  void add(const mbrt_motion& m);
+  void draw(const mbrt_motion& m);
   void include(double x, double y);
   void moveTo(bool rapid, double x, double y);
 

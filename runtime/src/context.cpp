@@ -98,6 +98,8 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.file = nullptr;
   ctx.block.line = 0;
   ctx.block.blocks = 0;
+  ctx.block.max_blocks = ctx.maxBlocks;
+  ctx.output = OutputBudget{0, ctx.output.limit};
   ctx.moves = 0;
   ctx.stats = RunStats{};
   ctx.optionalStops = 0;
@@ -157,7 +159,7 @@ void sendMessage(mbrt_ctx& ctx, std::string_view text) {
       location(ctx.block.file != nullptr ? ctx.block.file : "",
                ctx.block.line) +
       fmt::format("message: {}\n", text);
-  ctx.messageSink.fn(ctx.messageSink.user, line.data(), line.size());
+  sendText(ctx, ctx.messageSink, line);
 }
 
 int parseProgramNumber(const char* name) {
@@ -241,7 +243,8 @@ void mbrt_set_gcode_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
 }
 
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
-  ctx->block.max_blocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
+  ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
+  ctx->block.max_blocks = ctx->maxBlocks;
 }
 
 double mbrt_parameter(const mbrt_ctx* ctx, int number) {
@@ -282,9 +285,12 @@ mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
 }
 
 mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
+  if (ctx->output.passed) {
+    return raiseOutputLimit(*ctx);
+  }
   return raise(*ctx, AlarmId::ExecutionLimit,
                fmt::format("more than {} blocks executed (--max-blocks)",
-                           ctx->block.max_blocks));
+                           ctx->maxBlocks));
 }
 
 int mbrt_tracing(const mbrt_ctx* ctx) {
@@ -299,7 +305,7 @@ void mbrt_trace(mbrt_ctx* ctx, const char* text) {
       location(ctx->block.file != nullptr ? ctx->block.file : "",
                ctx->block.line) +
       (text != nullptr ? text : "") + "\n";
-  ctx->traceSink.fn(ctx->traceSink.user, line.data(), line.size());
+  sendText(*ctx, ctx->traceSink, line);
 }
 
 void mbrt_finish(mbrt_ctx* ctx, int end_kind) {

@@ -26,6 +26,7 @@ namespace mbc::rt {
 inline constexpr int kLocalCount = 33;
 inline constexpr int kCommonEnd = 1000; // commons are #100..#999
 inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
+inline constexpr std::uint64_t kDefaultMaxOutput = std::uint64_t{1} << 30;
 
 /// Positions and offsets are kept as whole counts of the least input
 /// increment, so that output is exact and G91 moves do not drift.
@@ -145,6 +146,18 @@ struct BlockCall {
   bool everyBlock = false;
 };
 
+/// The bytes a run has written against its limit (--max-output). Passing
+/// the limit lowers the block limit to the blocks counted so far, so the
+/// next block stops the run (compiled code already checks that limit at
+/// every block); the alarm then names the block that passed it.
+struct OutputBudget {
+  std::uint64_t written = 0;
+  std::uint64_t limit = kDefaultMaxOutput;
+  bool passed = false;
+  const char* file = nullptr; // the block that passed the limit
+  int line = 0;
+};
+
 template <class Fn> struct Sink {
   Fn fn = nullptr;
   void* user = nullptr;
@@ -204,6 +217,8 @@ struct mbrt_ctx {
 
   // The run: the block being executed and the count of blocks.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
+  std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
+  mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
   std::uint64_t moves = 0;
   mbc::rt::RunStats stats;
@@ -255,6 +270,17 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail = {},
 
 /// Sends "file:line: message: text\n" to the message sink.
 void sendMessage(mbrt_ctx& ctx, std::string_view text);
+
+/// Counts bytes written by the run against its output limit (--max-output).
+void countOutput(mbrt_ctx& ctx, std::uint64_t bytes);
+
+/// Sends text to one of the context's text sinks, if set, and counts it.
+void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
+              std::string_view text);
+
+/// The alarm of a run whose output passed its limit, at the block that
+/// passed it.
+mbrt_status raiseOutputLimit(mbrt_ctx& ctx);
 
 /// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
 int parseProgramNumber(const char* name);

@@ -12,6 +12,7 @@ void bufferMotion(void* user, const mbrt_motion* motion) {
   // after the call returns.
   copy.program = ctx->bufferedNames.insert(motion->program).first->c_str();
   ctx->motionBuffer.push_back(copy);
+  mbc::rt::countOutput(*ctx, sizeof copy);
 }
 
 } // namespace

@@ -96,7 +96,7 @@ bool transfers(const mbrt_word* words, size_t count) {
 }
 
 void send(mbrt_ctx& ctx, const std::string& line) {
-  ctx.gcodeSink.fn(ctx.gcodeSink.user, line.data(), line.size());
+  sendText(ctx, ctx.gcodeSink, line);
 }
 
 /// G10 writes in G90; a run in G91 goes back to it after.

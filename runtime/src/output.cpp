@@ -13,7 +13,7 @@ namespace {
 
 void sendLine(mbrt_ctx& ctx) {
   ctx.scratch += '\n';
-  ctx.printSink.fn(ctx.printSink.user, ctx.scratch.data(), ctx.scratch.size());
+  sendText(ctx, ctx.printSink, ctx.scratch);
 }
 
 } // namespace

@@ -75,5 +75,59 @@ TEST(RuntimeOutput, PopenAndPclosWriteNothing) {
   EXPECT_EQ(m.printed(), "");
 }
 
+TEST(RuntimeOutputLimit, TheBlockAfterTheLimitStopsWithTheWritersLocation) {
+  Machine m;
+  mbrt_set_max_output(m.ctx(), 10);
+  const mbrt_print_item items[] = {text("ABCD")};
+  for (int line = 1; line <= 2; ++line) {
+    ASSERT_EQ(m.block("", line), 0);
+    EXPECT_EQ(mbrt_dprnt(m.ctx(), items, 1), 0);
+  }
+  ASSERT_EQ(m.block("", 3), 0);
+  EXPECT_EQ(mbrt_dprnt(m.ctx(), items, 1), 0); // 15 bytes: past the limit
+  EXPECT_EQ(m.block("", 4), status(AlarmId::OutputLimit));
+  EXPECT_EQ(m.printed(), "ABCD\nABCD\nABCD\n");
+  EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0003: OUTPUT LIMIT REACHED: "
+                        "more than 10 bytes written (--max-output)\n");
+}
+
+TEST(RuntimeOutputLimit, EachRunStartsWithTheWholeBudgetAndItsBlockLimit) {
+  Machine m;
+  mbrt_set_max_output(m.ctx(), 4);
+  mbrt_set_max_blocks(m.ctx(), 3);
+  const mbrt_print_item items[] = {text("ABCD")};
+  ASSERT_EQ(m.block(""), 0);
+  EXPECT_EQ(mbrt_dprnt(m.ctx(), items, 1), 0);
+  EXPECT_EQ(m.block(""), status(AlarmId::OutputLimit));
+  mbrt_start(m.ctx(), "O1000");
+  for (int line = 1; line <= 3; ++line) {
+    ASSERT_EQ(m.block("", line), 0);
+  }
+  EXPECT_EQ(m.block("", 4), status(AlarmId::ExecutionLimit));
+}
+
+TEST(RuntimeOutputLimit, MotionsCountWhatTheSinkReports) {
+  Machine m;
+  mbrt_set_max_output(m.ctx(), 100);
+  mbrt_count_output(m.ctx(), 100);
+  ASSERT_EQ(m.block("G00 X1.", 1), 0);
+  mbrt_count_output(m.ctx(), 1);
+  EXPECT_EQ(m.block("G00 X2.", 2), status(AlarmId::OutputLimit));
+  EXPECT_EQ(m.motions().size(), 1U);
+}
+
+TEST(RuntimeOutputLimit, BufferedMotionsCountTheirSize) {
+  Machine m;
+  mbrt_buffer_motions(m.ctx(), 1);
+  mbrt_set_max_output(m.ctx(), 2 * sizeof(mbrt_motion));
+  ASSERT_EQ(m.block("G00 X1.", 1), 0);
+  ASSERT_EQ(m.block("G00 X2.", 2), 0);
+  ASSERT_EQ(m.block("G00 X3.", 3), 0);
+  EXPECT_EQ(m.block("G00 X4.", 4), status(AlarmId::OutputLimit));
+  size_t count = 0;
+  mbrt_buffered_motions(m.ctx(), &count);
+  EXPECT_EQ(count, 3U);
+}
+
 } // namespace
 } // namespace mbc::test

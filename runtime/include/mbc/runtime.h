@@ -99,6 +99,14 @@ void mbrt_buffer_motions(mbrt_ctx* ctx, int on);
 const mbrt_motion* mbrt_buffered_motions(const mbrt_ctx* ctx, size_t* count);
 /* Blocks a run may execute before alarm MBC0002 (0 = the default limit). */
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
+/* Bytes of output a run may write before alarm MBC0003 (0 = the default,
+ * 1 GiB). Counted: what the runtime sends to the print, message, trace and
+ * flattened-program sinks, and sizeof(mbrt_motion) for each buffered motion;
+ * a motion sink that writes the motions somewhere reports its bytes with
+ * mbrt_count_output. The block whose output passes the limit completes and
+ * the run stops before the next one, with the alarm at that block. */
+void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes);
+void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes);
 
 /* ---- Profile settings engines need --------------------------------------
  */

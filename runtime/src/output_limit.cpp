@@ -1,0 +1,48 @@
+// The output limit (--max-output): the bytes a run writes through its sinks
+// are counted so that a runaway loop stops with MBC0003 instead of filling
+// the disk long before the block limit would stop it.
+#include <fmt/format.h>
+
+#include "context.h"
+
+using namespace mbc::rt;
+
+namespace mbc::rt {
+
+void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
+  OutputBudget& output = ctx.output;
+  output.written += bytes;
+  if (output.written <= output.limit || output.passed) {
+    return;
+  }
+  output.passed = true;
+  output.file = ctx.block.file;
+  output.line = ctx.block.line;
+  ctx.block.max_blocks = ctx.block.blocks;
+}
+
+void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
+              std::string_view text) {
+  if (sink.fn != nullptr) {
+    sink.fn(sink.user, text.data(), text.size());
+    countOutput(ctx, text.size());
+  }
+}
+
+mbrt_status raiseOutputLimit(mbrt_ctx& ctx) {
+  ctx.block.file = ctx.output.file;
+  ctx.block.line = ctx.output.line;
+  return raise(ctx, AlarmId::OutputLimit,
+               fmt::format("more than {} bytes written (--max-output)",
+                           ctx.output.limit));
+}
+
+} // namespace mbc::rt
+
+void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes) {
+  ctx->output.limit = max_bytes != 0 ? max_bytes : kDefaultMaxOutput;
+}
+
+void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes) {
+  countOutput(*ctx, bytes);
+}
