@@ -71,7 +71,9 @@ llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
 }
 
 // mbrt_begin_block inline: where alarms and motion are reported, and the
-// execution limit.
+// execution limit. The limit is loaded atomically at every block: a signal
+// handler or another thread lowers it to stop the run (mbrt_interrupt), and
+// a plain load would be hoisted out of a loop that calls nothing.
 void FunctionEmitter::emitBegin(const ir::Inst& inst) {
   if (fileStale_) {
     b_.CreateStore(file_, blockFile_);
@@ -80,7 +82,9 @@ void FunctionEmitter::emitBegin(const ir::Inst& inst) {
   llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, blockCount_),
                                     llvm::ConstantInt::get(abi_.i64, 1));
   b_.CreateStore(count, blockCount_);
-  llvm::Value* max = b_.CreateLoad(abi_.i64, blockMax_);
+  llvm::LoadInst* max =
+      b_.CreateAlignedLoad(abi_.i64, blockMax_, llvm::Align(8));
+  max->setAtomic(llvm::AtomicOrdering::Monotonic);
   alarmIf(b_.CreateICmpUGT(count, max), kBlockLimit);
 }
 

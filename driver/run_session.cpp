@@ -1,6 +1,7 @@
 // A run and its summary lines (see run_session.h).
 #include "driver/run_session.h"
 
+#include "driver/interrupt_scope.h"
 #include "driver/output_files.h"
 #include "driver/state_file.h"
 #include "driver/svg_writer.h"
@@ -192,6 +193,7 @@ int runSession(const RunOptions& o, const std::string& mainName,
                  o.statePath.c_str(), stateError.c_str());
     return 2;
   }
+  const InterruptScope interrupts(ctx.get());
   mbrt_status st = presetAndPass(o, ctx.get());
   const auto runStart = std::chrono::steady_clock::now();
   if (!st) {
@@ -225,6 +227,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
       text += fmt::format(" {} {:.3f} ms,", phase, ms);
     }
     std::fprintf(stderr, "%s run %.3f ms\n", text.c_str(), runMs);
+  }
+  if (const int sig = InterruptScope::signal()) {
+    return 128 + sig; // as the shell reports a process the signal ended
   }
   return st ? 3 : 0;
 }

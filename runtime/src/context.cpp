@@ -98,7 +98,8 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.file = nullptr;
   ctx.block.line = 0;
   ctx.block.blocks = 0;
-  ctx.block.max_blocks = ctx.maxBlocks;
+  ctx.interrupted = false;
+  setBlockLimit(ctx, ctx.maxBlocks);
   ctx.output = OutputBudget{0, ctx.output.limit};
   ctx.moves = 0;
   ctx.stats = RunStats{};
@@ -242,9 +243,14 @@ void mbrt_set_gcode_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
   ctx->gcodeSink = {fn, user};
 }
 
+void mbrt_interrupt(mbrt_ctx* ctx) {
+  ctx->interrupted = true;
+  setBlockLimit(*ctx, 0);
+}
+
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
   ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
-  ctx->block.max_blocks = ctx->maxBlocks;
+  setBlockLimit(*ctx, ctx->maxBlocks);
 }
 
 double mbrt_parameter(const mbrt_ctx* ctx, int number) {
@@ -278,13 +284,18 @@ void mbrt_reset(mbrt_ctx* ctx) {
 mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
   ctx->block.file = file;
   ctx->block.line = line;
-  if (++ctx->block.blocks > ctx->block.max_blocks) {
+  if (++ctx->block.blocks >
+      std::atomic_ref(ctx->block.max_blocks).load(std::memory_order_relaxed)) {
     return mbrt_block_limit(ctx);
   }
   return 0;
 }
 
 mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
+  if (ctx->interrupted) {
+    return raise(*ctx, AlarmId::Interrupted,
+                 "the run was stopped before this block");
+  }
   if (ctx->output.passed) {
     return raiseOutputLimit(*ctx);
   }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -216,7 +217,10 @@ struct mbrt_ctx {
   std::uint32_t intermediateMask = 0;
 
   // The run: the block being executed and the count of blocks.
+  // A signal handler or another thread lowers block.max_blocks to stop the
+  // run (mbrt_interrupt), so it is read and written atomically.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
+  std::atomic<bool> interrupted{false};
   std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
   mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
@@ -277,6 +281,13 @@ void countOutput(mbrt_ctx& ctx, std::uint64_t bytes);
 /// Sends text to one of the context's text sinks, if set, and counts it.
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
               std::string_view text);
+
+/// Sets the block limit; atomic because mbrt_interrupt may store to it from
+/// a signal handler or another thread.
+inline void setBlockLimit(mbrt_ctx& ctx, std::uint64_t blocks) {
+  std::atomic_ref(ctx.block.max_blocks)
+      .store(blocks, std::memory_order_relaxed);
+}
 
 /// The alarm of a run whose output passed its limit, at the block that
 /// passed it.

@@ -18,7 +18,7 @@ void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
   output.passed = true;
   output.file = ctx.block.file;
   output.line = ctx.block.line;
-  ctx.block.max_blocks = ctx.block.blocks;
+  setBlockLimit(ctx, ctx.block.blocks);
 }
 
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,

@@ -37,6 +37,18 @@ TEST(RuntimeEmbedding, BufferKeepsTheMotionsOfOneRun) {
   EXPECT_EQ(count, 0U);
 }
 
+TEST(RuntimeEmbedding, InterruptStopsTheNextBlockOfThisRunOnly) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 X1.", 1), 0);
+  mbrt_interrupt(m.ctx());
+  EXPECT_EQ(m.block("G00 X2.", 2), status(AlarmId::Interrupted));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm MBC0004: INTERRUPTED: the run was "
+                        "stopped before this block\n");
+  EXPECT_EQ(m.motions().size(), 1U);
+  mbrt_start(m.ctx(), "O1000");
+  EXPECT_EQ(m.block("G00 X2.", 2), 0);
+}
+
 TEST(RuntimeEmbedding, ProgramNamesOutliveTheirCalls) {
   Machine m;
   mbrt_buffer_motions(m.ctx(), 1);

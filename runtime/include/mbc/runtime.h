@@ -107,6 +107,10 @@ void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
  * the run stops before the next one, with the alarm at that block. */
 void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes);
 void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes);
+/* Stops the run before its next block with alarm MBC0004 (INTERRUPTED).
+ * The one call that may come from a signal handler or from another thread
+ * while the run goes on; the next run (mbrt_start) is not interrupted. */
+void mbrt_interrupt(mbrt_ctx* ctx);
 
 /* ---- Profile settings engines need --------------------------------------
  */

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# SIGINT or SIGTERM stops a run before its next block with alarm MBC0004:
+# the exit status is the shell's 128+signal, every toolpath record and DPRNT
+# line written is whole and on disk, and the state file is saved. Under each
+# engine and in an executable of `mbc build`; the loop that calls nothing
+# must stop too (compiled code cannot keep the block limit in a register).
+#   interrupt.sh MBC
+set -u
+mbc=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+fail() { echo "FAIL: $*"; exit 1; }
+cat >writes.nc <<'NC'
+O1000
+G90 G01 F1000
+#1 = 0
+WHILE [1 GT 0] DO1
+#1 = #1 + 1
+X[#1 MOD 100] Y#1
+DPRNT[PASS*#1[90]]
+#500 = #1
+END1
+M30
+NC
+cat >spins.nc <<'NC'
+O1000
+#1 = 0
+WHILE [1 GT 0] DO1
+#1 = #1 + 1
+END1
+M30
+NC
+"$mbc" build writes.nc -o writes.exe || fail "mbc build"
+
+# interrupt NAME SIGNAL COMMAND...: runs COMMAND, sends SIGNAL after half a
+# second, and checks how it ended (at most 10 s later).
+interrupt() {
+  local name=$1 sig=$2
+  shift 2
+  "$@" --max-blocks 1e15 2>"$name.err" &
+  local pid=$!
+  sleep 0.5
+  kill "-$sig" "$pid"
+  local waited=0
+  while kill -0 "$pid" 2>/dev/null; do
+    ((waited++ < 100)) || { kill -9 "$pid"; fail "$name: did not stop"; }
+    sleep 0.1
+  done
+  wait "$pid"
+  status=$?
+  local expected=$((128 + $(kill -l "$sig")))
+  [ "$status" -eq "$expected" ] ||
+    fail "$name: status $status, not $expected: $(cat "$name.err")"
+  grep -q "alarm MBC0004: INTERRUPTED: the run was stopped before this block" \
+    "$name.err" || fail "$name: $(cat "$name.err")"
+}
+
+whole() { # name: the outputs end with whole records, the state is saved
+  local name=$1
+  [ -s "$name.dprnt" ] || fail "$name: no DPRNT output"
+  [ "$(tail -c1 "$name.dprnt" | od -An -c | tr -d ' ')" = '\n' ] ||
+    fail "$name: the DPRNT output ends in a partial line"
+  python3 -c '
+import json, sys
+lines = open(sys.argv[1]).read().split("\n")
+assert lines[-1] == "", "partial last record"
+for line in lines[:-1]:
+    json.loads(line)
+' "$name.jsonl" || fail "$name: the toolpath has a partial record"
+  grep -q '"500": [1-9]' "$name.state" || fail "$name: state $(cat "$name.state")"
+}
+
+for engine in interp ir jit; do
+  for sig in INT TERM; do
+    name=$engine-$sig
+    interrupt "$name" "$sig" "$mbc" run --engine "$engine" writes.nc \
+      --toolpath "$name.jsonl" --dprnt "$name.dprnt" --state "$name.state"
+    whole "$name"
+  done
+  interrupt "$engine-spin" INT "$mbc" run --engine "$engine" -O2 spins.nc
+done
+interrupt aot INT ./writes.exe --toolpath aot.jsonl --dprnt aot.dprnt \
+  --state aot.state
+whole aot
+echo ok
