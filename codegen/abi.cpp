@@ -64,6 +64,8 @@ Abi::Abi(llvm::Module& m)
                                         "mbrt_block_state");
   program = llvm::StructType::create(context, {ptr, i32, ptr}, "mbrt_program");
   table = llvm::StructType::create(context, {ptr, i64}, "mbrt_program_table");
+  ncRun = llvm::StructType::create(context, {ptr, ptr, ptr, ptr, i64},
+                                   "mbrt_nc_run");
   body = llvm::FunctionType::get(i32, {ptr, ptr, ptr}, false);
   using enum Kind;
 #define RT(Name, Result, ...)                                                  \

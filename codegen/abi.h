@@ -1,6 +1,6 @@
 // The C ABI of the runtime as LLVM sees it: the struct types generated code
 // builds or reads (mbrt_word, mbrt_print_item, mbrt_flow, mbrt_level,
-// mbrt_block_state, mbrt_program) and the runtime functions of
+// mbrt_block_state, mbrt_program, mbrt_nc_run) and the runtime functions of
 // runtime_functions.def, declared in one module.
 #pragma once
 
@@ -72,6 +72,7 @@ struct Abi {
   llvm::StructType* blockState;
   llvm::StructType* program;
   llvm::StructType* table;
+  llvm::StructType* ncRun;
   /// mbrt_body_fn: i32 (ptr ctx, ptr user, ptr leave).
   llvm::FunctionType* body;
   std::array<llvm::FunctionCallee, static_cast<std::size_t>(Rt::Count)>

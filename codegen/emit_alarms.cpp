@@ -65,7 +65,7 @@ void FunctionEmitter::flushAlarms() {
     fail = failBlock(static_cast<int>(key->getSExtValue()));
   } else {
     fail = anyFailBlock();
-    failKey_->addIncoming(pendingKey_, b_.GetInsertBlock());
+    failKey_->add(b_, pendingKey_);
   }
   pendingFail_ = nullptr;
   pendingKey_ = nullptr;
@@ -85,22 +85,22 @@ llvm::BasicBlock* FunctionEmitter::failBlock(int key) {
 // For the statements whose checks can fail in more than one way: the key
 // of the first that failed comes in a phi.
 llvm::BasicBlock* FunctionEmitter::anyFailBlock() {
-  if (failKey_ != nullptr) {
-    return failKey_->getParent();
+  if (failKey_) {
+    return failKey_->block();
   }
   const llvm::IRBuilderBase::InsertPointGuard guard(b_);
   llvm::BasicBlock* block = newBlock("fail");
   llvm::BasicBlock* raise = newBlock("raise");
   b_.SetInsertPoint(block);
   at(firstLine_);
-  failKey_ = b_.CreatePHI(abi_.i32, 2, "alarm");
+  failKey_.emplace(b_, entry_, abi_.i32, "alarm", large_);
+  llvm::Value* key = failKey_->value();
   b_.CreateCondBr(
-      b_.CreateICmpEQ(failKey_, llvm::ConstantInt::get(abi_.i32, kBlockLimit)),
+      b_.CreateICmpEQ(key, llvm::ConstantInt::get(abi_.i32, kBlockLimit)),
       failBlock(kBlockLimit), raise);
   b_.SetInsertPoint(raise);
-  leave(b_.CreateCall(
-      abi_.fn(Rt::mbrt_raise),
-      {ctx_, failKey_, llvm::ConstantPointerNull::get(abi_.ptr)}));
+  leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise),
+                      {ctx_, key, llvm::ConstantPointerNull::get(abi_.ptr)}));
   return block;
 }
 

@@ -15,7 +15,28 @@ namespace mbc::codegen::detail {
 
 FunctionEmitter::FunctionEmitter(ModuleState& m, const ir::Function& fn,
                                  llvm::Function* body)
-    : m_(m), abi_(m.abi), fn_(fn), body_(body), b_(m.abi.context) {
+    : m_(m), abi_(m.abi), fn_(fn), body_(body),
+      large_(fn.insts.size() > kOptimizedSizeLimit), b_(m.abi.context) {
+}
+
+Handover::Handover(llvm::IRBuilder<>& b, llvm::BasicBlock* entry,
+                   llvm::Type* type, const char* name, bool inMemory)
+    : block_(b.GetInsertBlock()) {
+  if (inMemory) {
+    slot_ = llvm::IRBuilder<>(entry, entry->begin()).CreateAlloca(type);
+    value_ = b.CreateLoad(type, slot_, name);
+  } else {
+    value_ = b.CreatePHI(type, 2, name);
+  }
+}
+
+void Handover::add(llvm::IRBuilder<>& b, llvm::Value* v) {
+  used_ = true;
+  if (slot_ != nullptr) {
+    b.CreateStore(v, slot_);
+  } else {
+    llvm::cast<llvm::PHINode>(value_)->addIncoming(v, b.GetInsertBlock());
+  }
 }
 
 void FunctionEmitter::at(std::uint32_t line) {
@@ -51,8 +72,8 @@ void FunctionEmitter::emit() {
   }
   exit_ = newBlock("exit");
   b_.SetInsertPoint(exit_);
-  exitStatus_ = b_.CreatePHI(abi_.i32, 4, "status");
-  b_.CreateRet(exitStatus_);
+  exitStatus_.emplace(b_, entry_, abi_.i32, "status", large_);
+  b_.CreateRet(exitStatus_->value());
   b_.SetInsertPoint(entry_);
   emitPrologue();
   b_.CreateBr(blocks_[0]);
@@ -60,11 +81,17 @@ void FunctionEmitter::emit() {
   // that cannot be reached keep no code.
   ir::Cfg cfg = ir::buildCfg(fn_);
   findStaleFile(cfg);
+  findRuns(cfg);
   for (ir::BlockId b : cfg.rpo) {
-    emitBlock(b);
+    if (runOf_[b] == kNoRun) {
+      emitBlock(b);
+    } else if (runs_[runOf_[b]].front() == b) {
+      emitRun(runs_[runOf_[b]]);
+    }
   }
   for (ir::BlockId b = 0; b < fn_.blocks.size(); ++b) {
-    if (!cfg.reachable(b)) {
+    if (!cfg.reachable(b) ||
+        (runOf_[b] != kNoRun && runs_[runOf_[b]].front() != b)) {
       b_.SetInsertPoint(blocks_[b]);
       b_.CreateUnreachable();
     }
@@ -75,7 +102,7 @@ void FunctionEmitter::emit() {
         0, llvm::ConstantInt::get(abi_.i32,
                                   std::max<std::size_t>(1, slot.second)));
   }
-  if (exitStatus_->getNumIncomingValues() == 0) {
+  if (!exitStatus_->used()) {
     exit_->eraseFromParent(); // a function that never leaves (an endless loop)
   }
 }
@@ -228,13 +255,13 @@ llvm::BasicBlock* FunctionEmitter::branchOff(llvm::Value* cond,
 }
 
 void FunctionEmitter::leave(llvm::Value* status) {
-  exitStatus_->addIncoming(status, b_.GetInsertBlock());
+  exitStatus_->add(b_, status);
   b_.CreateBr(exit_);
 }
 
 // Straight to the exit with the status: no block of its own per check.
 void FunctionEmitter::check(llvm::Value* status) {
-  exitStatus_->addIncoming(status, b_.GetInsertBlock());
+  exitStatus_->add(b_, status);
   branchOff(b_.CreateICmpNE(status, llvm::ConstantInt::get(abi_.i32, 0)), exit_,
             true);
 }

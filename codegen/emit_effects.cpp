@@ -274,44 +274,68 @@ llvm::Value* FunctionEmitter::loadFlow() {
 
 // The words of nc (first = 0) or call.macro (first = 2: after P and L): a
 // bare vacant variable drops its word (spec §2.3a), any other value reads
-// vacant as 0. Returns the number of words written to the word buffer.
-llvm::Value* FunctionEmitter::buildWords(const ir::Inst& inst,
-                                         std::size_t first) {
+// vacant as 0. Words that are all constants (the blocks of a posted part
+// program) are one constant array: no stores, and no constant-pool entry per
+// value, which LLVM finds by a linear search.
+FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst,
+                                                   std::size_t first) {
+  /// One word: its fields, and whether a vacant value drops it.
+  struct Word {
+    llvm::Constant* letter;
+    llvm::Constant* kind;
+    llvm::Value* value;
+    bool mayDrop;
+  };
+
   std::size_t skip = inst.cases.size() == inst.ops.size() ? 0 : first;
-  llvm::Value* words = scratch(abi_.word, inst.ops.size());
-  llvm::Value* count = llvm::ConstantInt::get(abi_.i64, 0);
+  std::vector<Word> words;
+  std::vector<llvm::Constant*> fixed;
   for (std::size_t k = first; k < inst.ops.size(); ++k) {
     std::int64_t desc = inst.cases[k - skip];
     ir::WordKind kind = ir::wordKind(desc);
     bool bare = kind == ir::WordKind::Var || kind == ir::WordKind::NegVar;
     llvm::Value* value = values_[inst.ops[k]];
-    int runtimeKind = kind == ir::WordKind::Int   ? MBRT_WORD_INT_LITERAL
-                      : kind == ir::WordKind::Dec ? MBRT_WORD_DEC_LITERAL
-                                                  : MBRT_WORD_VALUE;
     if (!bare) {
       value = numOperand(inst, k);
     } else if (kind == ir::WordKind::NegVar) {
       value = b_.CreateFSub(constant(0), value); // vacant stays NaN
     }
-    llvm::Value* slot = b_.CreateInBoundsGEP(abi_.word, words, count);
-    b_.CreateStore(llvm::ConstantInt::get(abi_.i8, ir::wordLetter(desc)),
+    const Word word{llvm::ConstantInt::get(abi_.i8, ir::wordLetter(desc)),
+                    llvm::ConstantInt::get(abi_.i8, runtimeWordKind(kind)),
+                    value,
+                    bare && fn_.insts[inst.ops[k]].type == ir::Type::VNum};
+    words.push_back(word);
+    auto* c = llvm::dyn_cast<llvm::ConstantFP>(value);
+    if (c != nullptr && !bare) {
+      fixed.push_back(
+          llvm::ConstantStruct::get(abi_.word, {word.letter, word.kind, c}));
+    }
+  }
+  if (fixed.size() == words.size()) {
+    return {m_.constantWords(fixed),
+            llvm::ConstantInt::get(abi_.i64, fixed.size())};
+  }
+  llvm::Value* buffer = scratch(abi_.word, words.size());
+  llvm::Value* count = llvm::ConstantInt::get(abi_.i64, 0);
+  for (const Word& word : words) {
+    llvm::Value* slot = b_.CreateInBoundsGEP(abi_.word, buffer, count);
+    b_.CreateStore(word.letter,
                    b_.CreateStructGEP(abi_.word, slot, kWordLetter));
-    b_.CreateStore(llvm::ConstantInt::get(abi_.i8, runtimeKind),
-                   b_.CreateStructGEP(abi_.word, slot, kWordKind));
-    b_.CreateStore(value, b_.CreateStructGEP(abi_.word, slot, kWordValue));
+    b_.CreateStore(word.kind, b_.CreateStructGEP(abi_.word, slot, kWordKind));
+    b_.CreateStore(word.value, b_.CreateStructGEP(abi_.word, slot, kWordValue));
     llvm::Value* present =
-        bare && fn_.insts[inst.ops[k]].type == ir::Type::VNum
-            ? b_.CreateZExt(b_.CreateNot(isVacant(value)), abi_.i64)
+        word.mayDrop
+            ? b_.CreateZExt(b_.CreateNot(isVacant(word.value)), abi_.i64)
             : llvm::ConstantInt::get(abi_.i64, 1);
     count = b_.CreateAdd(count, present);
   }
-  return count;
+  return {buffer, count};
 }
 
 llvm::Value* FunctionEmitter::emitNc(const ir::Inst& inst) {
-  llvm::Value* count = buildWords(inst, 0);
+  const Words words = buildWords(inst, 0);
   check(b_.CreateCall(abi_.fn(Rt::mbrt_nc_block),
-                      {ctx_, scratch(abi_.word, 0), count, flowSlot_}));
+                      {ctx_, words.data, words.count, flowSlot_}));
   return loadFlow();
 }
 
@@ -320,12 +344,12 @@ llvm::Value* FunctionEmitter::emitNc(const ir::Inst& inst) {
 llvm::Value* FunctionEmitter::emitCallMacro(const ir::Inst& inst) {
   llvm::Value* p = numOperand(inst, 0);
   llvm::Value* l = numOperand(inst, 1);
-  llvm::Value* count = buildWords(inst, 2);
-  llvm::Value* words = scratch(abi_.word, 0);
-  b_.CreateCall(abi_.fn(Rt::mbrt_trace_call), {ctx_, p, l, words, count});
+  const Words words = buildWords(inst, 2);
+  b_.CreateCall(abi_.fn(Rt::mbrt_trace_call),
+                {ctx_, p, l, words.data, words.count});
   check(
       b_.CreateCall(m_.dispatch, {ctx_, p, llvm::ConstantInt::get(abi_.i32, 1),
-                                  words, count, l, flowSlot_}));
+                                  words.data, words.count, l, flowSlot_}));
   return b_.CreateInsertValue(
       loadFlow(), llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_NEXT), kFlowKind);
 }

@@ -13,9 +13,6 @@ namespace mbc::codegen {
 
 namespace detail {
 
-/// IR instructions in a program beyond which its body is not optimised.
-constexpr std::size_t kOptimizedSizeLimit = 3000;
-
 llvm::Constant* ModuleState::cstring(const std::string& text) {
   auto it = strings.find(text);
   if (it != strings.end()) {
@@ -29,6 +26,21 @@ llvm::Constant* ModuleState::cstring(const std::string& text) {
   global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
   global->setAlignment(llvm::Align(1));
   return strings.emplace(text, global).first->second;
+}
+
+llvm::Constant*
+ModuleState::constantWords(const std::vector<llvm::Constant*>& words) {
+  llvm::Constant* init = llvm::ConstantArray::get(
+      llvm::ArrayType::get(abi.word, words.size()), words);
+  auto [it, added] = wordLists.emplace(init, nullptr);
+  if (added) {
+    auto* global = new llvm::GlobalVariable(abi.module, init->getType(), true,
+                                            llvm::GlobalValue::PrivateLinkage,
+                                            init, ".words");
+    global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
+    it->second = global;
+  }
+  return it->second;
 }
 
 namespace {

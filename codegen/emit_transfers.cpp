@@ -85,7 +85,7 @@ void FunctionEmitter::emitResume(const ir::Inst& inst) {
   storeFlow(flow);
   llvm::Value* r = b_.CreateCall(m_.resume, {ctx_, flowSlot_, leave_});
   llvm::BasicBlock* left = leftBlock();
-  resumeStatus_->addIncoming(r, here);
+  resumeStatus_->add(b_, r);
   llvm::SwitchInst* sw = b_.CreateSwitch(r, left, 2);
   sw->addCase(llvm::ConstantInt::get(abi_.i32, 0), blocks_[next]);
   incoming_[next].push_back({here, current_});
@@ -142,18 +142,18 @@ bool FunctionEmitter::blockHasPhis(ir::BlockId b) const {
 
 // M99 (return 0: mbc.resume set `leave`), the end of the run or an alarm.
 llvm::BasicBlock* FunctionEmitter::leftBlock() {
-  if (resumeStatus_ != nullptr) {
-    return resumeStatus_->getParent();
+  if (resumeStatus_) {
+    return resumeStatus_->block();
   }
   const llvm::IRBuilderBase::InsertPointGuard guard(b_);
   llvm::BasicBlock* block = newBlock("left");
   b_.SetInsertPoint(block);
   at(firstLine_);
-  resumeStatus_ = b_.CreatePHI(abi_.i32, 2, "resumed");
+  resumeStatus_.emplace(b_, entry_, abi_.i32, "resumed", large_);
+  llvm::Value* r = resumeStatus_->value();
   leave(b_.CreateSelect(
-      b_.CreateICmpEQ(resumeStatus_,
-                      llvm::ConstantInt::get(abi_.i32, kResumeLeave)),
-      llvm::ConstantInt::get(abi_.i32, 0), resumeStatus_));
+      b_.CreateICmpEQ(r, llvm::ConstantInt::get(abi_.i32, kResumeLeave)),
+      llvm::ConstantInt::get(abi_.i32, 0), r));
   return block;
 }
 

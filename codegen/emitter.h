@@ -12,12 +12,14 @@
 #include "ir/cfg.h"
 #include "ir/ir.h"
 #include <mbc/arith.h>
+#include <mbc/runtime.h>
 
 #include <llvm/IR/IRBuilder.h>
 
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,43 @@ inline constexpr int kResumeLeave = -3; // M99: the program returns (leave set)
 
 /// The key of the block-limit check among alarm ids (emit_alarms.cpp).
 inline constexpr int kBlockLimit = -1;
+
+/// IR instructions in a program beyond which its body is not optimised.
+inline constexpr std::size_t kOptimizedSizeLimit = 3000;
+
+/// A value that many blocks hand to one: a phi, or in a body too large to
+/// optimise a stack slot. LLVM's instruction selection looks each phi input
+/// up by a linear search of the phi's inputs, so a phi fed by every NC block
+/// of a long part program makes code generation quadratic.
+class Handover {
+public:
+  /// The receiving end, with `b` at the start of the receiving block.
+  Handover(llvm::IRBuilder<>& b, llvm::BasicBlock* entry, llvm::Type* type,
+           const char* name, bool inMemory);
+
+  /// The value where it is received.
+  llvm::Value* value() const { return value_; }
+
+  llvm::BasicBlock* block() const { return block_; }
+
+  bool used() const { return used_; }
+
+  /// Hands `v` over from b's insert point, before it branches to block().
+  void add(llvm::IRBuilder<>& b, llvm::Value* v);
+
+private:
+  llvm::BasicBlock* block_;
+  llvm::Value* value_;
+  llvm::AllocaInst* slot_ = nullptr;
+  bool used_ = false;
+};
+
+/// The mbrt_word_kind of a word of the IR.
+inline std::uint8_t runtimeWordKind(ir::WordKind kind) {
+  return kind == ir::WordKind::Int   ? MBRT_WORD_INT_LITERAL
+         : kind == ir::WordKind::Dec ? MBRT_WORD_DEC_LITERAL
+                                     : MBRT_WORD_VALUE;
+}
 
 /// #n is a load or store in the context: a local or a fixed common.
 bool isDirectVariable(std::int64_t n);
@@ -44,6 +83,7 @@ struct ModuleState {
   llvm::Function* dispatch = nullptr;  // mbc.call, see emit_module.cpp
   llvm::Function* resume = nullptr;    // mbc.resume, see emit_module.cpp
   std::map<std::string, llvm::Constant*> strings;
+  std::map<llvm::Constant*, llvm::Constant*> wordLists; // by initializer
   std::unique_ptr<DebugInfo> debug; // with EmitOptions::debugInfo only
 
   ModuleState(const ir::Module& m, llvm::Module& out, const EmitOptions& o)
@@ -51,6 +91,8 @@ struct ModuleState {
 
   /// A NUL-terminated constant string (one global per distinct text).
   llvm::Constant* cstring(const std::string& text);
+  /// A constant array of mbrt_word (one global per distinct list).
+  llvm::Constant* constantWords(const std::vector<llvm::Constant*>& words);
 };
 
 class FunctionEmitter {
@@ -78,6 +120,11 @@ private:
   void emitTerminator(const ir::Inst& inst);
   /// The input `phi` takes from IR block `pred` (nullptr: none).
   llvm::Value* inputFrom(const ir::Inst& phi, ir::BlockId pred) const;
+
+  // Runs of constant NC blocks (emit_runs.cpp).
+  bool isStep(ir::BlockId b) const;
+  void findRuns(const ir::Cfg& cfg);
+  void emitRun(const std::vector<ir::BlockId>& run);
 
   // Transfers by sequence number (emit_transfers.cpp).
   void emitResume(const ir::Inst& inst);
@@ -169,7 +216,14 @@ private:
   llvm::Value* commonSlot(llvm::Value* number);
   llvm::Value* emitNc(const ir::Inst& inst);
   llvm::Value* emitCallMacro(const ir::Inst& inst);
-  llvm::Value* buildWords(const ir::Inst& inst, std::size_t first);
+
+  /// A word list for the runtime: where it is and how many words it has.
+  struct Words {
+    llvm::Value* data;
+    llvm::Value* count;
+  };
+
+  Words buildWords(const ir::Inst& inst, std::size_t first);
   void emitPrint(const ir::Inst& inst);
   void emitTrace(const ir::Inst& inst);
   llvm::Value* message(const ir::Inst& inst);
@@ -180,6 +234,7 @@ private:
   const Abi& abi_;
   const ir::Function& fn_;
   llvm::Function* body_;
+  const bool large_; // beyond kOptimizedSizeLimit
   llvm::IRBuilder<> b_;
   llvm::DISubprogram* scope_ = nullptr; // with debug info only
   std::uint32_t firstLine_ = 0;
@@ -190,7 +245,7 @@ private:
   ir::BlockId current_ = 0;
   llvm::BasicBlock* entry_ = nullptr;
   llvm::BasicBlock* exit_ = nullptr;
-  llvm::PHINode* exitStatus_ = nullptr;
+  std::optional<Handover> exitStatus_;
   llvm::Value* ctx_ = nullptr;
   llvm::Value* leave_ = nullptr;
   llvm::Value* level_ = nullptr;
@@ -202,13 +257,16 @@ private:
   llvm::Value* blockCount_ = nullptr;
   llvm::Value* blockMax_ = nullptr;
   std::map<std::pair<Rt, int>, llvm::BasicBlock*> sharedExits_;
-  llvm::Value* pendingFail_ = nullptr;    // i1: a gathered check holds
-  llvm::Value* pendingKey_ = nullptr;     // i32: the key of the first that does
-  llvm::PHINode* failKey_ = nullptr;      // in anyFailBlock()
-  llvm::PHINode* resumeStatus_ = nullptr; // in leftBlock()
+  llvm::Value* pendingFail_ = nullptr;   // i1: a gathered check holds
+  llvm::Value* pendingKey_ = nullptr;    // i32: the key of the first that does
+  std::optional<Handover> failKey_;      // in anyFailBlock()
+  std::optional<Handover> resumeStatus_; // in leftBlock()
   std::map<std::int64_t, llvm::BasicBlock*> sharedSeq_; // by landing, or -1
   llvm::Value* file_ = nullptr;
   std::vector<char> fileStaleIn_; // by IR block: see findStaleFile
+  static constexpr std::size_t kNoRun = ~std::size_t{0};
+  std::vector<std::size_t> runOf_; // by IR block: its run, or kNoRun
+  std::vector<std::vector<ir::BlockId>> runs_;
   bool fileStale_ = true;
   std::uint64_t pendingAdp_ = 0; // bit n: #(n+1) written, flag not cleared
   llvm::Value* name_ = nullptr;

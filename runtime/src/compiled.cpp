@@ -29,6 +29,31 @@ mbrt_block_state* mbrt_block_state_of(mbrt_ctx* ctx) {
   return &ctx->block;
 }
 
+mbrt_status mbrt_nc_steps(mbrt_ctx* ctx, const mbrt_nc_run* run, size_t first,
+                          mbrt_flow* flow, size_t* next) {
+  std::vector<mbrt_word>& words = ctx->stepWords;
+  for (size_t i = first; i < run->count; ++i) {
+    *next = i + 1;
+    const int32_t* step = run->steps + 3 * i;
+    words.resize(static_cast<size_t>(step[1]));
+    for (size_t k = 0; k < words.size(); ++k) {
+      const size_t word = static_cast<size_t>(step[2]) + k;
+      words[k] = {static_cast<char>(run->codes[2 * word]),
+                  run->codes[2 * word + 1], run->values[word]};
+    }
+    if (mbrt_status st = mbrt_begin_block(ctx, run->file, step[0])) {
+      return st;
+    }
+    if (mbrt_status st = mbrt_nc_block(ctx, words.data(), words.size(), flow)) {
+      return st;
+    }
+    if (flow->kind != MBRT_FLOW_NEXT || flow->has_seq != 0) {
+      return 0;
+    }
+  }
+  return 0;
+}
+
 mbrt_status mbrt_binary(mbrt_ctx* ctx, int op, double a, double b,
                         double* out) {
   return check(*ctx, evalBinary(static_cast<BinOp>(op), a, b, out));

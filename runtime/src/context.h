@@ -229,7 +229,8 @@ struct mbrt_ctx {
   std::uint64_t optionalStops = 0;
   bool mainM99 = false;
   mbc::rt::PendingAlarm alarm;
-  std::string scratch; // reused output buffer
+  std::string scratch;              // reused output buffer
+  std::vector<mbrt_word> stepWords; // mbrt_nc_steps' words of one block
 
   mbc::rt::Sink<mbrt_text_fn> alarmSink;
   std::vector<mbrt_motion> motionBuffer; // mbrt_buffer_motions
