@@ -235,13 +235,15 @@ Word Parser::parseWord() {
     // `Z = #101 + 0.03` (seed 003): the author meant Z[#101 + 0.03].
     Token eq = tok_;
     advance();
-    auto& d = diags_.report(DiagKind::AssignToAddress, eq.range, letter.text);
     std::uint32_t valueStart = tok_.range.begin.offset;
     w.value = parseExpr(0);
     std::uint32_t valueEnd =
         w.value->range.begin.offset + w.value->range.length;
     SourceRange span{eq.range.begin, valueEnd - eq.range.begin.offset};
     SourceRange value{{file_, valueStart}, valueEnd - valueStart};
+    // Reported after the expression, whose own diagnostics may move the
+    // stored ones (the fuzzer found the reference left dangling).
+    auto& d = diags_.report(DiagKind::AssignToAddress, eq.range, letter.text);
     d.fixIts.push_back({span, fmt::format("[{}]", sourceText(value))});
     diags_.note(DiagKind::AssignToAddressNote, letter.range, letter.text);
     return w;
