@@ -6,7 +6,7 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps install-missing build demo test test-asan bench difftest check-format \
+.PHONY: all deps install-missing build demo test test-asan fuzz bench difftest check-format \
         format clean
 
 all: build
@@ -67,6 +67,19 @@ test-asan: deps
 	  -DMBC_SANITIZE=address,undefined
 	cmake --build $(ASAN_BUILD_DIR) -j$(JOBS)
 	cd $(ASAN_BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+# libFuzzer targets (tests/fuzz) built with clang-14, coverage and the
+# sanitizers, run for SECONDS each (tools/fuzz.sh); corpora grow in
+# $(FUZZ_BUILD_DIR)/fuzz-corpus, failing inputs land in fuzz-crashes.
+FUZZ_BUILD_DIR ?= build-fuzz
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
+SECONDS ?= 60
+fuzz: deps
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(FUZZ_PACKAGES)"
+	CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_BUILD_DIR) \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMBC_FUZZ=ON
+	cmake --build $(FUZZ_BUILD_DIR) -j$(JOBS) --target fuzz_frontend fuzz_pipeline fuzz_profile
+	tools/fuzz.sh $(FUZZ_BUILD_DIR) $(SECONDS)
 
 # Random programs under every engine against the interpreter
 # (tools/difftest.py); a difference is reduced and written to $(BUILD_DIR).

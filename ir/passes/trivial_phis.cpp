@@ -184,7 +184,13 @@ bool removeTrivialPhis(Function& f) {
   std::vector<ValueId> repl(f.insts.size(), kNoValue);
   std::vector<bool> dead(f.insts.size(), false);
   bool any = false;
-  while (removeSinglePhis(f, repl, dead) | removeRedundantSccs(f, repl, dead)) {
+  for (;;) {
+    // Both run every round: each can expose work for the other.
+    const bool single = removeSinglePhis(f, repl, dead);
+    const bool sccs = removeRedundantSccs(f, repl, dead);
+    if (!single && !sccs) {
+      break;
+    }
     any = true;
   }
   if (any) {

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets of tests/fuzz for SECONDS each (make fuzz).
+#   tools/fuzz.sh BUILD_DIR SECONDS
+# Each target's corpus grows in BUILD_DIR/fuzz-corpus/TARGET, seeded from
+# the golden programs and diagnostics cases (Macro B) or the machine
+# profiles beside them (JSON). A crash, a leak, a sanitizer report or an
+# input slower than 10 s stops the run with status 1 and leaves the input in
+# BUILD_DIR/fuzz-crashes: turn it into a regression test (tests/diag or
+# tests/programs) before fixing it.
+set -u
+build=$1
+seconds=$2
+root=$(cd "$(dirname "$0")/.." && pwd)
+crashes=$build/fuzz-crashes
+mkdir -p "$crashes"
+status=0
+for target in frontend pipeline profile; do
+  corpus=$build/fuzz-corpus/$target
+  mkdir -p "$corpus"
+  if [ "$target" = profile ]; then
+    cp -n "$root"/tests/programs/*.machine.json "$root"/tests/fuzz/profiles/* \
+      "$corpus"/ 2>/dev/null
+    seeds=()
+    dict=()
+  else
+    seeds=("$root/tests/programs" "$root/tests/diag" "$root/tests/seeds")
+    dict=(-dict="$root/tests/fuzz/macro_b.dict")
+  fi
+  echo "== fuzz_$target: $seconds s =="
+  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" \
+      -timeout=10 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 \
+      -artifact_prefix="$crashes/$target-" "${dict[@]}" "$corpus" \
+      "${seeds[@]}" 2>"$build/fuzz-$target.log"; then
+    tail -40 "$build/fuzz-$target.log"
+    echo "fuzz_$target: FAILED, inputs in $crashes"
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|cov: " "$build/fuzz-$target.log" |
+      tail -2
+  fi
+done
+exit $status
