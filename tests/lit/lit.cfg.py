@@ -1,15 +1,19 @@
-# lit configuration for mbc's FileCheck tests (IR lowering and passes).
+# lit configuration for mbc's FileCheck tests (IR lowering and passes, and
+# the limits of tests/lit/robustness).
 # The build writes lit.site.cfg.py with the paths; ctest runs lit on it.
 import os
 import re
+import sys
 
 import lit.formats
 
 config.name = "mbc"
 config.test_format = lit.formats.ShTest(execute_external=False)
-config.suffixes = [".nc", ".mbir"]
+config.suffixes = [".nc", ".mbir", ".test"]
 config.test_source_root = os.path.dirname(__file__)
 config.substitutions.append(("%mbc", config.mbc_path))
+# Robustness tests generate their (large) inputs.
+config.substitutions.append(("%python", sys.executable))
 
 # %only-NAME: the --disable-pass options that leave only pass NAME on, for
 # tests of one pass. The names come from ir/passes/passes.def.
