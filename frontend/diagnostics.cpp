@@ -49,8 +49,12 @@ ShownLine showLine(std::string_view line, std::size_t focus) {
   std::size_t first = 0, last = line.size();
   if (line.size() > kMaxShown) {
     first = focus > kBefore ? focus - kBefore : 0;
-    while (first > 0 &&
-           isContinuation(static_cast<unsigned char>(line[first]))) {
+    // Back to the start of a character: at most three bytes, since a run of
+    // stray continuation bytes is no character (the fuzzer's line of them
+    // pushed the window past the caret).
+    for (int k = 0; k < 3 && first > 0 &&
+                    isContinuation(static_cast<unsigned char>(line[first]));
+         ++k) {
       --first;
     }
     last = std::min(line.size(), first + kMaxShown);
