@@ -8,8 +8,12 @@
 #include "driver/run_command.h"
 
 #include <cstdio>
+#include <exception>
+#include <new>
 
-int main(int argc, char** argv) {
+namespace {
+
+int dispatch(int argc, char** argv) {
   using namespace mbc::driver;
   std::string error;
   std::optional<Options> options = parseOptions(argc, argv, error);
@@ -32,4 +36,20 @@ int main(int argc, char** argv) {
     return loadUnit(options->files, true, cu) ? 0 : 1;
   }
   return runCommand(*options);
+}
+
+} // namespace
+
+// Whatever escapes is reported with the exit status of an internal error
+// rather than an abort: out of memory (a huge program under a memory limit)
+// or a bug.
+int main(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("mbc: error: out of memory\n", stderr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mbc: internal error: %s\n", e.what());
+  }
+  return 4;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # docs/robustness.md: a 100 000-line posted program, 2 000 blocks with a
 # variable each and a chain of 2 000 IF-GOTOs run under every engine in
-# bounded memory, with the same toolpath. MEMORY_KB: the address-space limit (0: none, as under ASan).
+# bounded memory, with the same toolpath; out of memory is reported, not an
+# abort. MEMORY_KB: the address-space limit (0: none, as under ASan).
 #   long_program.sh MBC MEMORY_KB
 set -u
 mbc=$(realpath "$1")
@@ -44,4 +45,12 @@ for program in posted computed chain; do
 done
 grep -q "O1000: 100002 blocks, 100000 moves, 0 alarms" posted.jit.err ||
   fail "$(cat posted.jit.err)"
+# Out of memory is a message and status 4, not an abort.
+if [ "$memory" -gt 0 ]; then
+  python3 -c "print('O1\n' + '#1 = 1\n' * 3000000 + 'M30')" >huge.nc
+  (ulimit -v 400000 && "$mbc" check huge.nc 2>huge.err)
+  status=$?
+  [ "$status" -eq 4 ] && grep -q "^mbc: error: out of memory$" huge.err ||
+    fail "3 000 000 lines in 400 MB: status $status, $(tail -2 huge.err)"
+fi
 echo ok
