@@ -11,8 +11,11 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
 fail() { echo "FAIL: $*"; exit 1; }
+# Each program first shows a message, so that the signal comes once the run
+# has started, however long the machine takes to start mbc and compile.
 cat >writes.nc <<'NC'
 O1000
+#3006 = 1 (STARTED)
 G90 G01 F1000
 #1 = 0
 WHILE [1 GT 0] DO1
@@ -25,6 +28,7 @@ M30
 NC
 cat >spins.nc <<'NC'
 O1000
+#3006 = 1 (STARTED)
 #1 = 0
 WHILE [1 GT 0] DO1
 #1 = #1 + 1
@@ -33,14 +37,19 @@ M30
 NC
 "$mbc" build writes.nc -o writes.exe || fail "mbc build"
 
-# interrupt NAME SIGNAL COMMAND...: runs COMMAND, sends SIGNAL after half a
-# second, and checks how it ended (at most 10 s later).
+# interrupt NAME SIGNAL COMMAND...: runs COMMAND, sends SIGNAL a moment
+# after the run has started, and checks how it ended (at most 10 s later).
 interrupt() {
   local name=$1 sig=$2
   shift 2
   "$@" --max-blocks 1e15 2>"$name.err" &
   local pid=$!
-  sleep 0.5
+  local started=0
+  until grep -q "message: STARTED" "$name.err" 2>/dev/null; do
+    ((started++ < 600)) || { kill -9 "$pid"; fail "$name: did not start"; }
+    sleep 0.1
+  done
+  sleep 0.2
   kill "-$sig" "$pid"
   local waited=0
   while kill -0 "$pid" 2>/dev/null; do
