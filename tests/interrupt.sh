@@ -5,12 +5,7 @@
 # engine and in an executable of `mbc build`; the loop that calls nothing
 # must stop too (compiled code cannot keep the block limit in a register).
 #   interrupt.sh MBC
-set -u
-mbc=$(realpath "$1")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 2
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_env.sh" "$1"
 # Each program first shows a message, so that the signal comes once the run
 # has started, however long the machine takes to start mbc and compile.
 cat >writes.nc <<'NC'

@@ -4,13 +4,8 @@
 # bounded memory, with the same toolpath; out of memory is reported, not an
 # abort. MEMORY_KB: the address-space limit (0: none, as under ASan).
 #   long_program.sh MBC MEMORY_KB
-set -u
-mbc=$(realpath "$1")
+source "$(dirname "$0")/script_env.sh" "$1"
 memory=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 2
-fail() { echo "FAIL: $*"; exit 1; }
 python3 - <<'PY'
 import random
 r = random.Random(7)

@@ -3,13 +3,8 @@
 # still makes one object whose bodies are hidden symbols named after its
 # table, and an executable of `mbc build` that runs as the IR evaluator does.
 #   object_in_parts.sh MBC GEN_LARGE_PY
-set -u
-mbc=$(realpath "$1")
-gen=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 2
-fail() { echo "FAIL: $*"; exit 1; }
+gen=$(realpath "$2") # before script_env.sh enters its work folder
+source "$(dirname "$0")/script_env.sh" "$1"
 python3 "$gen" 5000 big.nc || exit 2
 "$mbc" compile -c -O1 big.nc -o big.o || fail "compile -c"
 readelf -sW big.o >symbols.txt || exit 2

@@ -3,12 +3,7 @@
 # written after an alarm too, and a bad state file stops the run without
 # touching the file.
 #   state_file.sh MBC
-set -u
-mbc=$(realpath "$1")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 2
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_env.sh" "$1"
 cat >count.nc <<'NC'
 IF [#500 EQ #0] THEN #500 = 0
 #500 = #500 + 1

@@ -3,13 +3,8 @@
 # killed (SIGKILL, no chance to clean up), at random moments of the run
 # including the save.
 #   state_kill.sh MBC [KILLS]
-set -u
-mbc=$(realpath "$1")
+source "$(dirname "$0")/script_env.sh" "$1"
 kills=${2:-40}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 2
-fail() { echo "FAIL: $*"; exit 1; }
 # Every run writes its pass number into all of #500-#999 (F is #9) and the work
 # offsets, so a file mixing two runs shows.
 cat >pass.nc <<'NC'

@@ -3,9 +3,6 @@
 // the printed IR must parse back to the same text. A verifier failure or a
 // failed round trip is a compiler bug, so it aborts (libFuzzer reports it
 // as a crash with the input).
-#include "frontend/diagnostics.h"
-#include "frontend/parser.h"
-#include "frontend/sema.h"
 #include "ir/ir_parser.h"
 #include "ir/lower.h"
 #include "ir/pass_manager.h"
@@ -18,6 +15,8 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include "fuzz_input.h"
 
 namespace {
 
@@ -40,19 +39,13 @@ std::string joined(const std::vector<std::string>& problems) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
                                       std::size_t size) {
-  mbc::SourceManager sources;
-  mbc::DiagnosticEngine diags(sources);
-  mbc::Unit unit;
-  const std::uint32_t file = sources.add(
-      "fuzz.nc", std::string(reinterpret_cast<const char*>(data), size));
-  mbc::parseFile(sources, file, diags, mbc::ParseOptions{}, unit);
-  mbc::checkUnit(unit, diags);
-  if (diags.errorCount() > 0) {
+  const mbc::fuzz::CheckedInput input(data, size);
+  if (input.diags.errorCount() > 0) {
     return -1; // not a program: keep it out of the corpus
   }
   for (const bool trace : {false, true}) {
     mbc::ir::Module module =
-        mbc::ir::lower(unit, sources, mbc::ir::LowerOptions{trace});
+        mbc::ir::lower(input.unit, input.sources, mbc::ir::LowerOptions{trace});
     const auto lowered = mbc::ir::verify(module);
     failIf(!lowered.empty(), "invalid IR after lowering", joined(lowered));
     std::string error;

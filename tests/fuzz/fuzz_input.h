@@ -1,0 +1,28 @@
+// What the Macro B fuzz targets share: the input bytes as a file through the
+// parser and the semantic checks.
+#pragma once
+
+#include "frontend/diagnostics.h"
+#include "frontend/parser.h"
+#include "frontend/sema.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace mbc::fuzz {
+
+struct CheckedInput {
+  SourceManager sources;
+  DiagnosticEngine diags{sources};
+  Unit unit;
+
+  CheckedInput(const std::uint8_t* data, std::size_t size) {
+    const std::uint32_t file = sources.add(
+        "fuzz.nc", std::string(reinterpret_cast<const char*>(data), size));
+    parseFile(sources, file, diags, ParseOptions{}, unit);
+    checkUnit(unit, diags);
+  }
+};
+
+} // namespace mbc::fuzz
