@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -13,15 +14,25 @@
 namespace mbc::driver {
 
 OutputFile::~OutputFile() {
-  if (file_) {
-    std::fflush(file_);
+  finish();
+}
+
+bool OutputFile::finish() {
+  if (file_ == nullptr) {
+    return true;
   }
-  if (owned_) {
-    std::fclose(file_);
+  const bool flushed = std::fflush(file_) == 0 && std::ferror(file_) == 0;
+  const int flushError = errno;
+  const bool closed = !owned_ || std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!flushed) {
+    errno = flushError; // why the data was lost, not what closing said
   }
+  return flushed && closed;
 }
 
 bool OutputFile::open(const std::string& path) {
+  path_ = path;
   if (path == "-") {
     file_ = stdout;
     return true;

@@ -20,7 +20,16 @@ public:
   /// Opens path for writing ("-" is standard output); false on failure.
   bool open(const std::string& path);
 
-  void useStdout() { file_ = stdout; }
+  void useStdout() {
+    file_ = stdout;
+    path_ = "-";
+  }
+
+  /// Flushes (and closes a file it opened); false when anything written
+  /// since open was lost (a full disk), with errno telling why.
+  bool finish();
+
+  const std::string& path() const { return path_; }
 
   std::FILE* get() const { return file_; }
 
@@ -31,6 +40,7 @@ public:
 private:
   std::FILE* file_ = nullptr;
   bool owned_ = false;
+  std::string path_;
 };
 
 /// Writes `content` to `path` so that a reader never sees half of it: a

@@ -8,8 +8,10 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -209,16 +211,28 @@ int runSession(const RunOptions& o, const std::string& mainName,
   if (gcode.get() != nullptr) {
     OutputFile::writeText(&gcode, "%\n", 2);
   }
+  // Every output is checked: a full disk must not pass for a complete run.
+  bool written = true;
+  const auto lost = [&written](const std::string& path) {
+    const std::string shown =
+        path == "-" ? "standard output" : "'" + path + "'";
+    std::fprintf(stderr, "mbc: error: cannot write %s: %s\n", shown.c_str(),
+                 std::strerror(errno));
+    written = false;
+  };
+  for (OutputFile* out : {&motions.toolpath, &dprnt, &gcode}) {
+    if (!out->finish()) {
+      lost(out->path());
+    }
+  }
   if (!o.statePath.empty() && !saveState(ctx.get(), o.statePath)) {
-    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
-                 o.statePath.c_str());
+    lost(o.statePath);
   }
   if (motions.svg && !replaceFile(o.svgPath, motions.svg->document())) {
-    std::fprintf(stderr, "mbc: error: cannot write '%s'\n", o.svgPath.c_str());
+    lost(o.svgPath);
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx.get(), o.varsOutPath)) {
-    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
-                 o.varsOutPath.c_str());
+    lost(o.varsOutPath);
   }
   printSummary(ctx.get(), mainName, st != 0);
   if (o.time) {
@@ -230,6 +244,9 @@ int runSession(const RunOptions& o, const std::string& mainName,
   }
   if (const int sig = InterruptScope::signal()) {
     return 128 + sig; // as the shell reports a process the signal ended
+  }
+  if (!written) {
+    return 2;
   }
   return st ? 3 : 0;
 }
