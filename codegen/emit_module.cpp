@@ -13,17 +13,22 @@ namespace mbc::codegen {
 
 namespace detail {
 
+llvm::GlobalVariable* ModuleState::constantData(llvm::Constant* init,
+                                                const char* name) {
+  auto* global =
+      new llvm::GlobalVariable(abi.module, init->getType(), true,
+                               llvm::GlobalValue::PrivateLinkage, init, name);
+  global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
+  return global;
+}
+
 llvm::Constant* ModuleState::cstring(const std::string& text) {
   auto it = strings.find(text);
   if (it != strings.end()) {
     return it->second;
   }
-  llvm::Constant* init =
-      llvm::ConstantDataArray::getString(abi.context, text, true);
-  auto* global =
-      new llvm::GlobalVariable(abi.module, init->getType(), true,
-                               llvm::GlobalValue::PrivateLinkage, init, ".str");
-  global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
+  llvm::GlobalVariable* global = constantData(
+      llvm::ConstantDataArray::getString(abi.context, text, true), ".str");
   global->setAlignment(llvm::Align(1));
   return strings.emplace(text, global).first->second;
 }
@@ -34,11 +39,7 @@ ModuleState::constantWords(const std::vector<llvm::Constant*>& words) {
       llvm::ArrayType::get(abi.word, words.size()), words);
   auto [it, added] = wordLists.emplace(init, nullptr);
   if (added) {
-    auto* global = new llvm::GlobalVariable(abi.module, init->getType(), true,
-                                            llvm::GlobalValue::PrivateLinkage,
-                                            init, ".words");
-    global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
-    it->second = global;
+    it->second = constantData(init, ".words");
   }
   return it->second;
 }

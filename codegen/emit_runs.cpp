@@ -104,21 +104,17 @@ void FunctionEmitter::emitRun(const std::vector<ir::BlockId>& run) {
       }
     }
   }
-  auto data = [&](llvm::Constant* init, const char* name) {
-    auto* global =
-        new llvm::GlobalVariable(abi_.module, init->getType(), true,
-                                 llvm::GlobalValue::PrivateLinkage, init, name);
-    global->setUnnamedAddr(llvm::GlobalValue::UnnamedAddr::Global);
-    return global;
-  };
   const std::size_t count = run.size();
-  llvm::Constant* table = data(
+  llvm::Constant* table = m_.constantData(
       llvm::ConstantStruct::get(
           abi_.ncRun,
           {llvm::cast<llvm::Constant>(file_),
-           data(llvm::ConstantDataArray::get(abi_.context, steps), ".steps"),
-           data(llvm::ConstantDataArray::get(abi_.context, codes), ".codes"),
-           data(llvm::ConstantDataArray::get(abi_.context, values), ".values"),
+           m_.constantData(llvm::ConstantDataArray::get(abi_.context, steps),
+                           ".steps"),
+           m_.constantData(llvm::ConstantDataArray::get(abi_.context, codes),
+                           ".codes"),
+           m_.constantData(llvm::ConstantDataArray::get(abi_.context, values),
+                           ".values"),
            llvm::ConstantInt::get(abi_.i64, count)}),
       ".run");
   llvm::Value* nextSlot = scratch(abi_.i64, 1);

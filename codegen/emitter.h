@@ -89,6 +89,8 @@ struct ModuleState {
   ModuleState(const ir::Module& m, llvm::Module& out, const EmitOptions& o)
       : ir(m), abi(out), options(o) {}
 
+  /// A private, read-only global holding `init`.
+  llvm::GlobalVariable* constantData(llvm::Constant* init, const char* name);
   /// A NUL-terminated constant string (one global per distinct text).
   llvm::Constant* cstring(const std::string& text);
   /// A constant array of mbrt_word (one global per distinct list).
