@@ -296,7 +296,7 @@ mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
     return raise(*ctx, AlarmId::Interrupted,
                  "the run was stopped before this block");
   }
-  if (ctx->output.passed) {
+  if (ctx->output.passed()) {
     return raiseOutputLimit(*ctx);
   }
   return raise(*ctx, AlarmId::ExecutionLimit,

@@ -154,9 +154,10 @@ struct BlockCall {
 struct OutputBudget {
   std::uint64_t written = 0;
   std::uint64_t limit = kDefaultMaxOutput;
-  bool passed = false;
   const char* file = nullptr; // the block that passed the limit
   int line = 0;
+
+  bool passed() const { return written > limit; }
 };
 
 template <class Fn> struct Sink {

@@ -11,11 +11,11 @@ namespace mbc::rt {
 
 void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
   OutputBudget& output = ctx.output;
+  const bool within = !output.passed();
   output.written += bytes;
-  if (output.written <= output.limit || output.passed) {
+  if (!within || !output.passed()) {
     return;
   }
-  output.passed = true;
   output.file = ctx.block.file;
   output.line = ctx.block.line;
   setBlockLimit(ctx, ctx.block.blocks);
