@@ -107,10 +107,6 @@ double niceLength(double limit) {
 
 } // namespace
 
-void SvgWriter::addMotion(void* self, const mbrt_motion* motion) {
-  static_cast<SvgWriter*>(self)->add(*motion);
-}
-
 void SvgWriter::include(double x, double y) {
   minX_ = haveBox_ ? std::min(minX_, x) : x;
   maxX_ = haveBox_ ? std::max(maxX_, x) : x;

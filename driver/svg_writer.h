@@ -10,9 +10,6 @@ namespace mbc::driver {
 
 class SvgWriter {
 public:
-  /// The motion sink: records one move.
-  static void addMotion(void* self, const mbrt_motion* motion);
-
   /// Records one move; returns the bytes the drawing grew by.
   std::size_t add(const mbrt_motion& m);
 

@@ -28,7 +28,7 @@ mbrt_motion move(int kind, double x0, double y0, double x1, double y1) {
 std::string drawing(std::initializer_list<mbrt_motion> moves) {
   SvgWriter svg;
   for (const mbrt_motion& m : moves) {
-    SvgWriter::addMotion(&svg, &m);
+    svg.add(m);
   }
   return svg.document();
 }
