@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,7 @@ public:
 
   bool tooManyErrors() const { return errors_ >= kErrorLimit; }
 
-  const std::vector<Diagnostic>& diagnostics() const { return diags_; }
+  const std::deque<Diagnostic>& diagnostics() const { return diags_; }
 
   const SourceManager& sources() const { return sources_; }
 
@@ -79,7 +80,9 @@ private:
   Diagnostic& add(DiagKind kind, SourceRange range, std::string message);
 
   const SourceManager& sources_;
-  std::vector<Diagnostic> diags_;
+  // A deque: the reference report() returns stays valid while more
+  // diagnostics are reported (a parser adds fix-its after parsing on).
+  std::deque<Diagnostic> diags_;
   Diagnostic overflow_{};
   int lastStored_ = -1; // diags_ index of the last report, -1 if dropped
   int errors_ = 0;

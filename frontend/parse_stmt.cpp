@@ -241,8 +241,6 @@ Word Parser::parseWord() {
         w.value->range.begin.offset + w.value->range.length;
     SourceRange span{eq.range.begin, valueEnd - eq.range.begin.offset};
     SourceRange value{{file_, valueStart}, valueEnd - valueStart};
-    // Reported after the expression, whose own diagnostics may move the
-    // stored ones (the fuzzer found the reference left dangling).
     auto& d = diags_.report(DiagKind::AssignToAddress, eq.range, letter.text);
     d.fixIts.push_back({span, fmt::format("[{}]", sourceText(value))});
     diags_.note(DiagKind::AssignToAddressNote, letter.range, letter.text);

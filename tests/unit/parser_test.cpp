@@ -183,7 +183,7 @@ TEST(Sema, NestedLoopErrorsStopAtTheLimitWithoutStrayNotes) {
     src += "END1\n";
   }
   auto p = parse(src + "M30\n");
-  const std::vector<Diagnostic>& diags = p->diags.diagnostics();
+  const auto& diags = p->diags.diagnostics();
   ASSERT_FALSE(diags.empty());
   EXPECT_EQ(diags.back().kind, DiagKind::TooManyErrors);
   EXPECT_TRUE(diags.back().notes.empty()) << p->text;
