@@ -6,7 +6,7 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev googletest libgtest-dev libgmock-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps install-missing build demo test test-asan fuzz bench difftest check-format \
+.PHONY: all deps install-missing build install demo test test-asan fuzz bench difftest check-format \
         format clean
 
 all: build
@@ -34,6 +34,12 @@ $(BUILD_DIR)/CMakeCache.txt:
 
 build: deps $(BUILD_DIR)/CMakeCache.txt
 	cmake --build $(BUILD_DIR) -j$(JOBS)
+
+# mbc, the runtime library and header, and the CMake package
+# (docs/embedding.md) under PREFIX.
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 demo: build
 	@echo "== mbc run examples/bolt_circle.nc (toolpath, DPRNT, variables) =="

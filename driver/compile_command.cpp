@@ -1,26 +1,28 @@
 // `mbc compile` and `mbc build` (see compile_command.h). build links the
-// object with the run support and the runtime (static libraries of this
-// build, paths from build_paths.h) by the system C++ compiler driver ($CXX,
-// default c++).
+// object with the run support and the runtime (static libraries,
+// link_libraries.h) by the system C++ compiler driver ($CXX, default c++).
 #include "driver/compile_command.h"
 
 #include "codegen/c_header.h"
 #include "codegen/object_file.h"
 #include "driver/ir_pipeline.h"
+#include "driver/link_libraries.h"
 #include "driver/output_files.h"
 #include "ir/printer.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "build_paths.h"
+#include "build_paths.h" // MBC_SANITIZE
 
 extern char** environ;
 
@@ -73,90 +75,46 @@ int runProcess(const std::vector<std::string>& args) {
   return done == pid && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-} // namespace
+/// What is linked with the object, given its path and the scratch
+/// directory it is in; empty when they could not be prepared.
+using LinkInputs = std::function<std::vector<std::string>(
+    const std::string& object, const std::string& dir)>;
 
-int compileCommand(const Options& o) {
-  ir::Module module;
-  if (!loadModule(o, module)) {
-    return 1;
-  }
-  std::string table = o.tableName;
-  if (table.empty()) {
-    table = o.outputPath == "-"
-                ? "mbc_programs"
-                : "mbc_programs_" + identifierStem(o.outputPath);
-  }
-  if (o.emit == "ir") {
-    if (!replaceFile(o.outputPath, ir::print(module))) {
-      return reportFailure("cannot write '" + o.outputPath + "'");
-    }
-  } else {
-    codegen::ObjectOptions opts;
-    opts.emit.tableName = table;
-    opts.emit.debugInfo = o.debugInfo;
-    opts.optLevel = o.optLevel;
-    opts.cpu = o.cpu;
-    opts.cpu = o.cpu;
-    std::string error;
-    if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
-                                error)) {
-      return reportFailure(error);
-    }
-  }
-  if (!o.headerPath.empty()) {
-    std::string guard = "MBC_" + identifierStem(o.headerPath) + "_H";
-    for (char& c : guard) {
-      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    }
-    if (!replaceFile(o.headerPath, codegen::cHeader(module, table, guard))) {
-      return reportFailure("cannot write '" + o.headerPath + "'");
-    }
-  }
-  return 0;
-}
-
-int buildCommand(const Options& options) {
-  // The executable takes --trace like `mbc run`: its code has the trace
-  // statements, which cost a test each while no trace sink is set.
-  Options o = options;
-  o.run.trace = true;
-  ir::Module module;
-  if (!loadModule(o, module)) {
-    return 1;
-  }
+/// Compiles the module to an object in a scratch directory and links it by
+/// the system C++ compiler driver ($CXX, default c++) into o.outputPath,
+/// through a temporary file so that a failed link leaves no half output.
+/// -v shows the link command.
+int compileAndLink(const ir::Module& module, const codegen::ObjectOptions& opts,
+                   const Options& o, const LinkInputs& inputs) {
   std::string dir =
-      (std::filesystem::temp_directory_path() / "mbc-build-XXXXXX").string();
+      (std::filesystem::temp_directory_path() / "mbc-link-XXXXXX").string();
   if (mkdtemp(dir.data()) == nullptr) {
     return reportFailure("cannot create a temporary directory");
   }
-  std::string object = dir + "/program.o";
-  codegen::ObjectOptions opts;
-  opts.emit.entryPoints = false;
-  opts.emit.aotMain = true;
-  opts.emit.debugInfo = o.debugInfo;
-  opts.optLevel = o.optLevel;
-  opts.cpu = o.cpu;
+  const std::string object = dir + "/program.o";
   std::string error;
+  std::vector<std::string> link;
   int status = 0;
   if (!codegen::writeCompiled(module, opts, codegen::FileKind::Object, object,
                               error)) {
     status = reportFailure(error);
+  } else if (link = inputs(object, dir); link.empty()) {
+    status = reportFailure("cannot write the linker's inputs in " + dir);
   } else {
     const char* cxx = std::getenv("CXX");
-    std::string tmp = o.outputPath + ".tmp";
-    std::vector<std::string> link = {cxx != nullptr && *cxx ? cxx : "c++",
-                                     "-o",
-                                     tmp,
-                                     object,
-                                     MBC_RUNNER_LIB,
-                                     MBC_RUNTIME_LIB,
-                                     "-lfmt",
-                                     "-lm"};
+    const std::string tmp = o.outputPath + ".tmp";
+    link.insert(link.begin(),
+                {cxx != nullptr && *cxx ? cxx : "c++", "-o", tmp});
+    link.insert(link.end(), {"-lfmt", "-lm"});
     if (*MBC_SANITIZE != '\0') {
       // A runtime built with sanitizers links only with their libraries.
       link.push_back(std::string("-fsanitize=") + MBC_SANITIZE);
     }
-    int linked = runProcess(link);
+    if (o.verbose) {
+      std::fprintf(stderr, "%s\n",
+                   fmt::format("{}", fmt::join(link, " ")).c_str());
+    }
+    const int linked = runProcess(link);
     if (linked != 0) {
       std::remove(tmp.c_str());
       status = reportFailure(
@@ -170,6 +128,70 @@ int buildCommand(const Options& options) {
   }
   std::filesystem::remove_all(dir);
   return status;
+}
+
+} // namespace
+
+int compileCommand(const Options& o) {
+  ir::Module module;
+  if (!loadModule(o, module)) {
+    return 1;
+  }
+  std::string table = o.tableName;
+  if (table.empty()) {
+    table = o.outputPath == "-"
+                ? "mbc_programs"
+                : "mbc_programs_" + identifierStem(o.outputPath);
+  }
+  codegen::ObjectOptions opts;
+  opts.emit.tableName = table;
+  opts.emit.debugInfo = o.debugInfo;
+  opts.optLevel = o.optLevel;
+  opts.cpu = o.cpu;
+  int status = 0;
+  if (o.emit == "ir") {
+    if (!replaceFile(o.outputPath, ir::print(module))) {
+      status = reportFailure("cannot write '" + o.outputPath + "'");
+    }
+  } else {
+    std::string error;
+    if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
+                                error)) {
+      status = reportFailure(error);
+    }
+  }
+  if (status == 0 && !o.headerPath.empty()) {
+    std::string guard = "MBC_" + identifierStem(o.headerPath) + "_H";
+    for (char& c : guard) {
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    if (!replaceFile(o.headerPath, codegen::cHeader(module, table, guard))) {
+      return reportFailure("cannot write '" + o.headerPath + "'");
+    }
+  }
+  return status;
+}
+
+int buildCommand(const Options& options) {
+  // The executable takes --trace like `mbc run`: its code has the trace
+  // statements, which cost a test each while no trace sink is set.
+  Options o = options;
+  o.run.trace = true;
+  ir::Module module;
+  if (!loadModule(o, module)) {
+    return 1;
+  }
+  codegen::ObjectOptions opts;
+  opts.emit.entryPoints = false;
+  opts.emit.aotMain = true;
+  opts.emit.debugInfo = o.debugInfo;
+  opts.optLevel = o.optLevel;
+  opts.cpu = o.cpu;
+  const LinkLibraries libs = linkLibraries();
+  return compileAndLink(
+      module, opts, o, [&](const std::string& object, const std::string&) {
+        return std::vector<std::string>{object, libs.runner, libs.runtime};
+      });
 }
 
 } // namespace mbc::driver

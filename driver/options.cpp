@@ -99,7 +99,7 @@ std::string usageText() {
          "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"
          "        [--emit=ir|llvm|asm|obj] [--table NAME] [--cpu NAME]\n"
          "        [-O0..-O3] [-g]\n"
-         "       mbc build FILE... -o EXE [--cpu NAME] [-O0..-O3] [-g]\n"
+         "       mbc build FILE... -o EXE [--cpu NAME] [-O0..-O3] [-g] [-v]\n"
          "passes: " +
          ir::passNameList() + "\n";
 }
@@ -130,6 +130,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.optLevel = a[2] - '0';
     } else if (a == "-g") {
       o.debugInfo = true;
+    } else if (a == "-v") {
+      o.verbose = true;
     } else if (a == "-c") {
       // compile only: what `mbc compile` always does (as with cc -c)
     } else if (a == "--no-opt") {

@@ -25,7 +25,8 @@ struct Options {
   std::string headerPath;                  // --header (compile)
   std::string emit = "obj";                // --emit=ir|llvm|asm|obj
   std::string tableName;                   // --table (compile)
-  std::string cpu; // --cpu (compile, build): "" generic, "native", a name
+  std::string cpu;      // --cpu (compile, build): "" generic, "native", a name
+  bool verbose = false; // -v (build): the link command
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message
