@@ -1,6 +1,7 @@
 // `mbc compile` and `mbc build` (see compile_command.h). build links the
-// object with the run support and the runtime (static libraries,
-// link_libraries.h) by the system C++ compiler driver ($CXX, default c++).
+// object with the run support and the runtime, compile --shared with the
+// runtime (static libraries, link_libraries.h), by the system C++ compiler
+// driver ($CXX, default c++).
 #include "driver/compile_command.h"
 
 #include "codegen/c_header.h"
@@ -149,7 +150,28 @@ int compileCommand(const Options& o) {
   opts.optLevel = o.optLevel;
   opts.cpu = o.cpu;
   int status = 0;
-  if (o.emit == "ir") {
+  if (o.shared) {
+    // The whole runtime goes in, since a ctypes user calls any of it; only
+    // the C ABI is exported, so that the runtime's C++ symbols cannot clash
+    // with the host process's.
+    const std::string runtime = linkLibraries().runtime;
+    status = compileAndLink(
+        module, opts, o,
+        [&](const std::string& object, const std::string& dir) {
+          const std::string script = dir + "/exports.map";
+          if (!replaceFile(script, fmt::format("{{ global: mbrt_*; mbc_O*; "
+                                               "{}; local: *; }};\n",
+                                               table))) {
+            return std::vector<std::string>{};
+          }
+          return std::vector<std::string>{"-shared",
+                                          object,
+                                          "-Wl,--whole-archive",
+                                          runtime,
+                                          "-Wl,--no-whole-archive",
+                                          "-Wl,--version-script=" + script};
+        });
+  } else if (o.emit == "ir") {
     if (!replaceFile(o.outputPath, ir::print(module))) {
       status = reportFailure("cannot write '" + o.outputPath + "'");
     }

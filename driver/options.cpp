@@ -79,6 +79,13 @@ bool checkOptions(const Options& o, std::string& error) {
   } else if (o.emit != "obj" && o.emit != "asm" && o.emit != "llvm" &&
              o.emit != "ir") {
     error = fmt::format("unknown --emit '{}' (ir, llvm, asm or obj)", o.emit);
+  } else if (o.shared && o.command != "compile") {
+    error = "--shared is only available with compile";
+  } else if (o.shared && o.emit != "obj") {
+    error =
+        fmt::format("--shared writes a shared library, not --emit={}", o.emit);
+  } else if (o.shared && o.outputPath == "-") {
+    error = "mbc compile --shared needs -o FILE.so";
   } else if (!o.tableName.empty() && !isCIdentifier(o.tableName)) {
     error = fmt::format("--table '{}' is not a C identifier", o.tableName);
   } else {
@@ -99,6 +106,8 @@ std::string usageText() {
          "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"
          "        [--emit=ir|llvm|asm|obj] [--table NAME] [--cpu NAME]\n"
          "        [-O0..-O3] [-g]\n"
+         "       mbc compile --shared FILE... -o LIB.so [--header OUT.h]\n"
+         "        [--table NAME] [--cpu NAME] [-O0..-O3] [-g] [-v]\n"
          "       mbc build FILE... -o EXE [--cpu NAME] [-O0..-O3] [-g] [-v]\n"
          "passes: " +
          ir::passNameList() + "\n";
@@ -132,6 +141,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.debugInfo = true;
     } else if (a == "-v") {
       o.verbose = true;
+    } else if (a == "--shared") {
+      o.shared = true;
     } else if (a == "-c") {
       // compile only: what `mbc compile` always does (as with cc -c)
     } else if (a == "--no-opt") {

@@ -26,7 +26,8 @@ struct Options {
   std::string emit = "obj";                // --emit=ir|llvm|asm|obj
   std::string tableName;                   // --table (compile)
   std::string cpu;      // --cpu (compile, build): "" generic, "native", a name
-  bool verbose = false; // -v (build): the link command
+  bool shared = false;  // --shared (compile): a shared library
+  bool verbose = false; // -v (compile --shared, build): the link command
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message
