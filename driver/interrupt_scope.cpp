@@ -1,6 +1,6 @@
 // The handlers of interrupt_scope.h. Only async-signal-safe work happens in
-// the handler: lock-free atomic stores (mbrt_interrupt) and, for a second
-// signal, restoring the default action and raising it again.
+// the handler: lock-free atomic loads and stores (mbrt_interrupt) and, for
+// a second signal, restoring the default action and raising it again.
 #include "driver/interrupt_scope.h"
 
 #include <atomic>
@@ -9,7 +9,7 @@
 namespace mbc::driver {
 namespace {
 
-std::atomic<mbrt_ctx*> running{nullptr};
+std::atomic<mbrt_ctx*> running[InterruptibleRun::kMaxRuns];
 std::atomic<int> caught{0};
 constexpr int kSignals[] = {SIGINT, SIGTERM};
 struct sigaction previous[2];
@@ -20,16 +20,17 @@ void onSignal(int sig) {
     std::raise(sig);
     return;
   }
-  if (mbrt_ctx* ctx = running.load()) {
-    mbrt_interrupt(ctx);
+  for (std::atomic<mbrt_ctx*>& run : running) {
+    if (mbrt_ctx* ctx = run.load()) {
+      mbrt_interrupt(ctx);
+    }
   }
 }
 
 } // namespace
 
-InterruptScope::InterruptScope(mbrt_ctx* ctx) {
+InterruptScope::InterruptScope() {
   caught = 0;
-  running = ctx;
 
   struct sigaction action {};
 
@@ -45,11 +46,29 @@ InterruptScope::~InterruptScope() {
   for (int i = 0; i < 2; ++i) {
     sigaction(kSignals[i], &previous[i], nullptr);
   }
-  running = nullptr;
 }
 
 int InterruptScope::signal() {
   return caught;
+}
+
+InterruptibleRun::InterruptibleRun(mbrt_ctx* ctx) {
+  for (int i = 0; i < kMaxRuns && slot_ < 0; ++i) {
+    mbrt_ctx* expected = nullptr;
+    if (running[i].compare_exchange_strong(expected, ctx)) {
+      slot_ = i;
+    }
+  }
+  // The signal may have come before the slot was taken.
+  if (caught != 0) {
+    mbrt_interrupt(ctx);
+  }
+}
+
+InterruptibleRun::~InterruptibleRun() {
+  if (slot_ >= 0) {
+    running[slot_] = nullptr;
+  }
 }
 
 } // namespace mbc::driver

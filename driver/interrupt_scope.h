@@ -1,25 +1,44 @@
-// SIGINT and SIGTERM during a run: the run stops before its next block with
-// alarm MBC0004, so that its outputs end with whole records, are flushed, and
-// the state file is saved as after an alarm. A second signal ends the
-// process at once, as it would have without mbc's handler.
+// SIGINT and SIGTERM during a run or a batch of runs: every run going on
+// stops before its next block with alarm MBC0004, so that its outputs end
+// with whole records, are flushed, and the state file is saved as after an
+// alarm; a batch starts no more rows. A second signal ends the process at
+// once, as it would have without mbc's handler.
 #pragma once
 
 #include <mbc/runtime.h>
 
 namespace mbc::driver {
 
+/// The handlers, installed for the scope's lifetime; the destructor
+/// restores the previous ones. The contexts of the runs it stops must
+/// outlive it.
 class InterruptScope {
 public:
-  /// Installs the handlers for a run of `ctx`; the destructor restores the
-  /// previous ones.
-  explicit InterruptScope(mbrt_ctx* ctx);
+  InterruptScope();
   ~InterruptScope();
 
   InterruptScope(const InterruptScope&) = delete;
   InterruptScope& operator=(const InterruptScope&) = delete;
 
-  /// The signal that interrupted the run, 0 if none came.
+  /// The signal that came during the scope, 0 if none.
   static int signal();
+};
+
+/// One run that a signal stops, from after its context was started to its
+/// end. Up to kMaxRuns at once (the threads of a batch); a run registered
+/// after the signal stops at its first block.
+class InterruptibleRun {
+public:
+  static constexpr int kMaxRuns = 256;
+
+  explicit InterruptibleRun(mbrt_ctx* ctx);
+  ~InterruptibleRun();
+
+  InterruptibleRun(const InterruptibleRun&) = delete;
+  InterruptibleRun& operator=(const InterruptibleRun&) = delete;
+
+private:
+  int slot_ = -1;
 };
 
 } // namespace mbc::driver

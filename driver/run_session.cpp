@@ -20,26 +20,8 @@ namespace mbc::driver {
 
 namespace {
 
-struct CtxDeleter {
-  void operator()(mbrt_ctx* c) const { mbrt_destroy(c); }
-};
-
-using CtxPtr = std::unique_ptr<mbrt_ctx, CtxDeleter>;
-
-void writeStderr(void*, const char* data, std::size_t size) {
-  std::fwrite(data, 1, size, stderr);
-}
-
-CtxPtr createContext(const RunOptions& o) {
-  char err[512] = {0};
-  mbrt_ctx* ctx =
-      o.machinePath.empty()
-          ? mbrt_create(nullptr, err, sizeof err)
-          : mbrt_create_from_file(o.machinePath.c_str(), err, sizeof err);
-  if (!ctx) {
-    std::fprintf(stderr, "mbc: error: machine profile: %s\n", err);
-  }
-  return CtxPtr(ctx);
+void writeLog(void* log, const char* data, std::size_t size) {
+  std::fwrite(data, 1, size, static_cast<std::FILE*>(log));
 }
 
 /// "1:02:03.4" or "2:03.4".
@@ -64,24 +46,22 @@ std::string toolpathSummary(const mbrt_stats& st) {
       st.feed_length, st.rapid_length, clockText(st.cycle_time), box);
 }
 
-void printSummary(const mbrt_ctx* ctx, const std::string& program,
-                  bool alarmed) {
-  mbrt_stats st{};
-  mbrt_get_stats(ctx, &st);
-  std::fprintf(stderr, "mbc: %s: %llu blocks, %llu moves, %d alarm%s\n",
+void printSummary(const mbrt_stats& st, const std::string& program,
+                  bool alarmed, std::FILE* log) {
+  std::fprintf(log, "mbc: %s: %llu blocks, %llu moves, %d alarm%s\n",
                program.c_str(), static_cast<unsigned long long>(st.blocks),
                static_cast<unsigned long long>(st.moves), alarmed ? 1 : 0,
                alarmed ? "" : "s");
   if (st.moves > 0) {
-    std::fputs(toolpathSummary(st).c_str(), stderr);
+    std::fputs(toolpathSummary(st).c_str(), log);
   }
   if (st.optional_stops) {
-    std::fprintf(stderr, "mbc: note: %llu M00/M01 stop(s) passed through\n",
+    std::fprintf(log, "mbc: note: %llu M00/M01 stop(s) passed through\n",
                  static_cast<unsigned long long>(st.optional_stops));
   }
   if (st.main_m99) {
-    std::fprintf(stderr, "mbc: note: M99 in the main program ended the run "
-                         "(a control would start it again)\n");
+    std::fprintf(log, "mbc: note: M99 in the main program ended the run "
+                      "(a control would start it again)\n");
   }
 }
 
@@ -169,44 +149,71 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-int runSession(const RunOptions& o, const std::string& mainName,
-               const Engine& engine, const PhaseTimes& phases) {
-  CtxPtr ctx = createContext(o);
+CtxPtr createContext(const RunOptions& o) {
+  char err[512] = {0};
+  mbrt_ctx* ctx =
+      o.machinePath.empty()
+          ? mbrt_create(nullptr, err, sizeof err)
+          : mbrt_create_from_file(o.machinePath.c_str(), err, sizeof err);
   if (!ctx) {
-    return 2;
+    std::fprintf(stderr, "mbc: error: machine profile: %s\n", err);
   }
+  return CtxPtr(ctx);
+}
+
+int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
+               const Engine& engine, SessionLog& log,
+               const PhaseTimes& phases) {
+  std::FILE* text = log.text;
   MotionOutputs motions;
   OutputFile dprnt, gcode;
-  if (!openOutputs(o, ctx.get(), motions, dprnt) ||
-      !openGcode(o, ctx.get(), gcode)) {
+
+  // The sinks point into this session's outputs: none may outlive it.
+  struct SinksOff {
+    mbrt_ctx* ctx;
+
+    ~SinksOff() {
+      mbrt_set_motion_sink(ctx, nullptr, nullptr);
+      mbrt_set_print_sink(ctx, nullptr, nullptr);
+      mbrt_set_message_sink(ctx, nullptr, nullptr);
+      mbrt_set_trace_sink(ctx, nullptr, nullptr);
+      mbrt_set_gcode_sink(ctx, nullptr, nullptr);
+    }
+  } sinksOff{ctx};
+
+  if (!openOutputs(o, ctx, motions, dprnt) || !openGcode(o, ctx, gcode)) {
     return 2;
   }
-  mbrt_set_message_sink(ctx.get(), &writeStderr, nullptr);
+  mbrt_set_message_sink(ctx, &writeLog, text);
   if (o.trace) {
-    mbrt_set_trace_sink(ctx.get(), &writeStderr, nullptr);
+    mbrt_set_trace_sink(ctx, &writeLog, text);
   }
-  mbrt_set_max_blocks(ctx.get(), o.maxBlocks);
-  mbrt_set_max_output(ctx.get(), o.maxOutput);
-  mbrt_set_block_skip(ctx.get(), o.blockSkipMask);
-  mbrt_start(ctx.get(), mainName.c_str());
+  mbrt_set_max_blocks(ctx, o.maxBlocks);
+  mbrt_set_max_output(ctx, o.maxOutput);
+  mbrt_set_block_skip(ctx, o.blockSkipMask);
+  mbrt_start(ctx, mainName.c_str());
   std::string stateError;
-  if (!o.statePath.empty() && !loadState(ctx.get(), o.statePath, stateError)) {
+  if (!o.statePath.empty() && !loadState(ctx, o.statePath, stateError)) {
     std::fprintf(stderr, "mbc: error: state file '%s': %s\n",
                  o.statePath.c_str(), stateError.c_str());
     return 2;
   }
-  const InterruptScope interrupts(ctx.get());
-  mbrt_status st = presetAndPass(o, ctx.get());
+  mbrt_status st = 0;
   const auto runStart = std::chrono::steady_clock::now();
-  if (!st) {
-    st = engine(ctx.get());
+  {
+    const InterruptibleRun interruptible(ctx);
+    st = presetAndPass(o, ctx);
+    if (!st) {
+      st = engine(ctx);
+    }
   }
   const double runMs = millisecondsSince(runStart);
   if (st) {
     char report[4096];
-    mbrt_alarm_report(ctx.get(), report, sizeof report);
+    mbrt_alarm_report(ctx, report, sizeof report);
     std::fflush(stdout);
-    std::fputs(report, stderr);
+    std::fputs(report, text);
+    log.alarm = std::string(report, std::strcspn(report, "\n"));
   }
   if (gcode.get() != nullptr) {
     OutputFile::writeText(&gcode, "%\n", 2);
@@ -225,22 +232,23 @@ int runSession(const RunOptions& o, const std::string& mainName,
       lost(out->path());
     }
   }
-  if (!o.statePath.empty() && !saveState(ctx.get(), o.statePath)) {
+  if (!o.statePath.empty() && !saveState(ctx, o.statePath)) {
     lost(o.statePath);
   }
   if (motions.svg && !replaceFile(o.svgPath, motions.svg->document())) {
     lost(o.svgPath);
   }
-  if (!o.varsOutPath.empty() && !writeVariables(ctx.get(), o.varsOutPath)) {
+  if (!o.varsOutPath.empty() && !writeVariables(ctx, o.varsOutPath)) {
     lost(o.varsOutPath);
   }
-  printSummary(ctx.get(), mainName, st != 0);
+  mbrt_get_stats(ctx, &log.stats);
+  printSummary(log.stats, mainName, st != 0, text);
   if (o.time) {
-    std::string text = "mbc: time:";
+    std::string times = "mbc: time:";
     for (const auto& [phase, ms] : phases) {
-      text += fmt::format(" {} {:.3f} ms,", phase, ms);
+      times += fmt::format(" {} {:.3f} ms,", phase, ms);
     }
-    std::fprintf(stderr, "%s run %.3f ms\n", text.c_str(), runMs);
+    std::fprintf(text, "%s run %.3f ms\n", times.c_str(), runMs);
   }
   if (const int sig = InterruptScope::signal()) {
     return 128 + sig; // as the shell reports a process the signal ended
@@ -249,6 +257,17 @@ int runSession(const RunOptions& o, const std::string& mainName,
     return 2;
   }
   return st ? 3 : 0;
+}
+
+int runOnce(const RunOptions& o, const std::string& mainName,
+            const Engine& engine, const PhaseTimes& phases) {
+  CtxPtr ctx = createContext(o);
+  if (!ctx) {
+    return 2;
+  }
+  const InterruptScope interrupts;
+  SessionLog log;
+  return runSession(o, ctx.get(), mainName, engine, log, phases);
 }
 
 } // namespace mbc::driver

@@ -8,7 +8,9 @@
 #include <mbc/runtime.h>
 
 #include <chrono>
+#include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,10 +24,36 @@ using Engine = std::function<mbrt_status(mbrt_ctx*)>;
 /// --time.
 using PhaseTimes = std::vector<std::pair<const char*, double>>;
 
-/// Returns the exit status of `mbc run`: 0, 2 (bad machine profile or
-/// output file) or 3 (an alarm stopped the run).
-int runSession(const RunOptions& o, const std::string& mainName,
-               const Engine& engine, const PhaseTimes& phases = {});
+struct CtxDeleter {
+  void operator()(mbrt_ctx* c) const { mbrt_destroy(c); }
+};
+
+using CtxPtr = std::unique_ptr<mbrt_ctx, CtxDeleter>;
+
+/// A context for the options' machine profile; null after telling stderr
+/// why the profile is bad.
+CtxPtr createContext(const RunOptions& o);
+
+/// Where a run reports (the operator messages, the trace, the alarm report
+/// and the summary lines) and what a batch keeps of it.
+struct SessionLog {
+  std::FILE* text = stderr;
+  std::string alarm; // the alarm report's first line, "" after a normal end
+  mbrt_stats stats{};
+};
+
+/// One run in `ctx`, which must be as mbrt_create or mbrt_reset left it and
+/// outlive an InterruptScope around the run. Returns the exit status of
+/// `mbc run`: 0, 2 (bad state or output file), 3 (an alarm stopped the run)
+/// or 128 + the signal that stopped it.
+int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
+               const Engine& engine, SessionLog& log,
+               const PhaseTimes& phases = {});
+
+/// `mbc run`'s session: a context, the signal handlers, one run reporting to
+/// stderr. 2 for a bad machine profile.
+int runOnce(const RunOptions& o, const std::string& mainName,
+            const Engine& engine, const PhaseTimes& phases = {});
 
 /// Milliseconds since `start`.
 double millisecondsSince(std::chrono::steady_clock::time_point start);

@@ -1,0 +1,44 @@
+// The input compiled for the chosen engine, ready to run its main program
+// any number of times, from any number of threads, each with its own
+// context: the AST for the interpreter, the IR module for the IR
+// evaluator, the JIT's code. `mbc run` runs it once, `mbc batch` once per
+// row of its table.
+#pragma once
+
+#include "codegen/jit.h"
+#include "driver/compile_unit.h"
+#include "driver/options.h"
+#include "driver/run_session.h"
+#include "ir/ir.h"
+
+#include <memory>
+#include <string>
+
+namespace mbc::driver {
+
+class PreparedProgram {
+public:
+  /// prepare()'s result for an input without blocks (a warning, status 0).
+  static constexpr int kNothingToRun = -1;
+
+  /// Compiles `o.files` for `o.engine`, timing the phases. 0 when ready,
+  /// kNothingToRun, or an exit status: 1 source errors, 2 no such main
+  /// program (--main), 4 internal error. Messages go to stderr.
+  int prepare(const Options& o, PhaseTimes& phases);
+
+  /// Runs the main program in a started context. Const: threads share it.
+  mbrt_status run(mbrt_ctx* ctx) const;
+
+  const std::string& mainName() const {
+    return cu_.unit.programs[mainIndex_].name;
+  }
+
+private:
+  std::string engine_;
+  CompiledUnit cu_;
+  ir::Module module_;
+  std::unique_ptr<codegen::Jit> jit_;
+  int mainIndex_ = -1;
+};
+
+} // namespace mbc::driver
