@@ -1,6 +1,8 @@
 // The mbc command: `mbc run` executes a Macro B program, `mbc check` only
-// reports diagnostics, `mbc emit-ir` prints the (optimised) IR, `mbc compile`
-// writes an object and `mbc build` an executable.
+// reports diagnostics, `mbc batch` runs it once per row of a table, `mbc
+// emit-ir` prints the (optimised) IR, `mbc compile` writes an object and `mbc
+// build` an executable.
+#include "driver/batch_command.h"
 #include "driver/compile_command.h"
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
@@ -27,6 +29,9 @@ int dispatch(int argc, char** argv) {
   }
   if (options->command == "compile") {
     return compileCommand(*options);
+  }
+  if (options->command == "batch") {
+    return batchCommand(*options);
   }
   if (options->command == "build") {
     return buildCommand(*options);

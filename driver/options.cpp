@@ -11,8 +11,8 @@ namespace mbc::driver {
 namespace {
 
 bool isCommand(const std::string& c) {
-  return c == "run" || c == "check" || c == "emit-ir" || c == "compile" ||
-         c == "build";
+  return c == "run" || c == "batch" || c == "check" || c == "emit-ir" ||
+         c == "compile" || c == "build";
 }
 
 bool setValueOption(Options& o, const std::string& name,
@@ -36,6 +36,22 @@ bool setValueOption(Options& o, const std::string& name,
     o.emit = value;
   } else if (name == "--cpu") {
     o.cpu = value;
+  } else if (name == "--params") {
+    o.paramsPath = value;
+  } else if (name == "--out") {
+    o.outDir = value;
+  } else if (name == "--shard") {
+    o.shard = value;
+  } else if (name == "-j" || name == "--jobs") {
+    double jobs = 0;
+    if (!parseNumber(value, jobs) || jobs < 1 || jobs > 256 ||
+        jobs != static_cast<int>(jobs)) {
+      error = fmt::format("{} expects a number of threads from 1 to 256, "
+                          "got '{}'",
+                          name, value);
+      return false;
+    }
+    o.jobs = static_cast<int>(jobs);
   } else {
     o.tableName = value;
   }
@@ -45,7 +61,9 @@ bool setValueOption(Options& o, const std::string& name,
 bool isValueOption(const std::string& name) {
   return name == "--disable-pass" || name == "-x" || name == "--engine" ||
          name == "-o" || name == "--header" || name == "--emit" ||
-         name == "--table" || name == "--cpu";
+         name == "--table" || name == "--cpu" || name == "--params" ||
+         name == "--out" || name == "--shard" || name == "-j" ||
+         name == "--jobs";
 }
 
 bool isCIdentifier(const std::string& s) {
@@ -58,6 +76,48 @@ bool isCIdentifier(const std::string& s) {
     if (!ok) {
       return false;
     }
+  }
+  return true;
+}
+
+// mbc batch writes every row's outputs under --out, and needs its table.
+bool checkBatchOptions(const Options& o, std::string& error) {
+  const RunOptions& r = o.run;
+  const std::pair<bool, const char*> single[] = {
+      {!r.toolpathPath.empty(), "--toolpath"},
+      {!r.dprntPath.empty(), "--dprnt"},
+      {!r.varsOutPath.empty(), "--vars-out"},
+      {!r.gcodePath.empty(), "--gcode"},
+      {!r.svgPath.empty(), "--svg"},
+      {!r.statePath.empty(), "--state"},
+      {r.time, "--time"}};
+  const std::pair<bool, const char*> batchOnly[] = {
+      {!o.paramsPath.empty(), "--params"},
+      {!o.outDir.empty(), "--out"},
+      {!o.shard.empty(), "--shard"},
+      {o.jobs != 0, "-j"},
+      {o.combined, "--combined"}};
+  if (o.command != "batch") {
+    for (const auto& [given, name] : batchOnly) {
+      if (given) {
+        error = fmt::format("{} is only available with batch", name);
+        return false;
+      }
+    }
+    return true;
+  }
+  for (const auto& [given, name] : single) {
+    if (given) {
+      error = fmt::format("{} is a mbc run option: mbc batch writes each "
+                          "row's toolpath, DPRNT, variables and log under "
+                          "--out DIR",
+                          name);
+      return false;
+    }
+  }
+  if (o.paramsPath.empty() || o.outDir.empty()) {
+    error = "mbc batch needs --params TABLE.csv and --out DIR";
+    return false;
   }
   return true;
 }
@@ -86,6 +146,8 @@ bool checkOptions(const Options& o, std::string& error) {
         fmt::format("--shared writes a shared library, not --emit={}", o.emit);
   } else if (o.shared && o.outputPath == "-") {
     error = "mbc compile --shared needs -o FILE.so";
+  } else if (!checkBatchOptions(o, error)) {
+    return false;
   } else if (!o.tableName.empty() && !isCIdentifier(o.tableName)) {
     error = fmt::format("--table '{}' is not a C identifier", o.tableName);
   } else {
@@ -100,6 +162,12 @@ std::string usageText() {
   return "usage: mbc run FILE... [--engine jit|interp|ir] [-O0..-O3]\n" +
          runOptionsUsage(8) +
          "        [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
+         "       mbc batch FILE... --params TABLE.csv --out DIR [-j N]\n"
+         "        [--shard I/N] [--combined] [--engine jit|interp|ir]\n"
+         "        [-O0..-O3] [--main O1234] [--set '#N=V']... [--arg "
+         "A=1.5]...\n"
+         "        [--machine PATH] [--max-blocks N] [--max-output SIZE]\n"
+         "        [--block-skip[=N]] [--trace]\n"
          "       mbc check FILE...\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "        [--disable-pass NAME]... [--verify-each]\n"
@@ -143,6 +211,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.verbose = true;
     } else if (a == "--shared") {
       o.shared = true;
+    } else if (a == "--combined") {
+      o.combined = true;
     } else if (a == "-c") {
       // compile only: what `mbc compile` always does (as with cc -c)
     } else if (a == "--no-opt") {

@@ -1,5 +1,5 @@
-// Command-line options of `mbc run`, `mbc check`, `mbc emit-ir`,
-// `mbc compile` and `mbc build`.
+// Command-line options of `mbc run`, `mbc batch`, `mbc check`, `mbc
+// emit-ir`, `mbc compile` and `mbc build`.
 #pragma once
 
 #include "driver/run_options.h"
@@ -28,6 +28,11 @@ struct Options {
   std::string cpu;      // --cpu (compile, build): "" generic, "native", a name
   bool shared = false;  // --shared (compile): a shared library
   bool verbose = false; // -v (compile --shared, build): the link command
+  std::string paramsPath; // --params TABLE.csv (batch)
+  std::string outDir;     // --out DIR (batch)
+  std::string shard;      // --shard I/N (batch)
+  int jobs = 0;           // -j N (batch): threads; 0 = one per core
+  bool combined = false;  // --combined (batch): one JSONL file
 };
 
 /// Parses argv; on a usage error returns nullopt after writing the message

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@ namespace mbc::driver {
 
 OutputFile::~OutputFile() {
   finish();
+  std::free(memory_);
 }
 
 bool OutputFile::finish() {
@@ -40,6 +42,21 @@ bool OutputFile::open(const std::string& path) {
   file_ = std::fopen(path.c_str(), "wb");
   owned_ = file_ != nullptr;
   return owned_;
+}
+
+bool OutputFile::openMemory() {
+  path_ = "(memory)";
+  file_ = open_memstream(&memory_, &memorySize_);
+  owned_ = file_ != nullptr;
+  return owned_;
+}
+
+std::string OutputFile::takeMemory() {
+  std::string bytes(memory_ != nullptr ? memory_ : "", memorySize_);
+  std::free(memory_);
+  memory_ = nullptr;
+  memorySize_ = 0;
+  return bytes;
 }
 
 void OutputFile::writeText(void* self, const char* data, std::size_t size) {
@@ -85,7 +102,7 @@ bool replaceFile(const std::string& path, const std::string& content) {
   return ok;
 }
 
-bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
+std::string variablesJson(const mbrt_ctx* ctx) {
   std::string json = "{";
   bool first = true;
   for (int n = 100; n <= 999; ++n) {
@@ -97,7 +114,11 @@ bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
     first = false;
   }
   json += "}\n";
-  return replaceFile(path, json);
+  return json;
+}
+
+bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
+  return replaceFile(path, variablesJson(ctx));
 }
 
 } // namespace mbc::driver

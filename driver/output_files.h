@@ -20,6 +20,10 @@ public:
   /// Opens path for writing ("-" is standard output); false on failure.
   bool open(const std::string& path);
 
+  /// Writes into memory; finish() leaves the bytes for takeMemory().
+  bool openMemory();
+  std::string takeMemory();
+
   void useStdout() {
     file_ = stdout;
     path_ = "-";
@@ -41,13 +45,18 @@ private:
   std::FILE* file_ = nullptr;
   bool owned_ = false;
   std::string path_;
+  char* memory_ = nullptr; // open_memstream's buffer
+  std::size_t memorySize_ = 0;
 };
 
 /// Writes `content` to `path` so that a reader never sees half of it: a
 /// regular file is replaced by rename; "-" is standard output.
 bool replaceFile(const std::string& path, const std::string& content);
 
-/// Writes every common variable that is not vacant as a JSON object.
+/// Every common variable that is not vacant, as a JSON object and a line.
+std::string variablesJson(const mbrt_ctx* ctx);
+
+/// Writes variablesJson to `path` by replaceFile.
 bool writeVariables(const mbrt_ctx* ctx, const std::string& path);
 
 } // namespace mbc::driver

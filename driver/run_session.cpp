@@ -101,7 +101,17 @@ struct MotionOutputs {
 };
 
 bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
-                 OutputFile& dprnt) {
+                 OutputFile& dprnt, bool capture) {
+  if (capture) {
+    motions.ctx = ctx;
+    if (!motions.toolpath.openMemory() || !dprnt.openMemory()) {
+      std::fputs("mbc: error: out of memory\n", stderr);
+      return false;
+    }
+    mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
+    mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
+    return true;
+  }
   if (!o.toolpathPath.empty() && !motions.toolpath.open(o.toolpathPath)) {
     std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
                  o.toolpathPath.c_str());
@@ -181,7 +191,8 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
     }
   } sinksOff{ctx};
 
-  if (!openOutputs(o, ctx, motions, dprnt) || !openGcode(o, ctx, gcode)) {
+  if (!openOutputs(o, ctx, motions, dprnt, log.capture) ||
+      !openGcode(o, ctx, gcode)) {
     return 2;
   }
   mbrt_set_message_sink(ctx, &writeLog, text);
@@ -240,6 +251,11 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx, o.varsOutPath)) {
     lost(o.varsOutPath);
+  }
+  if (log.capture) {
+    log.toolpath = motions.toolpath.takeMemory();
+    log.dprnt = dprnt.takeMemory();
+    log.vars = variablesJson(ctx);
   }
   mbrt_get_stats(ctx, &log.stats);
   printSummary(log.stats, mainName, st != 0, text);

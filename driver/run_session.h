@@ -35,9 +35,13 @@ using CtxPtr = std::unique_ptr<mbrt_ctx, CtxDeleter>;
 CtxPtr createContext(const RunOptions& o);
 
 /// Where a run reports (the operator messages, the trace, the alarm report
-/// and the summary lines) and what a batch keeps of it.
+/// and the summary lines) and what a batch keeps of it. With `capture`, the
+/// toolpath, DPRNT and variables are kept here instead of written to the
+/// options' files.
 struct SessionLog {
   std::FILE* text = stderr;
+  bool capture = false;
+  std::string toolpath, dprnt, vars;
   std::string alarm; // the alarm report's first line, "" after a normal end
   mbrt_stats stats{};
 };

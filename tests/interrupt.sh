@@ -87,4 +87,34 @@ done
 interrupt aot INT ./writes.exe --toolpath aot.jsonl --dprnt aot.dprnt \
   --state aot.state
 whole aot
+
+# A batch: the rows running stop, no other row starts, results.csv keeps
+# the rows that ran. Rows 1 and 2 end at once, rows 3 on spin.
+cat >rows.nc <<'NC'
+O1000
+IF [#500 LT 3] GOTO 10
+WHILE [1 GT 0] DO1
+#1 = #1 + 1
+END1
+N10 DPRNT[ROW*#500[20]]
+M30
+NC
+printf '#500\n1\n2\n3\n4\n5\n6\n' >rows.csv
+"$mbc" batch rows.nc --params rows.csv --out rows -j 2 --max-blocks 1e15 2>rows.err &
+pid=$!
+waited=0
+until [ "$(cat rows/results.csv 2>/dev/null | wc -l)" = 3 ]; do
+  ((waited++ < 600)) || { kill -9 "$pid"; fail "batch: rows 1 and 2 did not end"; }
+  sleep 0.1
+done
+sleep 0.2
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[ "$status" = 130 ] || fail "batch: status $status: $(cat rows.err)"
+[ "$(cut -d, -f1,3 rows/results.csv | tr '\n' ' ')" = \
+  "row,status 1,ended 2,ended 3,interrupted 4,interrupted " ] ||
+  fail "batch: $(cat rows/results.csv)"
+grep -q "interrupted; 2 of the rows did not run" rows.err || fail "batch: $(cat rows.err)"
+grep -qx "ROW *2" rows/2.dprnt || fail "batch: row 2's DPRNT"
 echo ok
