@@ -80,6 +80,12 @@ PY
 "$mbc" batch holes.nc --params big.csv --out big-j1 --combined -j 1 2>/dev/null
 cmp -s big/batch.jsonl big-j1/batch.jsonl || fail "-j 1 and -j 2 give different results"
 
+# A progress line on a terminal only, drawn in place.
+! grep -q $'\r' big.err || fail "a progress line in a file"
+script -qec "'$mbc' batch holes.nc --params big.csv --out tty --combined" /dev/null >tty.out
+grep -qa $'\r\033\\[K\\[#\\{30\\}\\] 10000/10000 rows, 4 alarms, [0-9]* rows/s' tty.out ||
+  { od -c tty.out | tail -5; fail "no progress line on a terminal"; }
+
 # Shards through GNU parallel: together they are the unsharded batch.
 head -1001 big.csv >part.csv
 "$mbc" batch holes.nc --params part.csv --out whole 2>/dev/null
