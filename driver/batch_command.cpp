@@ -298,7 +298,7 @@ int batchCommand(const Options& o) {
   OutputFile::writeText(&results, header, std::strlen(header));
 
   ProgressLine progress(rows.size());
-  std::size_t taken = 0, ended = 0, alarms = 0, errors = 0;
+  std::size_t taken = 0, ended = 0, alarms = 0, errors = 0, interrupted = 0;
   const auto start = std::chrono::steady_clock::now();
   Batch batch(o, program, std::move(rows));
   {
@@ -307,6 +307,7 @@ int batchCommand(const Options& o) {
       ++taken;
       ended += r.exit == 0;
       errors += r.exit == 2;
+      interrupted += std::strcmp(statusName(r), "interrupted") == 0;
       if (r.exit == 3) {
         if (++alarms <= kShownAlarms) {
           progress.print(fmt::format("mbc: batch: row {} ({}:{}): {}", row.id,
@@ -347,14 +348,17 @@ int batchCommand(const Options& o) {
       shard.count == 1 ? fmt::format("{} rows", taken)
                        : fmt::format("{} rows (shard {}/{} of {} rows)", taken,
                                      shard.index, shard.count, all.size());
-  const std::string lost =
+  std::string others =
       errors ? fmt::format(", {} with lost output", errors) : "";
+  if (interrupted) {
+    others += fmt::format(", {} interrupted", interrupted);
+  }
   std::fprintf(stderr,
                "mbc: batch: %s in %.2f s on %zu thread%s (%.0f rows/s): %zu "
                "ended, %zu alarm%s%s; %s\n",
                of.c_str(), seconds, threads, threads == 1 ? "" : "s",
                seconds > 0 ? static_cast<double>(taken) / seconds : 0.0, ended,
-               alarms, alarms == 1 ? "" : "s", lost.c_str(),
+               alarms, alarms == 1 ? "" : "s", others.c_str(),
                (o.combined ? combinedPath : resultsPath).c_str());
   if (const int sig = InterruptScope::signal()) {
     std::fprintf(stderr,
