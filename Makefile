@@ -92,7 +92,8 @@ fuzz: deps
 N ?= 1000
 SEED ?= 1
 difftest: build
-	python3 tools/difftest.py --mbc $(BUILD_DIR)/mbc -n $(N) --seed $(SEED) \
+	python3 tools/difftest.py --mbc $(BUILD_DIR)/mbc \
+	  --engines $(BUILD_DIR)/tests/difftest_engines -n $(N) --seed $(SEED) \
 	  --jobs $(JOBS) --out $(BUILD_DIR)
 
 check-format:

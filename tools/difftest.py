@@ -10,7 +10,11 @@ the --trace record), toolpath, DPRNT and variables. A program that differs is
 reduced line by line to a small one that still differs the same way and
 written to --out.
 
-    tools/difftest.py --mbc build/mbc -n 1000 [--seed 1] [--jobs 2]
+    tools/difftest.py --mbc build/mbc [--engines build/tests/difftest_engines]
+                      -n 1000 [--seed 1] [--jobs 2]
+
+--engines runs all the engines of a program in one process (about twice as
+fast; tests/difftest/engines_test.py checks it writes what mbc run does).
 
 Exit status 0 when every program agreed, 1 when one differed.
 """
@@ -314,19 +318,52 @@ def run(mbc, source, engine, options, work):
     return outputs
 
 
-def compare(mbc, text, work):
-    """The interpreter's exit status, and (engine, output) of the first
-    engine that differs from the interpreter or None."""
-    source = work / "case.nc"
-    source.write_text(text)
-    reference = run(mbc, source, "interp", [], work / "interp")
-    for engine, options in ENGINES:
-        outputs = run(mbc, source, engine, options, work / engine)
+def run_all(engines, source, work):
+    """What every run wrote, interp first then ENGINES, from one process of
+    difftest_engines (tests/difftest/engines_main.cpp); None when that
+    process itself failed (a crash in one engine ends them all)."""
+    try:
+        result = subprocess.run([engines, str(source), MAX_BLOCKS, str(work)],
+                                capture_output=True, timeout=300)
+    except subprocess.TimeoutExpired:
+        return None
+    if result.returncode != 0:
+        return None
+    runs = []
+    for k in range(1 + len(ENGINES)):
+        folder = work / str(k)
+        outputs = {"status": (folder / "status").read_text(),
+                   "stderr": (folder / "stderr").read_text()}
+        for name in OUTPUTS[2:]:
+            path = folder / name
+            outputs[name] = path.read_text() if path.exists() else None
+        runs.append(outputs)
+    return runs
+
+
+def first_difference(reference, runs):
+    """(engine, output) of the first run of ENGINES that differs from the
+    interpreter's, or None."""
+    for (engine, options), outputs in zip(ENGINES, runs):
         for name in OUTPUTS:
             if outputs[name] != reference[name]:
-                engine_text = f"{engine} {' '.join(options)}".strip()
-                return reference["status"], (engine_text, name)
-    return reference["status"], None
+                return f"{engine} {' '.join(options)}".strip(), name
+    return None
+
+
+def compare(mbc, text, work, engines=None):
+    """The interpreter's exit status, and (engine, output) of the first
+    engine that differs from the interpreter or None. With `engines`, one
+    process runs them all; when it fails, each runs in an mbc of its own,
+    which tells which one."""
+    source = work / "case.nc"
+    source.write_text(text)
+    runs = run_all(engines, source, work / "all") if engines else None
+    if runs is None:
+        runs = [run(mbc, source, "interp", [], work / "interp")]
+        runs += [run(mbc, source, engine, options, work / engine)
+                 for engine, options in ENGINES]
+    return runs[0]["status"], first_difference(runs[0], runs[1:])
 
 
 def reduce(text, still_differs):
@@ -349,10 +386,10 @@ def reduce(text, still_differs):
 
 
 def check(job):
-    mbc, seed = job
+    mbc, engines, seed = job
     text = Generator(seed).text()
     with tempfile.TemporaryDirectory() as work:
-        status, found = compare(mbc, text, Path(work))
+        status, found = compare(mbc, text, Path(work), engines)
     return seed, text, status, found
 
 
@@ -364,16 +401,20 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", default=".", help="where reduced cases go")
     parser.add_argument("--show", type=int, help="print the program of a seed")
+    parser.add_argument("--engines", help="build/tests/difftest_engines: all "
+                        "engines of a program in one process (faster)")
     args = parser.parse_args()
     if args.show is not None:
         print(Generator(args.show).text(), end="")
         return 0
     mbc = str(Path(args.mbc).resolve())
-    jobs = [(mbc, seed) for seed in range(args.seed, args.seed + args.n)]
+    engines = str(Path(args.engines).resolve()) if args.engines else None
+    jobs = [(mbc, engines, seed)
+            for seed in range(args.seed, args.seed + args.n)]
     ends = {}
     with multiprocessing.Pool(args.jobs) as pool:
         for done, (seed, text, status, found) in enumerate(
-                pool.imap_unordered(check, jobs), 1):
+                pool.imap(check, jobs), 1):
             ends[status] = ends.get(status, 0) + 1
             if status not in ("0", "3"):
                 # Not a valid program (a generator bug), an internal error,
@@ -397,7 +438,9 @@ def main():
                       file=sys.stderr)
                 return 1
             if done % 100 == 0:
-                print(f"difftest: {done} programs agree", file=sys.stderr)
+                # In seed order, so that a long run can resume after it.
+                print(f"difftest: {done} programs agree (seeds {args.seed}-"
+                      f"{args.seed + done - 1})", file=sys.stderr)
     print(f"difftest: {args.n} programs (seeds {args.seed}-"
           f"{args.seed + args.n - 1}; {ends.get('0', 0)} ran to the end,"
           f" {ends.get('3', 0)} stopped with an alarm) agree under interp, "

@@ -1,0 +1,79 @@
+// difftest_engines FILE MAX_BLOCKS DIR: runs FILE as `mbc run FILE --engine E
+// [-O]
+// --trace --max-blocks N --toolpath ... --dprnt ... --vars-out ...` would,
+// under the interpreter, the IR evaluator and the JIT at -O0, -O1 and -O2,
+// all in this one process, and writes what each run wrote to DIR/<k>/
+// (status, stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
+// tools/difftest.py --engines uses it for long runs: one process start
+// instead of five per program.
+#include "driver/prepared_program.h"
+#include "driver/run_session.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+using namespace mbc::driver;
+
+namespace {
+
+struct Config {
+  const char* engine;
+  int optLevel;
+};
+
+constexpr Config kConfigs[] = {
+    {"interp", 2}, {"ir", 2}, {"jit", 0}, {"jit", 1}, {"jit", 2}};
+
+// One run as `mbc run` makes it, standard error going to `dir/stderr`.
+int runConfig(const Config& c, const std::string& file,
+              const std::string& maxBlocks, const std::string& dir) {
+  Options o;
+  o.command = "run";
+  o.files = {file};
+  o.engine = c.engine;
+  o.optLevel = c.optLevel;
+  o.run.trace = true;
+  double limit = 0;
+  parseNumber(maxBlocks, limit);
+  o.run.maxBlocks = static_cast<std::uint64_t>(limit);
+  o.run.toolpathPath = dir + "/toolpath.jsonl";
+  o.run.dprntPath = dir + "/dprnt";
+  o.run.varsOutPath = dir + "/vars.json";
+  PhaseTimes phases;
+  PreparedProgram program;
+  if (int status = program.prepare(o, phases)) {
+    return status == PreparedProgram::kNothingToRun ? 0 : status;
+  }
+  return runOnce(
+      o.run, program.mainName(),
+      [&program](mbrt_ctx* ctx) { return program.run(ctx); }, phases);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: difftest_engines FILE MAX_BLOCKS DIR\n");
+    return 2;
+  }
+  const int savedStderr = dup(STDERR_FILENO);
+  for (std::size_t k = 0; k < std::size(kConfigs); ++k) {
+    const std::string dir = std::string(argv[3]) + "/" + std::to_string(k);
+    std::filesystem::create_directories(dir);
+    std::fflush(stderr);
+    const int err =
+        open((dir + "/stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(err, STDERR_FILENO);
+    close(err);
+    const int status = runConfig(kConfigs[k], argv[1], argv[2], dir);
+    std::fflush(stderr);
+    dup2(savedStderr, STDERR_FILENO);
+    std::ofstream(dir + "/status") << status;
+  }
+  return 0;
+}
