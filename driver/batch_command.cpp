@@ -38,14 +38,12 @@ struct RowResult {
   int exit = 0; // runSession's exit status
   std::string alarm;
   mbrt_stats stats{};
-  // Kept for the combined file; written to the row's files otherwise.
-  std::string toolpath, dprnt, vars, log;
+  std::string combined; // the row's line of the combined JSONL
+};
 
-  void dropOutputs() {
-    for (std::string* s : {&toolpath, &dprnt, &vars, &log}) {
-      std::string().swap(*s);
-    }
-  }
+/// What a row wrote: its files, or its line of the combined JSONL.
+struct RowOutputs {
+  std::string toolpath, dprnt, vars, log;
 };
 
 const char* statusName(const RowResult& r) {
@@ -85,6 +83,33 @@ std::string shardSuffix(const Shard& shard) {
              : fmt::format(".shard-{}-of-{}", shard.index, shard.count);
 }
 
+/// One line of the combined JSONL: everything a row's files would hold.
+std::string combinedLine(const BatchRow& row, const RowResult& r,
+                         const RowOutputs& out) {
+  using nlohmann::json;
+  const auto text = [](const std::string& s) {
+    return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+  };
+  std::string vars = out.vars;
+  while (!vars.empty() && vars.back() == '\n') {
+    vars.pop_back();
+  }
+  std::string toolpath = out.toolpath;
+  std::replace(toolpath.begin(), toolpath.end(), '\n', ',');
+  if (!toolpath.empty()) {
+    toolpath.pop_back();
+  }
+  return fmt::format(
+      "{{\"row\":{},\"line\":{},\"status\":\"{}\",\"alarm\":{},"
+      "\"blocks\":{},\"moves\":{},\"feed_length\":{:.3f},"
+      "\"rapid_length\":{:.3f},\"cycle_time\":{:.1f},\"vars\":{},"
+      "\"dprnt\":{},\"log\":{},\"toolpath\":[{}]}}\n",
+      text(row.id), row.line, statusName(r),
+      r.alarm.empty() ? "null" : text(r.alarm), r.stats.blocks, r.stats.moves,
+      r.stats.feed_length, r.stats.rapid_length, r.stats.cycle_time,
+      vars.empty() ? "{}" : vars, text(out.dprnt), text(out.log), toolpath);
+}
+
 class Batch {
 public:
   Batch(const Options& o, const PreparedProgram& program,
@@ -112,7 +137,7 @@ public:
       lock.unlock();
       while (next < rows_.size() && isDone(next)) {
         take(rows_[next], results_[next]);
-        results_[next].dropOutputs();
+        std::string().swap(results_[next].combined);
         ++next;
       }
     }
@@ -175,25 +200,25 @@ private:
     text.finish();
     r.alarm = std::move(log.alarm);
     r.stats = log.stats;
-    r.toolpath = std::move(log.toolpath);
-    r.dprnt = std::move(log.dprnt);
-    r.vars = std::move(log.vars);
-    r.log = text.takeMemory();
-    if (!o_.combined) {
-      const std::string base = (fs::path(o_.outDir) / row.id).string();
-      const std::pair<const char*, std::string*> files[] = {
-          {".toolpath.jsonl", &r.toolpath},
-          {".dprnt", &r.dprnt},
-          {".vars.json", &r.vars},
-          {".log", &r.log}};
-      for (const auto& [ext, content] : files) {
-        if (!writeWhole(base + ext, *content)) {
-          std::fprintf(stderr, "mbc: error: cannot write '%s%s': %s\n",
-                       base.c_str(), ext, std::strerror(errno));
-          r.exit = 2;
-        }
+    const RowOutputs out{std::move(log.toolpath), std::move(log.dprnt),
+                         std::move(log.vars), text.takeMemory()};
+    // The line is made here, on the row's thread, not by the one writer.
+    if (o_.combined) {
+      r.combined = combinedLine(row, r, out);
+      return r;
+    }
+    const std::string base = (fs::path(o_.outDir) / row.id).string();
+    const std::pair<const char*, const std::string*> files[] = {
+        {".toolpath.jsonl", &out.toolpath},
+        {".dprnt", &out.dprnt},
+        {".vars.json", &out.vars},
+        {".log", &out.log}};
+    for (const auto& [ext, content] : files) {
+      if (!writeWhole(base + ext, *content)) {
+        std::fprintf(stderr, "mbc: error: cannot write '%s%s': %s\n",
+                     base.c_str(), ext, std::strerror(errno));
+        r.exit = 2;
       }
-      r.dropOutputs();
     }
     return r;
   }
@@ -207,32 +232,6 @@ private:
   std::condition_variable changed_;
   std::size_t idle_ = 0;
 };
-
-/// One line of the combined JSONL: everything a row's files would hold.
-std::string combinedLine(const BatchRow& row, const RowResult& r) {
-  using nlohmann::json;
-  const auto text = [](const std::string& s) {
-    return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
-  };
-  std::string vars = r.vars;
-  while (!vars.empty() && vars.back() == '\n') {
-    vars.pop_back();
-  }
-  std::string toolpath = r.toolpath;
-  std::replace(toolpath.begin(), toolpath.end(), '\n', ',');
-  if (!toolpath.empty()) {
-    toolpath.pop_back();
-  }
-  return fmt::format(
-      "{{\"row\":{},\"line\":{},\"status\":\"{}\",\"alarm\":{},"
-      "\"blocks\":{},\"moves\":{},\"feed_length\":{:.3f},"
-      "\"rapid_length\":{:.3f},\"cycle_time\":{:.1f},\"vars\":{},"
-      "\"dprnt\":{},\"log\":{},\"toolpath\":[{}]}}\n",
-      text(row.id), row.line, statusName(r),
-      r.alarm.empty() ? "null" : text(r.alarm), r.stats.blocks, r.stats.moves,
-      r.stats.feed_length, r.stats.rapid_length, r.stats.cycle_time,
-      vars.empty() ? "{}" : vars, text(r.dprnt), text(r.log), toolpath);
-}
 
 } // namespace
 
@@ -325,8 +324,7 @@ int batchCommand(const Options& o) {
           r.alarm.empty() ? "" : csvQuoted(r.alarm));
       OutputFile::writeText(&results, line.data(), line.size());
       if (o.combined) {
-        const std::string json = combinedLine(row, r);
-        OutputFile::writeText(&combined, json.data(), json.size());
+        OutputFile::writeText(&combined, r.combined.data(), r.combined.size());
         std::fflush(combined.get());
       }
       // Whole rows on disk as they come, for whoever follows the batch.
