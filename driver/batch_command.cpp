@@ -119,9 +119,10 @@ public:
 
   /// Runs every row on `contexts.size()` threads; the caller's
   /// InterruptScope stops it. Calls `take` for each finished row in table
-  /// order, on this thread.
-  template <typename Take>
-  void run(const std::vector<CtxPtr>& contexts, Take take) {
+  /// order, on this thread, and `caughtUp` when it has taken every row
+  /// finished so far, before it waits for more.
+  template <typename Take, typename CaughtUp>
+  void run(const std::vector<CtxPtr>& contexts, Take take, CaughtUp caughtUp) {
     std::vector<std::thread> workers;
     for (const CtxPtr& ctx : contexts) {
       workers.emplace_back([this, c = ctx.get()] { work(c); });
@@ -140,6 +141,7 @@ public:
         std::string().swap(results_[next].combined);
         ++next;
       }
+      caughtUp();
     }
     for (std::thread& w : workers) {
       w.join();
@@ -302,35 +304,43 @@ int batchCommand(const Options& o) {
   Batch batch(o, program, std::move(rows));
   {
     const InterruptScope interrupts;
-    batch.run(contexts, [&](const BatchRow& row, const RowResult& r) {
-      ++taken;
-      ended += r.exit == 0;
-      errors += r.exit == 2;
-      interrupted += std::strcmp(statusName(r), "interrupted") == 0;
-      if (r.exit == 3) {
-        if (++alarms <= kShownAlarms) {
-          progress.print(fmt::format("mbc: batch: row {} ({}:{}): {}", row.id,
-                                     o.paramsPath, row.line, r.alarm));
-        } else if (alarms == kShownAlarms + 1) {
-          progress.print(
-              fmt::format("mbc: batch: more alarms follow; {} lists every row",
-                          resultsPath));
-        }
-      }
-      const std::string line = fmt::format(
-          "{},{},{},{},{},{:.3f},{:.3f},{:.1f},{}\n", row.id, row.line,
-          statusName(r), r.stats.blocks, r.stats.moves, r.stats.feed_length,
-          r.stats.rapid_length, r.stats.cycle_time,
-          r.alarm.empty() ? "" : csvQuoted(r.alarm));
-      OutputFile::writeText(&results, line.data(), line.size());
-      if (o.combined) {
-        OutputFile::writeText(&combined, r.combined.data(), r.combined.size());
-        std::fflush(combined.get());
-      }
-      // Whole rows on disk as they come, for whoever follows the batch.
-      std::fflush(results.get());
-      progress.update(taken, alarms);
-    });
+    batch.run(
+        contexts,
+        [&](const BatchRow& row, const RowResult& r) {
+          ++taken;
+          ended += r.exit == 0;
+          errors += r.exit == 2;
+          interrupted += std::strcmp(statusName(r), "interrupted") == 0;
+          if (r.exit == 3) {
+            if (++alarms <= kShownAlarms) {
+              progress.print(fmt::format("mbc: batch: row {} ({}:{}): {}",
+                                         row.id, o.paramsPath, row.line,
+                                         r.alarm));
+            } else if (alarms == kShownAlarms + 1) {
+              progress.print(fmt::format(
+                  "mbc: batch: more alarms follow; {} lists every row",
+                  resultsPath));
+            }
+          }
+          const std::string line = fmt::format(
+              "{},{},{},{},{},{:.3f},{:.3f},{:.1f},{}\n", row.id, row.line,
+              statusName(r), r.stats.blocks, r.stats.moves, r.stats.feed_length,
+              r.stats.rapid_length, r.stats.cycle_time,
+              r.alarm.empty() ? "" : csvQuoted(r.alarm));
+          OutputFile::writeText(&results, line.data(), line.size());
+          if (o.combined) {
+            OutputFile::writeText(&combined, r.combined.data(),
+                                  r.combined.size());
+          }
+          progress.update(taken, alarms);
+        },
+        [&] {
+          // Whole rows on disk as they come, for whoever follows the batch.
+          std::fflush(results.get());
+          if (o.combined) {
+            std::fflush(combined.get());
+          }
+        });
   }
   progress.clear();
   bool written = true;
