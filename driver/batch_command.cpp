@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +33,8 @@ namespace fs = std::filesystem;
 
 // Alarm reports shown on stderr; results.csv has them all.
 constexpr std::size_t kShownAlarms = 10;
+// How often the writer takes the rows finished meanwhile.
+constexpr auto kTakeInterval = std::chrono::milliseconds(20);
 
 struct RowResult {
   bool done = false;
@@ -129,19 +132,23 @@ public:
     }
     std::size_t next = 0;
     while (next < rows_.size()) {
-      std::unique_lock lock(mutex_);
-      changed_.wait(
-          lock, [&] { return results_[next].done || idle_ == workers.size(); });
-      if (!results_[next].done) {
-        break; // interrupted: the rest never ran
+      bool allIdle = false;
+      {
+        // Woken when the workers are done, else every kTakeInterval: a
+        // wake-up per row cost more than the rows themselves.
+        std::unique_lock lock(mutex_);
+        allIdle = changed_.wait_for(lock, kTakeInterval,
+                                    [&] { return idle_ == workers.size(); });
       }
-      lock.unlock();
       while (next < rows_.size() && isDone(next)) {
         take(rows_[next], results_[next]);
         std::string().swap(results_[next].combined);
         ++next;
       }
       caughtUp();
+      if (allIdle) {
+        break; // every row taken, or interrupted: the rest never ran
+      }
     }
     for (std::thread& w : workers) {
       w.join();
@@ -166,7 +173,6 @@ private:
       r.done = true;
       std::lock_guard lock(mutex_);
       results_[i] = std::move(r);
-      changed_.notify_one();
     }
     std::lock_guard lock(mutex_);
     ++idle_;
