@@ -194,6 +194,59 @@ def startup(mbc, runs, work):
     return rows
 
 
+BATCH_ROWS = 10000
+BATCH_SUMMARY = re.compile(r"mbc: batch: \d+ rows in ([0-9.]+) s")
+
+
+def batch_throughput(mbc, runs, work):
+    """Median (whole process s, rows phase s) of `mbc batch` over a
+    BATCH_ROWS-row table of examples/sim-loop/pocket.nc, per output mode,
+    engine and thread count. The rows phase is the time the summary line
+    reports: after compilation, which one thread does."""
+    table = Path(work) / "pockets.csv"
+    with open(table, "w") as f:
+        f.write("X,Z,R,D,Q,F\n")
+        for i in range(BATCH_ROWS):
+            f.write(f"{i % 5 * 100},{-2 - i % 7},{10 + i % 40 * 0.5},"
+                    f"{6 + i % 3 * 2},1.5,{300 + i % 4 * 100}\n")
+    cycle = HERE.parent / "examples" / "sim-loop" / "pocket.nc"
+    results = {}
+    for mode, extra in (("combined JSONL", ["--combined"]),
+                        ("files per row", [])):
+        for engine in ("jit", "interp"):
+            for jobs in (1, 2):
+                print(f"bench: batch {mode} {engine} -j {jobs}",
+                      file=sys.stderr)
+                walls, phases = [], []
+                for run in range(runs):
+                    # A new folder each time: deleting 40 000 files just
+                    # before a run would be timed with it.
+                    out = Path(work) / f"batch-{len(results)}-{run}"
+                    wall, _, stderr = run_once(
+                        [mbc, "batch", str(cycle), "--params", str(table),
+                         "--out", str(out), "--engine", engine, "-j",
+                         str(jobs), *extra])
+                    walls.append(wall)
+                    phases.append(float(BATCH_SUMMARY.search(stderr)[1]))
+                results[(mode, engine, jobs)] = (statistics.median(walls),
+                                                 statistics.median(phases))
+    for out in Path(work).glob("batch-*"):
+        shutil.rmtree(out)
+    return results
+
+
+def batch_table(results):
+    lines = ["| output | engine | rows/s, 1 thread | rows/s, 2 threads |"
+             " speed-up, rows phase | speed-up, whole process |",
+             "|---|---|---|---|---|---|"]
+    for mode, engine in dict.fromkeys((m, e) for m, e, _ in results):
+        one, two = results[(mode, engine, 1)], results[(mode, engine, 2)]
+        lines.append(f"| {mode} | {engine} | {BATCH_ROWS / one[1]:.0f} | "
+                     f"{BATCH_ROWS / two[1]:.0f} | {one[1] / two[1]:.2f} | "
+                     f"{one[0] / two[0]:.2f} |")
+    return lines
+
+
 def micro(exe, runs):
     """Median ns per operation of each Google Benchmark in bench/micro."""
     output = subprocess.run(
@@ -329,6 +382,7 @@ def main():
                 modes[name] = output_modes(mbc, workload, args.runs, work)
         compiles = compile_scaling(mbc, work, args.compile_timeout)
         small = startup(mbc, args.runs, work)
+        batch = batch_throughput(mbc, args.runs, work)
         operations = micro(args.micro, args.runs) if args.micro else {}
     report = "\n".join([
         "# mbc benchmarks", "",
@@ -360,6 +414,16 @@ def main():
         "examples/bolt_circle.nc, whole process, median of"
         f" {args.runs}.", "",
         *startup_table(small), "",
+        "## Batch throughput", "",
+        f"`mbc batch` of a {BATCH_ROWS}-row table of examples/sim-loop/"
+        "pocket.nc (a circular pocket, about 40 moves a row), median of"
+        f" {args.runs}: rows per second of the rows phase (after"
+        " compilation, as the summary line reports it) on one thread and"
+        " on two (`-j`), and the speed-up of that phase and of the whole"
+        " process (start-up and compilation are not shared out), with the"
+        " rows' results in one combined JSONL file or in four files per"
+        " row.", "",
+        *batch_table(batch), "",
         "## Runtime operations", "",
         "In-process CPU time of one operation of the runtime that every"
         " engine calls (bench/micro, Google Benchmark), median of"
