@@ -1,13 +1,13 @@
-// difftest_engines FILE MAX_BLOCKS DIR: runs FILE as `mbc run FILE --engine E
-// [-O]
-// --trace --max-blocks N --toolpath ... --dprnt ... --vars-out ...` would,
-// under the interpreter, the IR evaluator and the JIT at -O0, -O1 and -O2,
-// all in this one process, and writes what each run wrote to DIR/<k>/
-// (status, stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
+// difftest_engines FILE MAX_BLOCKS DIR: runs FILE as `mbc run FILE
+// --engine E [-O] --trace --max-blocks N --toolpath ... --dprnt ...
+// --vars-out ...` would, under the interpreter, the IR evaluator and the
+// JIT at -O0, -O1 and -O2, all in this one process (through runCommand, as
+// mbc run does), and writes what each run wrote to DIR/<k>/ (status,
+// stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
 // tools/difftest.py --engines uses it for long runs: one process start
 // instead of five per program.
-#include "driver/prepared_program.h"
-#include "driver/run_session.h"
+#include "driver/run_command.h"
+#include "driver/run_options.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -44,14 +44,7 @@ int runConfig(const Config& c, const std::string& file,
   o.run.toolpathPath = dir + "/toolpath.jsonl";
   o.run.dprntPath = dir + "/dprnt";
   o.run.varsOutPath = dir + "/vars.json";
-  PhaseTimes phases;
-  PreparedProgram program;
-  if (int status = program.prepare(o, phases)) {
-    return status == PreparedProgram::kNothingToRun ? 0 : status;
-  }
-  return runOnce(
-      o.run, program.mainName(),
-      [&program](mbrt_ctx* ctx) { return program.run(ctx); }, phases);
+  return runCommand(o);
 }
 
 } // namespace
