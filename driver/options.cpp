@@ -108,9 +108,9 @@ bool checkBatchOptions(const Options& o, std::string& error) {
   }
   for (const auto& [given, name] : single) {
     if (given) {
-      error = fmt::format("{} is a mbc run option: mbc batch writes each "
-                          "row's toolpath, DPRNT, variables and log under "
-                          "--out DIR",
+      error = fmt::format("{} is an option of mbc run: mbc batch writes "
+                          "each row's toolpath, DPRNT, variables and log "
+                          "under --out DIR",
                           name);
       return false;
     }
@@ -164,10 +164,9 @@ std::string usageText() {
          "        [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc batch FILE... --params TABLE.csv --out DIR [-j N]\n"
          "        [--shard I/N] [--combined] [--engine jit|interp|ir]\n"
-         "        [-O0..-O3] [--main O1234] [--set '#N=V']... [--arg "
-         "A=1.5]...\n"
-         "        [--machine PATH] [--max-blocks N] [--max-output SIZE]\n"
-         "        [--block-skip[=N]] [--trace]\n"
+         "        [-O0..-O3] [--main O1234] [--set '#N=V']...\n"
+         "        [--arg A=1.5]... [--machine PATH] [--max-blocks N]\n"
+         "        [--max-output SIZE] [--block-skip[=N]] [--trace]\n"
          "       mbc check FILE...\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "        [--disable-pass NAME]... [--verify-each]\n"
