@@ -100,36 +100,35 @@ struct MotionOutputs {
   }
 };
 
+/// The toolpath, the drawing and DPRNT: files (DPRNT defaults to standard
+/// output) or, with `capture`, memory.
 bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
                  OutputFile& dprnt, bool capture) {
+  motions.ctx = ctx;
   if (capture) {
-    motions.ctx = ctx;
     if (!motions.toolpath.openMemory() || !dprnt.openMemory()) {
       std::fputs("mbc: error: out of memory\n", stderr);
       return false;
     }
+  } else {
+    const std::string* failed = nullptr;
+    if (!o.toolpathPath.empty() && !motions.toolpath.open(o.toolpathPath)) {
+      failed = &o.toolpathPath;
+    } else if (o.dprntPath.empty()) {
+      dprnt.useStdout();
+    } else if (!dprnt.open(o.dprntPath)) {
+      failed = &o.dprntPath;
+    }
+    if (failed != nullptr) {
+      std::fprintf(stderr, "mbc: error: cannot write '%s'\n", failed->c_str());
+      return false;
+    }
+    if (!o.svgPath.empty()) {
+      motions.svg.emplace();
+    }
+  }
+  if (motions.toolpath.get() != nullptr || motions.svg) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
-    mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
-    return true;
-  }
-  if (!o.toolpathPath.empty() && !motions.toolpath.open(o.toolpathPath)) {
-    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
-                 o.toolpathPath.c_str());
-    return false;
-  }
-  if (!o.svgPath.empty()) {
-    motions.svg.emplace();
-  }
-  motions.ctx = ctx;
-  if (!o.toolpathPath.empty() || motions.svg) {
-    mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
-  }
-  if (o.dprntPath.empty()) {
-    dprnt.useStdout();
-  } else if (!dprnt.open(o.dprntPath)) {
-    std::fprintf(stderr, "mbc: error: cannot write '%s'\n",
-                 o.dprntPath.c_str());
-    return false;
   }
   mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
   return true;
