@@ -179,13 +179,21 @@ llvm::Function* emitResume(ModuleState& m) {
   b.SetInsertPoint(called);
   answerSeq();
 
-  // M99 in the main program ends a batch run (spec Part A).
+  // M99 P in the main program jumps to that N of it (spec §5.8); M99
+  // ends a batch run (spec Part A).
   b.SetInsertPoint(ret);
   llvm::Value* depth = b.CreateCall(abi.fn(Rt::mbrt_call_depth), {ctx});
   llvm::BasicBlock* inMain = block("main");
+  llvm::BasicBlock* mainEnd = block("main.end");
   llvm::BasicBlock* inCall = block("call");
   b.CreateCondBr(b.CreateICmpEQ(depth, i32(0)), inMain, inCall);
   b.SetInsertPoint(inMain);
+  llvm::BasicBlock* mainSeq = block("main.seq");
+  b.CreateCondBr(b.CreateICmpNE(field(abi.i32, kFlowHasSeq), i32(0)), mainSeq,
+                 mainEnd);
+  b.SetInsertPoint(mainSeq);
+  b.CreateRet(i32(kResumeSeq));
+  b.SetInsertPoint(mainEnd);
   b.CreateCall(abi.fn(Rt::mbrt_finish), {ctx, i32(MBRT_END_MAIN_M99)});
   b.CreateRet(i32(MBRT_STOP));
   b.SetInsertPoint(inCall);

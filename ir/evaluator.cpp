@@ -244,6 +244,10 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
       return 0;
     }
     case MBRT_FLOW_RETURN:
+      if (depth == 0 && flow.has_seq != 0) {
+        // M99 P in the main program jumps to that N of it (spec §5.8).
+        return resumeAt(fn, frame, inst, flow.seq, next);
+      }
       if (depth == 0) {
         // M99 in the main program ends a batch run (spec Part A).
         mbrt_finish(ctx_, MBRT_END_MAIN_M99);
