@@ -61,6 +61,18 @@ bool insideModalCall(const mbrt_ctx& ctx, int id) {
                      [id](const CallRecord& c) { return c.modalId == id; });
 }
 
+/// The modal call a block of the running program makes: the latest G66 or
+/// G66.1 in force that is not already running, so that with two in force
+/// the moves of the later one's macro call the earlier one's (spec §5.6).
+const ModalCall* activeModalCall(const mbrt_ctx& ctx) {
+  for (auto it = ctx.modalCalls.rbegin(); it != ctx.modalCalls.rend(); ++it) {
+    if (!insideModalCall(ctx, it->id)) {
+      return &*it;
+    }
+  }
+  return nullptr;
+}
+
 /// G codes in tenths (G66.1 -> 661); -1 for a word that is no G code.
 int gTenths(const mbrt_word& word) {
   if (word.letter != 'G') {
@@ -247,11 +259,10 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
       return 0;
     }
   }
-  if (!ctx.modalCalls.empty() && ctx.modalCalls.back().everyBlock &&
-      !insideModalCall(ctx, ctx.modalCalls.back().id)) {
-    const ModalCall& modal = ctx.modalCalls.back();
-    askCall(ctx, flow, MBRT_CALL_MODAL, modal.program, modal.repeat,
-            std::vector<mbrt_word>(words, words + count), modal.id, true);
+  const ModalCall* modal = activeModalCall(ctx);
+  if (modal != nullptr && modal->everyBlock) {
+    askCall(ctx, flow, MBRT_CALL_MODAL, modal->program, modal->repeat,
+            std::vector<mbrt_word>(words, words + count), modal->id, true);
     *taken = true;
     return 0;
   }
@@ -266,10 +277,8 @@ mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
   if (ctx.profile.codeCalls && !insideCodeCall(ctx)) {
     wantCodeSubprograms(ctx, codes, wanted);
   }
-  const ModalCall* modal =
-      ctx.modalCalls.empty() ? nullptr : &ctx.modalCalls.back();
-  if (codes.moved && modal != nullptr && !modal->everyBlock &&
-      !insideModalCall(ctx, modal->id)) {
+  const ModalCall* modal = activeModalCall(ctx);
+  if (codes.moved && modal != nullptr && !modal->everyBlock) {
     wanted.push_back({MBRT_CALL_MODAL, modal->program, 0, 0.0, "G66", 0});
   }
   if (wanted.empty()) {
