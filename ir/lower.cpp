@@ -415,7 +415,10 @@ ValueId FunctionLowering::lowerNum(const Expr& e, char roundLetter) {
 
 ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
   const Expr& arg = *e.args[0];
-  if (e.builtin == Builtin::Adp && arg.isBareVariable()) {
+  if (e.builtin == Builtin::Adp) {
+    if (!arg.isBareVariable()) {
+      return lowerNum(arg); // no macro argument: ADP is the identity
+    }
     ValueId number =
         arg.kind == ExprKind::Var ? constant(arg.var) : lowerNum(*arg.args[0]);
     return emit(Op::Adp, {number});

@@ -24,6 +24,8 @@ M99
 O2100
 #103 = #24 * 1000 + #25 * 100 + #18 * 10000 + #11
 #104 = ADP[#24] + ADP[#25]
+; ADP of a value that is no variable is that value.
+#119 = ADP[#24 * 2] + ADP[5] + ADP[[#24]]
 M99
 O2200
 #105 = #105 + #1
