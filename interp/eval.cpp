@@ -90,6 +90,13 @@ mbrt_status Interpreter::evalCond(const Expr& e, bool& out) {
     if (mbrt_status st = eval(*e.args[1], b)) {
       return st;
     }
+    // Only a bare reference is vacant (spec §2.3): `[#1] EQ #0` is 0 EQ #0.
+    if (!e.args[0]->isBareVariable()) {
+      a = numeric(a);
+    }
+    if (!e.args[1]->isBareVariable()) {
+      b = numeric(b);
+    }
     out = evalCompare(e.relOp, a, b);
     return 0;
   }

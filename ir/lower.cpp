@@ -387,10 +387,14 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
     case ExprKind::Compare: {
       static constexpr Op kOps[] = {Op::Eq, Op::Ne, Op::Gt,
                                     Op::Ge, Op::Lt, Op::Le};
-      // EQ and NE tell vacant from 0; the others read vacant as 0.
+      // EQ and NE tell a vacant bare reference from 0; the others, like
+      // arithmetic, read vacant as 0 (spec §2.3).
       bool equality = e.relOp == RelOp::Eq || e.relOp == RelOp::Ne;
-      ValueId a = equality ? lowerExpr(*e.args[0]) : lowerNum(*e.args[0]);
-      ValueId b = equality ? lowerExpr(*e.args[1]) : lowerNum(*e.args[1]);
+      auto operand = [&](const Expr& x) {
+        return equality && x.isBareVariable() ? lowerExpr(x) : lowerNum(x);
+      };
+      ValueId a = operand(*e.args[0]);
+      ValueId b = operand(*e.args[1]);
       return emit(kOps[static_cast<int>(e.relOp)], {a, b});
     }
     case ExprKind::Logical: {
