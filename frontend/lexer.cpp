@@ -142,7 +142,7 @@ void Lexer::findTextBounds() {
       findClosingPercent(static_cast<std::uint32_t>(first) + 1) !=
           std::string_view::npos) {
     pos_ = static_cast<std::uint32_t>(first) + 1;
-    while (pos_ < size && text_[pos_] != '\n') {
+    while (pos_ < size && text_[pos_] != '\n' && !isLoneCr(pos_)) {
       ++pos_;
     }
   } else if (first != std::string_view::npos) {

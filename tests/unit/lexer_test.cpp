@@ -75,6 +75,8 @@ TEST(Lexer, CrLfAndLoneCrEndBlocks) {
 TEST(Lexer, PercentMarksTheProgramText) {
   EXPECT_EQ(kinds(lex("leader\n%\n#1=1\n%\n#2=2\n")), "; # N1 ? N1 ; ");
   EXPECT_EQ(kinds(lex("#1=1 (50% DONE)\n%\n")), "# N1 ? N1 ? ; ");
+  // The '%' line ends at a lone CR as at LF (old Mac files).
+  EXPECT_EQ(kinds(lex("%\r#1=1\r%\r")), "; # N1 ? N1 ; ");
 }
 
 } // namespace
