@@ -135,6 +135,7 @@ void Parser::parseBlock() {
   Block b;
   b.range.begin = tok_.range.begin;
   b.line = sources_.lineCol(tok_.range.begin).line;
+  SourceRange seqRange;
   try {
     if ((tok_.kind == Tok::Letter && tok_.text == "O") ||
         tok_.kind == Tok::ProgramName) {
@@ -168,11 +169,14 @@ void Parser::parseBlock() {
           fail();
         }
         b.seq = static_cast<int>(tok_.number);
+        seqRange = {n.range.begin, tok_.range.begin.offset + tok_.range.length -
+                                       n.range.begin.offset};
         advance();
       }
     }
     parseStatement(b);
     expectEndOfBlock(b.stmt);
+    addSequenceWord(b, seqRange);
   } catch (const BlockError&) {
     std::string_view rest = lexer_.restOfBlock();
     resynchronise();
@@ -184,6 +188,27 @@ void Parser::parseBlock() {
     currentProgram(b.range.begin).blocks.push_back(std::move(b));
   }
   advance();
+}
+
+// #4114 holds the N of the last NC block (spec §6.4): the runtime gets it as
+// the block's first word. A block of just an N number is an NC block too.
+void Parser::addSequenceWord(Block& b, SourceRange range) {
+  if (b.seq < 0 ||
+      (b.stmt.kind != StmtKind::Nc && b.stmt.kind != StmtKind::Empty)) {
+    return;
+  }
+  if (b.stmt.kind == StmtKind::Empty) {
+    b.stmt.kind = StmtKind::Nc;
+    b.stmt.range = range;
+  }
+  Word w;
+  w.letter = 'N';
+  w.kind = WordKind::IntLiteral;
+  w.range = range;
+  w.value = std::make_unique<Expr>();
+  w.value->range = range;
+  w.value->number = b.seq;
+  b.stmt.words.insert(b.stmt.words.begin(), std::move(w));
 }
 
 std::string Parser::sourceText(SourceRange r) const {

@@ -578,6 +578,15 @@ using namespace mbc::rt;
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow) {
   *flow = mbrt_flow{};
+  // The N number comes first: it only sets #4114, and a block of nothing
+  // else does nothing more (it is no block G66.1 calls for, nor traced).
+  if (count > 0 && words[0].letter == 'N') {
+    ctx->lastWords[lastWordIndex('N')] = mbc::numeric(words[0].value);
+    ++words;
+    if (--count == 0) {
+      return 0;
+    }
+  }
   if (ctx->traceSink.fn != nullptr) {
     mbrt_trace_words(ctx, "", words, count);
   }

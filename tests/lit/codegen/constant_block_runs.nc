@@ -17,7 +17,8 @@ M30
 ; CHECK: @.codes = private unnamed_addr constant [12 x i8] c"G\00G\00F\00X\01Y\01X\00"
 ; CHECK: @.values = private unnamed_addr constant [6 x double] [double 9.000000e+01, double 1.000000e+00, double 1.000000e+02, double 1.000000e+00, double -2.500000e+00, double 3.000000e+00]
 ; CHECK: @.run = private unnamed_addr constant %mbrt_nc_run { ptr @.str{{.*}}, ptr @.steps, ptr @.codes, ptr @.values, i64 3 }
-; CHECK: @.steps.{{[0-9]+}} = private unnamed_addr constant [6 x i32] [i32 11, i32 1, i32 0, i32 12, i32 2, i32 1]
+; CHECK: @.steps.{{[0-9]+}} = private unnamed_addr constant [6 x i32] [i32 11, i32 2, i32 0, i32 12, i32 2, i32 2]
+; CHECK: @.codes.{{[0-9]+}} = private unnamed_addr constant [8 x i8] c"N\00X\01X\01Y\01"
 ; CHECK-LABEL: define internal i32 @mbc.body.MAIN(
 ; CHECK-NOT: @mbrt_nc_block(ptr %0, ptr @
 ; CHECK: steps:

@@ -13,7 +13,7 @@ M99 P4
 ; CHECK-NEXT: resume %{{[0-9]+}}, b{{[0-9]+}}, [[LAND:b[0-9]+]]{{$}}
 ; CHECK: call.macro
 ; CHECK-NEXT: resume %{{[0-9]+}}, b{{[0-9]+}}, [[LAND]]{{$}}
-; CHECK: nc M:int
+; CHECK: nc N:int %{{[0-9]+}}, M:int
 ; CHECK-NEXT: resume %{{[0-9]+}}, b{{[0-9]+}}, [[LAND]]{{$}}
 ; CHECK: [[LAND]]:
 ; CHECK-NEXT: [[S:%[0-9]+]] = retseq

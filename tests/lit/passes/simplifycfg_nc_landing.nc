@@ -17,7 +17,7 @@ T1
 G01 X3. M05
 M30
 ; CHECK-LABEL: func @MAIN
-; CHECK: nc G:int {{.*}}, X:dec {{.*}}, F:dec
+; CHECK: nc N:int {{.*}}, G:int {{.*}}, X:dec {{.*}}, F:dec
 ; CHECK-NEXT: resume {{%[0-9]+}}, b{{[0-9]+}} []
 ; CHECK: nc M:int
 ; CHECK-NEXT: resume {{%[0-9]+}}, b{{[0-9]+}}, b{{[0-9]+}}{{$}}
@@ -28,5 +28,5 @@ M30
 ; CHECK: nc M:int
 ; CHECK-NEXT: resume {{%[0-9]+}}, b{{[0-9]+}} []
 ; G66-LABEL: func @MAIN
-; G66: nc G:int {{.*}}, X:dec {{.*}}, F:dec
+; G66: nc N:int {{.*}}, G:int {{.*}}, X:dec {{.*}}, F:dec
 ; G66-NEXT: resume {{%[0-9]+}}, b{{[0-9]+}}, b{{[0-9]+}}{{$}}
