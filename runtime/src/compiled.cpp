@@ -68,7 +68,11 @@ mbrt_status mbrt_builtin(mbrt_ctx* ctx, int builtin, double a, double b,
 
 mbrt_status mbrt_round_address(mbrt_ctx* ctx, int letter, double x,
                                double* out) {
-  const double inc = mbrt_address_increment(ctx, static_cast<char>(letter));
-  *out = roundHalfAway(numeric(x) / inc) * inc;
+  // The same rounding as the address's own (a decimal tie such as 1.0005
+  // rounds up although 1.0005 / 0.001 is 1000.4999...), in whole
+  // increments per unit so that the result is the nearest double.
+  const double perUnit = std::round(
+      1.0 / mbrt_address_increment(ctx, static_cast<char>(letter)));
+  *out = roundToCounts(numeric(x), perUnit) / perUnit;
   return 0;
 }
