@@ -79,66 +79,68 @@ AlarmId evalBitwise(BinOp op, double a, double b, Num* out) {
   return finish(static_cast<double>(result), out);
 }
 
-/// The angle reduced exactly to [0, 360) so that multiples of 30 degrees can
-/// be recognised whatever the number of turns.
-double reduceDegrees(double degrees) {
-  // fmod leaves an angle under one turn as it is; it is slow enough to skip.
-  double reduced =
-      std::fabs(degrees) < 360.0 ? degrees : std::fmod(degrees, 360.0);
-  if (reduced < 0.0) {
-    reduced += 360.0;
+/// sin and cos of one angle.
+struct SinCos {
+  double sin;
+  double cos;
+};
+
+/// 0 <= x <= 45 degrees; the values at 0, 30 and 45 are the exact ones
+/// rounded once (std::sin of 30 degrees in radians is not quite 0.5).
+SinCos firstOctant(double x) {
+  if (x == 0.0) {
+    return {0.0, 1.0};
   }
-  // A tiny negative angle plus 360 can round up to 360.
-  return reduced >= 360.0 ? 0.0 : positiveZero(reduced);
+  if (x == 30.0) {
+    return {0.5, std::numbers::sqrt3 / 2.0};
+  }
+  if (x == 45.0) {
+    return {std::numbers::sqrt2 / 2.0, std::numbers::sqrt2 / 2.0};
+  }
+  const double radians = x / kDegPerRad;
+  return {std::sin(radians), std::cos(radians)};
 }
 
-/// sin(k * 30 degrees) when it is exactly representable (0, +-0.5, +-1);
-/// the irrational values (+-sqrt(3)/2) are left to std::sin.
-std::optional<double> exactSinOfSteps(int steps) {
-  switch (steps % 12) {
-    case 0:
-    case 6:
-      return 0.0;
+/// sin and cos of |degrees| by exact reduction to the first octant, so
+/// that the usual identities hold bit for bit: SIN[-a] = -SIN[a],
+/// COS[-a] = COS[a], SIN[a] = COS[90 - a], SIN[a + 360] = SIN[a], and the
+/// multiples of 30 and 45 degrees give the exact values rounded once.
+SinCos sinCosOfMagnitude(double degrees) {
+  const double a = std::fabs(degrees);
+  // fmod is exact; an angle under one turn skips it (it is slow).
+  const double turn = a < 360.0 ? a : std::fmod(a, 360.0);
+  // Whole quarter turns: each subtraction is exact (Sterbenz).
+  const int quarter = turn >= 270.0   ? 3
+                      : turn >= 180.0 ? 2
+                      : turn >= 90.0  ? 1
+                                      : 0;
+  const double x = turn - 90.0 * quarter;
+  SinCos sc{};
+  if (x > 45.0) {
+    const SinCos other = firstOctant(90.0 - x);
+    sc = {other.cos, other.sin};
+  } else {
+    sc = firstOctant(x);
+  }
+  switch (quarter) {
     case 1:
-    case 5:
-      return 0.5;
+      return {sc.cos, -sc.sin};
+    case 2:
+      return {-sc.sin, -sc.cos};
     case 3:
-      return 1.0;
-    case 7:
-    case 11:
-      return -0.5;
-    case 9:
-      return -1.0;
+      return {-sc.cos, sc.sin};
     default:
-      return std::nullopt;
+      return sc;
   }
-}
-
-/// `phaseSteps` is 0 for sine and 3 (90 degrees) for cosine.
-std::optional<double> exactTrig(double reduced, int phaseSteps) {
-  // steps * 30 is exact, so the comparison tells an exact multiple of 30
-  // (the quotient alone can round to a whole number).
-  const double steps = roundHalfAway(reduced / 30.0);
-  if (steps * 30.0 != reduced) {
-    return std::nullopt;
-  }
-  return exactSinOfSteps(static_cast<int>(steps) + phaseSteps);
 }
 
 double sinDegrees(double degrees) {
-  const double reduced = reduceDegrees(degrees);
-  if (auto exact = exactTrig(reduced, 0)) {
-    return *exact;
-  }
-  return positiveZero(std::sin(reduced / kDegPerRad));
+  const double s = sinCosOfMagnitude(degrees).sin;
+  return positiveZero(degrees < 0.0 ? -s : s);
 }
 
 double cosDegrees(double degrees) {
-  const double reduced = reduceDegrees(degrees);
-  if (auto exact = exactTrig(reduced, 3)) {
-    return *exact;
-  }
-  return positiveZero(std::cos(reduced / kDegPerRad));
+  return positiveZero(sinCosOfMagnitude(degrees).cos);
 }
 
 /// NAT = 0 reports angles as 0..360 instead of negative (parameter 6004#0).

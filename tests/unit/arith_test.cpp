@@ -249,6 +249,38 @@ TEST(ArithSinCos, OtherAngles) {
   EXPECT_NEAR(call(Builtin::Cos, {-1.0}), 0.9998476951563913, 1e-15);
 }
 
+// sqrt(3)/2 and sqrt(2)/2 rounded once, wherever the angle lies: SIN[60]
+// EQ COS[30] holds, and TAN[45] is 1.
+TEST(ArithSinCos, ExactAtMultiplesOfFortyFiveAndThirty) {
+  const double halfSqrt3 = std::numbers::sqrt3 / 2.0;
+  const double halfSqrt2 = std::numbers::sqrt2 / 2.0;
+  for (double a : {60.0, 120.0, -240.0, -300.0, 420.0}) {
+    EXPECT_EQ(call(Builtin::Sin, {a}), halfSqrt3) << a;
+  }
+  for (double a : {30.0, -30.0, 330.0, 390.0}) {
+    EXPECT_EQ(call(Builtin::Cos, {a}), halfSqrt3) << a;
+  }
+  EXPECT_EQ(call(Builtin::Sin, {240.0}), -halfSqrt3);
+  EXPECT_EQ(call(Builtin::Cos, {150.0}), -halfSqrt3);
+  for (double a : {45.0, 135.0, -225.0, -315.0}) {
+    EXPECT_EQ(call(Builtin::Sin, {a}), halfSqrt2) << a;
+  }
+  EXPECT_EQ(call(Builtin::Cos, {-45.0}), halfSqrt2);
+  EXPECT_EQ(call(Builtin::Cos, {225.0}), -halfSqrt2);
+  EXPECT_EQ(call(Builtin::Tan, {45.0}), 1.0);
+  EXPECT_EQ(call(Builtin::Tan, {-45.0}), -1.0);
+  EXPECT_EQ(call(Builtin::Tan, {135.0}), -1.0);
+}
+
+TEST(ArithSinCos, IdentitiesHoldBitForBit) {
+  for (double a = 0.25; a < 400.0; a += 0.25) {
+    EXPECT_EQ(call(Builtin::Sin, {-a}), -call(Builtin::Sin, {a})) << a;
+    EXPECT_EQ(call(Builtin::Cos, {-a}), call(Builtin::Cos, {a})) << a;
+    EXPECT_EQ(call(Builtin::Sin, {a}), call(Builtin::Cos, {90.0 - a})) << a;
+    EXPECT_EQ(call(Builtin::Sin, {a + 360.0}), call(Builtin::Sin, {a})) << a;
+  }
+}
+
 TEST(ArithSinCos, VacantIsZeroDegrees) {
   EXPECT_EQ(call(Builtin::Sin, {vacant()}), 0.0);
   EXPECT_EQ(call(Builtin::Cos, {vacant()}), 1.0);
