@@ -2,10 +2,11 @@
 """Differential testing of mbc's engines on random Macro B programs.
 
 Generates valid programs (bounded loops, IF/GOTO with computed and
-loop-leaving jumps, G65/M98 nests, indirection across variable ranges,
-vacant values, every function and operator with edge arguments, DPRNT,
-motion), runs each under every engine and optimisation level, and compares
-everything a run writes with the interpreter's: exit status, stderr (alarms,
+loop-leaving jumps, M99 P in the main program, G65/M98 nests, G66 modal
+calls, indirection across variable ranges, vacant values, every function
+and operator with edge arguments, DPRNT, motion, system variables), runs
+each under every engine and optimisation level, and compares everything a
+run writes with the interpreter's: exit status, stderr (alarms,
 the --trace record), toolpath, DPRNT and variables. A program that differs is
 reduced line by line to a small one that still differs the same way and
 written to --out.
@@ -49,6 +50,10 @@ ARGUMENT_LETTERS = "ABCDEFHIJKMQRSTUVWXYZ"
 MACRO_COUNTERS = (27, 28, 29)
 SUB_COUNTERS = (30, 31, 32)
 BRACKET_LIMIT = 5  # PS0118: brackets nest at most 5 deep
+# System variables a run changes: the last N, G codes, F, positions, the
+# simulated clock, the G66 state.
+SYSTEM_READS = ("#4114", "#4001", "#4003", "#4109", "#4012", "#5001",
+                "#5002", "#5003", "#5041", "#3001")
 
 
 class Generator:
@@ -87,8 +92,10 @@ class Generator:
 
     def variable(self, depth):
         roll = self.rng.random()
-        if roll < 0.75:
+        if roll < 0.72:
             return self.direct(33)
+        if roll < 0.75:
+            return self.pick(SYSTEM_READS)
         if roll < 0.8:
             return "#0"
         if depth + 1 < BRACKET_LIMIT:
@@ -119,6 +126,8 @@ class Generator:
                 return (f"ATAN[{self.expression(depth + 1, 1)},"
                         f"{self.expression(depth + 1, 1)}]")
             if name == "ADP":
+                if self.chance(0.2):  # no macro argument: the identity
+                    return f"ADP[{self.expression(depth + 1, 1)}]"
                 return f"ADP[#{self.rng.randint(1, 26)}]"
             safe = SAFE_ARGUMENT.get(name)
             if self.chance(0.15 if safe is None else 0.04):
@@ -160,6 +169,8 @@ class Generator:
 
     def comparison(self, depth):
         left = self.expression(depth, 1)
+        if self.chance(0.1) and depth + 1 < BRACKET_LIMIT:
+            left = f"[{self.variable(depth + 1)}]"
         right = self.pick((self.number(), self.variable(depth), "#0"))
         return f"{left} {self.pick(RELATIONS)} {right}"
 
@@ -194,6 +205,8 @@ class Generator:
         if code != "G00" and self.chance(0.4):
             words.append(f"F{self.rng.randint(50, 3000)}")
         prefix = self.pick(("", "", "G90 ", "G91 "))
+        if self.chance(0.2):  # no GOTO target: #4114 reads it
+            prefix = f"N{self.rng.randint(1000, 1999)} {prefix}"
         return f"{prefix}{code} {' '.join(words)}"
 
     def dprnt(self):
@@ -204,19 +217,21 @@ class Generator:
                          f"[{self.rng.randint(1, 5)}{self.rng.randint(0, 3)}]")
         return f"DPRNT[{'*'.join(items)}]"
 
+    def arguments(self):
+        return " ".join(
+            f"{letter}[{self.expression(1, 1)}]" if self.chance(0.6)
+            else f"{letter}{self.number()}"
+            for letter in self.rng.sample(ARGUMENT_LETTERS,
+                                          self.rng.randint(0, 4)))
+
     def call(self, program, level):
         """G65 to a later macro or M98 to a subprogram, if any."""
         later = [m for m in self.macros if m > program]
         if level == "sub" or (not later and not self.subs):
             return None
         if later and (not self.subs or self.chance(0.6)):
-            args = " ".join(
-                f"{letter}[{self.expression(1, 1)}]" if self.chance(0.6)
-                else f"{letter}{self.number()}"
-                for letter in self.rng.sample(ARGUMENT_LETTERS,
-                                              self.rng.randint(0, 4)))
             repeat = f" L{self.rng.randint(2, 3)}" if self.chance(0.2) else ""
-            return f"G65 P{self.pick(later)}{repeat} {args}".rstrip()
+            return f"G65 P{self.pick(later)}{repeat} {self.arguments()}".rstrip()
         repeat = f" L{self.rng.randint(1, 3)}" if self.chance(0.4) else ""
         return f"M98 P{self.pick(self.subs)}{repeat}"
 
@@ -266,6 +281,9 @@ class Generator:
             elif roll < 0.88 and labels:
                 label = self.pick(labels)
                 lines.append(f"GOTO [{label - 1} + 1]")
+            elif roll < 0.89 and labels and level == "main":
+                # In the main program M99 P jumps like GOTO.
+                lines.append(f"M99 P{self.pick(labels)}")
             else:
                 lines.append(self.assignment())
         return lines
@@ -280,8 +298,16 @@ class Generator:
             lines.append("G90 G17 G21 G00 X0 Y0 Z0 F1000")
         for i, label in enumerate(labels):
             later = labels[i + 1:]
+            # A section of the main program under a G66 modal call; a GOTO
+            # past its G67 leaves it in force under the next one's.
+            modal = level == "main" and self.macros and self.chance(0.2)
+            if modal:
+                lines.append(f"G66 P{self.pick(self.macros)} "
+                             f"{self.arguments()}".rstrip())
             lines += self.body(number, level, [], later,
                                self.rng.randint(2, 8))
+            if modal:
+                lines.append("G67")
             lines.append(f"N{label} #{self.rng.randint(1, 26)} = {label}")
         lines.append("M30" if level == "main" else "M99")
         return lines
