@@ -175,8 +175,8 @@ struct mbrt_ctx {
   // Variables.
   std::vector<mbc::rt::LocalLevel> levels; // back() is the current level
   std::array<mbc::Num, mbc::rt::kCommonEnd> commons{};
-  std::array<mbc::Num, 16> outputSignals{}; // #1100..#1115
-  std::array<mbc::Num, 2> outputWords{};    // #1132, #1133
+  // UO000-UO031 (#1132; bits 0-15 are #1100-#1115) and UO100-UO131 (#1133).
+  std::array<std::uint32_t, 2> outputWords{};
   std::vector<mbc::rt::ToolOffset> toolOffsets;
   std::vector<mbc::rt::AxisCounts> workOffsets;
   double clockMs = 0.0;

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdint>
+#include <limits>
 #include <string_view>
 
 #include "block_calls.h"
@@ -41,24 +43,42 @@ mbrt_status readZero(mbrt_ctx&, int, Num* out) {
   return 0;
 }
 
+/// #1100 + i is bit i of the word #1132 (spec §6.1): one signal, 0 or 1.
 mbrt_status readOutputSignal(mbrt_ctx& ctx, int index, Num* out) {
-  *out = ctx.outputSignals[index];
+  *out = static_cast<double>((ctx.outputWords[0] >> index) & 1U);
   return 0;
 }
 
 mbrt_status writeOutputSignal(mbrt_ctx& ctx, int index, Num value,
                               const char*) {
-  ctx.outputSignals[index] = numeric(value);
+  const double v = numeric(value);
+  if (v != 0.0 && v != 1.0) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("#{} is one signal: 0 or 1, not {}", 1100 + index,
+                             v));
+  }
+  const std::uint32_t bit = 1U << index;
+  ctx.outputWords[0] = v != 0.0 ? ctx.outputWords[0] | bit
+                                : ctx.outputWords[0] & ~bit;
   return 0;
 }
 
+/// 32 signals as one signed 32-bit number.
 mbrt_status readOutputWord(mbrt_ctx& ctx, int index, Num* out) {
-  *out = ctx.outputWords[index];
+  *out = static_cast<double>(static_cast<std::int32_t>(ctx.outputWords[index]));
   return 0;
 }
 
 mbrt_status writeOutputWord(mbrt_ctx& ctx, int index, Num value, const char*) {
-  ctx.outputWords[index] = numeric(value);
+  const double v = roundHalfAway(numeric(value));
+  if (v < std::numeric_limits<std::int32_t>::min() ||
+      v > std::numeric_limits<std::int32_t>::max()) {
+    return raise(ctx, AlarmId::ArgumentOutOfRange,
+                 fmt::format("#{} holds 32 signals: {} is no 32-bit number",
+                             1132 + index, numeric(value)));
+  }
+  ctx.outputWords[index] =
+      static_cast<std::uint32_t>(static_cast<std::int32_t>(v));
   return 0;
 }
 
