@@ -350,11 +350,24 @@ void Parser::finishMacroCall(Stmt& s) {
 }
 
 void Parser::checkDecimalPoint(const Word& w, bool macroArgument) {
-  if (!options_.checkWarnings || w.kind != WordKind::IntLiteral ||
-      w.value->number == 0 || !isLengthAddress(w.letter)) {
+  if (!options_.checkWarnings) {
     return;
   }
-  (void)macroArgument;
+  if (!macroArgument && w.kind == WordKind::DecLiteral &&
+      std::string_view("DHMST").find(w.letter) != std::string_view::npos) {
+    diags_.report(DiagKind::IntegerAddressDecimal, w.range,
+                  std::string(1, w.letter));
+    return;
+  }
+  // A U V W B C are axes only on machines that have them; as macro
+  // arguments on the default machine they are plain numbers.
+  bool length = macroArgument
+                    ? std::string_view("XYZIJKRQ").find(w.letter) !=
+                          std::string_view::npos
+                    : isLengthAddress(w.letter);
+  if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length) {
+    return;
+  }
   double v = w.value->number;
   // The increment is 0.001 mm (or degree) at IS-B metric; trim the zeros.
   std::string scaled = fmt::format("{:.3f}", v * 0.001);

@@ -361,6 +361,14 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return raise(ctx, AlarmId::ImproperNcAddress,
                  fmt::format("{} is not an address of this machine", letter));
   }
+  if (word.kind == MBRT_WORD_DEC_LITERAL &&
+      std::string_view("DHMST").find(letter) != std::string_view::npos) {
+    // M3.0 is no M code (spec §1.5); a value, M[3.0] or M#1, is rounded.
+    const double v = numeric(word.value);
+    return raise(ctx, AlarmId::IllegalDecimalPoint,
+                 fmt::format("{}{}{}: {} takes a whole number", letter, v,
+                             v == std::trunc(v) ? "." : "", letter));
+  }
   const double value = roundHalfAway(numeric(word.value));
   ctx.lastWords[index] = value;
   switch (letter) {
