@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 
 namespace mbc::driver {
 
@@ -13,7 +14,9 @@ bool parseNumber(std::string_view text, double& out) {
     text.remove_prefix(1);
   }
   auto res = std::from_chars(text.data(), text.data() + text.size(), out);
-  return res.ec == std::errc() && res.ptr == text.data() + text.size();
+  // inf and nan are no values a variable can hold (spec §2.4).
+  return res.ec == std::errc() && res.ptr == text.data() + text.size() &&
+         std::isfinite(out);
 }
 
 namespace {
