@@ -165,7 +165,7 @@ CtxPtr createContext(const RunOptions& o) {
           ? mbrt_create(nullptr, err, sizeof err)
           : mbrt_create_from_file(o.machinePath.c_str(), err, sizeof err);
   if (!ctx) {
-    std::fprintf(stderr, "mbc: error: machine profile: %s\n", err);
+    std::fprintf(stderr, "mbc: error: %s\n", err);
   }
   return CtxPtr(ctx);
 }
