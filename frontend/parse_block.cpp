@@ -280,10 +280,13 @@ void Parser::expectEndOfBlock(const Stmt& s) {
   if (tok_.kind == Tok::EndOfBlock || tok_.kind == Tok::EndOfFile) {
     return;
   }
-  bool macroNext = tok_.kind == Tok::Hash || (tok_.kind == Tok::Keyword &&
-                                              (tok_.keyword == Keyword::If ||
-                                               tok_.keyword == Keyword::While ||
-                                               tok_.keyword == Keyword::Goto));
+  bool macroNext =
+      tok_.kind == Tok::Hash ||
+      (tok_.kind == Tok::Keyword &&
+       (tok_.keyword == Keyword::If || tok_.keyword == Keyword::While ||
+        tok_.keyword == Keyword::Goto || tok_.keyword == Keyword::Dprnt ||
+        tok_.keyword == Keyword::Bprnt || tok_.keyword == Keyword::Popen ||
+        tok_.keyword == Keyword::Pclos));
   bool ncNext = tok_.kind == Tok::Letter;
   bool isNc = s.kind == StmtKind::Nc || s.kind == StmtKind::MacroCall;
   if ((isNc && macroNext) || (!isNc && s.kind != StmtKind::Empty && ncNext)) {

@@ -169,15 +169,36 @@ void Parser::parseIf(Stmt& s) {
       parseAssign(s);
       return;
     }
-    diags_.report(DiagKind::ThenNeedsMacroStatement,
-                  tok_.kind == Tok::EndOfBlock ? then.range : tok_.range);
-    if (tok_.kind == Tok::Letter) {
-      diags_.note(DiagKind::ThenNcNote, tok_.range);
-    }
+    reportThenWithoutAssignment(then);
     fail();
   }
   diags_.report(DiagKind::ExpectedGotoOrThen, tok_.range);
   fail();
+}
+
+// What follows THEN is no assignment: say what it is and how to write it.
+void Parser::reportThenWithoutAssignment(const Token& then) {
+  if (tok_.kind == Tok::Letter) {
+    diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range, "NC words");
+    diags_.note(DiagKind::ThenNcNote, tok_.range);
+  } else if (isKeyword(Keyword::Goto)) {
+    auto& d =
+        diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range, "GOTO");
+    d.fixIts.push_back({{then.range.begin, tok_.range.begin.offset +
+                                               tok_.range.length -
+                                               then.range.begin.offset},
+                        "GOTO"});
+    diags_.note(DiagKind::ThenGotoNote, tok_.range);
+  } else if (tok_.kind == Tok::Keyword) {
+    diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range, tok_.text);
+    diags_.note(DiagKind::ThenStatementNote, tok_.range, tok_.text);
+  } else if (tok_.kind == Tok::EndOfBlock || tok_.kind == Tok::EndOfFile) {
+    diags_.report(DiagKind::ThenNeedsMacroStatement, then.range,
+                  "the end of the block");
+  } else {
+    diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range,
+                  fmt::format("'{}'", tok_.text));
+  }
 }
 
 // goto := 'GOTO' expr

@@ -59,6 +59,7 @@ private:
   [[noreturn]] void misplacedHeader();
   void resynchronise();
   void keepBrokenBlock(Block& b, std::string_view rest);
+  void reportThenWithoutAssignment(const Token& then);
   void addSequenceWord(Block& b, SourceRange range);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;

@@ -100,10 +100,11 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
   if (!v || v->kind != ExprKind::Number) {
     return;
   }
-  double n = std::round(negative ? -v->number : v->number);
+  const double written = negative ? -v->number : v->number;
+  double n = std::round(written);
   if (n < 1 || n > 99999) {
     diags.report(DiagKind::GotoRange, s.value->range,
-                 fmt::format("{}", s.value->number));
+                 fmt::format("{}", written));
     return;
   }
   int target = findSequence(p, static_cast<int>(n), i);
