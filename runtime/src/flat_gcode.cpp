@@ -7,12 +7,14 @@
 // the second way.
 #include "flat_gcode.h"
 
+#include <mbc/arith.h>
 #include <mbc/toolpath_json.h>
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <string_view>
 
 namespace mbc::rt {
 
@@ -68,10 +70,15 @@ bool hasOtherMeanings(const mbrt_word* words, size_t count) {
 
 std::string wordText(const mbrt_word& word) {
   const double value = numeric(word.value);
+  if (std::string_view("DHMST").find(word.letter) != std::string_view::npos) {
+    // The whole number the block used: M3. would be PS0007.
+    return fmt::format("{}{}", word.letter,
+                       static_cast<long long>(roundHalfAway(value)));
+  }
   std::string text = fixedText(value);
   const bool integral = std::floor(value) == value;
-  // G54.1 keeps its point; other G and M codes are whole.
-  const bool code = word.letter == 'G' || word.letter == 'M';
+  // G54.1 keeps its point; other G codes are whole.
+  const bool code = word.letter == 'G';
   if (word.kind != MBRT_WORD_INT_LITERAL && !code &&
       text.find('.') == std::string::npos) {
     text += '.';

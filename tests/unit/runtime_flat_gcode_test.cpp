@@ -28,10 +28,13 @@ TEST(RuntimeFlatGcode, WordsReadBackTheSame) {
   ASSERT_EQ(f.m.block("G54.1 P2 G00 X2.0005"), 0);
   ASSERT_EQ(f.m.block("G04 X1500"), 0);
   ASSERT_EQ(f.m.block("G51 X0 Y0 P=1.5"), 0);
+  // Whole-number addresses as the block used them: M3. would be PS0007.
+  ASSERT_EQ(f.m.block("S=1200 M=3.4 T=2.5"), 0);
   EXPECT_EQ(f.text, "G1 X0.01 Y1.235 Z5. F33.25\n"
                     "G54.1 P2 G0 X2.001\n"
                     "G4 X1500\n"
-                    "G51 X0 Y0 P1.5\n");
+                    "G51 X0 Y0 P1.5\n"
+                    "S1200 M3 T3\n");
 }
 
 TEST(RuntimeFlatGcode, KIsARepeatCountInACycle) {
