@@ -20,6 +20,7 @@ namespace mbc::rt {
 namespace {
 
 constexpr int kMaxMCodes = 3;
+constexpr double kMaxCodeValue = 99'999'999.0; // M, S, T...: 8 digits
 
 /// #4101 + index for the addresses the control remembers.
 int lastWordIndex(char letter) {
@@ -346,6 +347,12 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.motion.centerMask |= std::uint32_t{1} << index;
     return toCounts(ctx, word, &block.motion.center[index]);
   }
+  if (numeric(word.value) < 0.0 &&
+      std::string_view("DFHMST").find(letter) != std::string_view::npos) {
+    return raise(ctx, AlarmId::IllegalMinusSign,
+                 fmt::format("{}{}: {} takes no sign", letter,
+                             numeric(word.value), letter));
+  }
   if (letter == 'F') {
     ctx.feedInBlock = true;
     ctx.modal.feed = numeric(word.value);
@@ -370,6 +377,10 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
                              v == std::trunc(v) ? "." : "", letter));
   }
   const double value = roundHalfAway(numeric(word.value));
+  if (value > kMaxCodeValue) {
+    return raise(ctx, AlarmId::TooManyDigits,
+                 fmt::format("{}{}: at most 8 digits", letter, value));
+  }
   ctx.lastWords[index] = value;
   switch (letter) {
     case 'M':

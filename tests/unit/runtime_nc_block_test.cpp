@@ -87,6 +87,24 @@ TEST(RuntimeNcBlock, FeedZeroAlarm) {
   EXPECT_EQ(rapid.block("G02 X0 R5. F0"), status(AlarmId::FeedZero));
 }
 
+// M S T H D take whole numbers of at most 8 digits, F and they no sign
+// (spec §1.5); a value (M[3.4], "M=3.4" here) is rounded.
+TEST(RuntimeNcBlock, IntegerAddresses) {
+  Machine m;
+  EXPECT_EQ(m.block("M3.", 2), status(AlarmId::IllegalDecimalPoint));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm PS0007: ILLEGAL USE OF DECIMAL "
+                        "POINT: M3.: M takes a whole number\n");
+  EXPECT_EQ(Machine().block("T1.5"), status(AlarmId::IllegalDecimalPoint));
+  EXPECT_EQ(Machine().block("S-100"), status(AlarmId::IllegalMinusSign));
+  EXPECT_EQ(Machine().block("G01 X1. F-10."),
+            status(AlarmId::IllegalMinusSign));
+  EXPECT_EQ(Machine().block("M100000000"), status(AlarmId::TooManyDigits));
+  Machine ok;
+  EXPECT_EQ(ok.block("S99999999 M=3.4"), 0);
+  EXPECT_EQ(ok.read(4119), 99999999.0);
+  EXPECT_EQ(ok.read(4113), 3.0);
+}
+
 TEST(RuntimeNcBlock, UnsupportedGCodes) {
   Machine m;
   EXPECT_EQ(m.block("G41 D1", 3), status(AlarmId::Unsupported));
@@ -177,10 +195,10 @@ TEST(RuntimeNcBlock, ModalInformation) {
 
 TEST(RuntimeNcBlock, IntegerAddressesRound) {
   Machine m;
-  ASSERT_EQ(m.block("S=1000.5 M=3.4999999 T=-2.5"), 0);
+  ASSERT_EQ(m.block("S=1000.5 M=3.4999999 T=2.5"), 0);
   EXPECT_EQ(m.read(4119), 1001.0);
   EXPECT_EQ(m.read(4113), 3.0);
-  EXPECT_EQ(m.read(4120), -3.0);
+  EXPECT_EQ(m.read(4120), 3.0);
 }
 
 TEST(RuntimeNcBlock, BlockEndAndPositions) {
