@@ -83,7 +83,11 @@ std::string describe(const Token& t) {
     case Tok::Percent:
       return "'%'";
     case Tok::Number:
-      return "number";
+      if (t.text.find_first_of("0123456789") == std::string::npos) {
+        return t.text == "." ? "a decimal point without digits"
+                             : "'" + t.text + "'";
+      }
+      return "number '" + t.text + "'";
     case Tok::Letter:
       return "address " + t.text;
     case Tok::ProgramName:
@@ -353,15 +357,24 @@ Token Lexer::lexNumber(std::uint32_t begin) {
     break;
   }
   pos_ = last;
-  Token t = make(Tok::Number, begin);
-  // "1.5E3" would read as 1.5 and an address E: say what is wrong instead.
+  // "1.5E3" would read as 1.5 and an address E, "0.012." as 0.012 and a
+  // number 0: say what is wrong instead, and take it into the number so
+  // that one mistake makes one error.
   if (pos_ + 1 < end_ && (text_[pos_] == 'E' || text_[pos_] == 'e') &&
       (isDigit(text_[pos_ + 1]) ||
        ((text_[pos_ + 1] == '-' || text_[pos_ + 1] == '+') && pos_ + 2 < end_ &&
         isDigit(text_[pos_ + 2])))) {
-    diags_.report(DiagKind::ExponentNotation,
-                  {{file_, begin}, pos_ + 1 - begin});
+    pos_ += 2;
+    skipNumberRest();
+    diags_.report(DiagKind::ExponentNotation, {{file_, begin}, pos_ - begin});
+  } else if (dot && pos_ < end_ && text_[pos_] == '.') {
+    const std::uint32_t second = pos_;
+    skipNumberRest();
+    if (digits != ".") { // "..." is an ellipsis, not a number
+      diags_.report(DiagKind::SecondDecimalPoint, {{file_, second}, 1});
+    }
   }
+  Token t = make(Tok::Number, begin);
   t.hasDecimal = dot;
   if (digits == ".") {
     digits = "0";
@@ -375,6 +388,12 @@ Token Lexer::lexNumber(std::uint32_t begin) {
   }
   t.number = v;
   return t;
+}
+
+void Lexer::skipNumberRest() {
+  while (pos_ < end_ && (isDigit(text_[pos_]) || text_[pos_] == '.')) {
+    ++pos_;
+  }
 }
 
 Token Lexer::lexWord(std::uint32_t begin) {

@@ -31,6 +31,7 @@ public:
 private:
   Token make(Tok kind, std::uint32_t begin);
   Token lexNumber(std::uint32_t begin);
+  void skipNumberRest();
   Token lexWord(std::uint32_t begin);
   Token lexComment(std::uint32_t begin);
   Token lexSpecial(std::uint32_t begin);
