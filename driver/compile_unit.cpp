@@ -11,7 +11,7 @@
 namespace mbc::driver {
 
 bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out) {
+              CompiledUnit& out, const std::string& machinePath) {
   DiagnosticEngine diags(out.sources);
   ParseOptions options;
   options.checkWarnings = checkWarnings;
@@ -26,7 +26,7 @@ bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
     std::uint32_t id = out.sources.add(path, text.str());
     parseFile(out.sources, id, diags, options, out.unit);
   }
-  checkUnit(out.unit, diags);
+  checkUnit(out.unit, diags, SemaOptions{machinePath.empty()});
   std::string rendered = renderDiagnostics(diags);
   std::fputs(rendered.c_str(), stderr);
   if (diags.errorCount() > 0) {

@@ -18,7 +18,8 @@ struct CompiledUnit {
 
 /// Loads and checks the files. Diagnostics go to standard error. Returns
 /// false when there were errors (or a file could not be read).
+/// `machinePath`: the --machine profile, if any, which the checks defer to.
 bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out);
+              CompiledUnit& out, const std::string& machinePath = {});
 
 } // namespace mbc::driver

@@ -8,6 +8,7 @@
 #include "driver/ir_pipeline.h"
 #include "driver/options.h"
 #include "driver/run_command.h"
+#include "driver/run_session.h"
 
 #include <cstdio>
 #include <exception>
@@ -38,7 +39,12 @@ int dispatch(int argc, char** argv) {
   }
   if (options->command == "check") {
     CompiledUnit cu;
-    return loadUnit(options->files, true, cu) ? 0 : 1;
+    // A profile given is checked too, and the checks defer to it.
+    if (!options->run.machinePath.empty() && !createContext(options->run)) {
+      return 2;
+    }
+    return loadUnit(options->files, true, cu, options->run.machinePath) ? 0
+                                                                       : 1;
   }
   return runCommand(*options);
 }

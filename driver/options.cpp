@@ -167,7 +167,7 @@ std::string usageText() {
          "        [-O0..-O3] [--main O1234] [--set '#N=V']...\n"
          "        [--arg A=1.5]... [--machine PATH] [--max-blocks N]\n"
          "        [--max-output SIZE] [--block-skip[=N]] [--trace]\n"
-         "       mbc check FILE...\n"
+         "       mbc check FILE... [--machine PATH]\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "        [--disable-pass NAME]... [--verify-each]\n"
          "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"

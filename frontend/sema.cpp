@@ -125,12 +125,20 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
 // Variables that cannot exist on the default machine are only a warning: a
 // profile may add them (#200-#499), and the control alarms only if the block
 // runs.
-// One warning per variable and program is enough to make the point.
-using Reported = std::set<int>;
+// With a machine profile only the runtime knows about #200-#499.
+struct Reported {
+  bool defaultMachine;
+  std::set<int> numbers; // one warning per variable and program is enough
+};
 
 void warnMissing(int n, SourceRange at, Reported& reported,
                  DiagnosticEngine& diags) {
-  if (variableAccess(n) == VarAccess::Missing && reported.insert(n).second) {
+  if (!reported.defaultMachine && n >= kFirstExtendedCommon &&
+      n <= kLastExtendedCommon) {
+    return;
+  }
+  if (variableAccess(n) == VarAccess::Missing &&
+      reported.numbers.insert(n).second) {
     diags.report(DiagKind::VariableMissing, at, n);
   }
 }
@@ -192,11 +200,12 @@ int findSequence(const Program& program, int seq, int from) {
   return -1;
 }
 
-void checkUnit(Unit& unit, DiagnosticEngine& diags) {
+void checkUnit(Unit& unit, DiagnosticEngine& diags,
+               const SemaOptions& options) {
   for (Program& p : unit.programs) {
     matchLoops(p, diags);
     checkSequences(p, diags);
-    Reported reported;
+    Reported reported{options.defaultMachine, {}};
     for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
       Stmt& s = p.blocks[i].stmt;
       checkStatementVariables(s, reported, diags);

@@ -8,7 +8,14 @@
 
 namespace mbc {
 
-void checkUnit(Unit& unit, DiagnosticEngine& diags);
+struct SemaOptions {
+  /// No machine profile: the variables only a profile adds (#200-#499)
+  /// cannot exist, so reading or writing one is worth a warning.
+  bool defaultMachine = true;
+};
+
+void checkUnit(Unit& unit, DiagnosticEngine& diags,
+               const SemaOptions& options = {});
 
 /// The block a GOTO/M99 P to sequence number seq reaches from block `from`:
 /// the first block with that N after `from`, searching to the end and then

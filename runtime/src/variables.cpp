@@ -8,6 +8,8 @@
 #include "context.h"
 #include "sysvars.h"
 
+#include <mbc/sysvars.h>
+
 using namespace mbc;
 using namespace mbc::rt;
 
@@ -38,7 +40,8 @@ bool isCommon(const mbrt_ctx& ctx, long n) {
   if (n >= 500 && n <= 999) {
     return true;
   }
-  return ctx.profile.extendedCommon && n >= 200 && n <= 499;
+  return ctx.profile.extendedCommon && n >= kFirstExtendedCommon &&
+         n <= kLastExtendedCommon;
 }
 
 mbrt_status outOfRange(mbrt_ctx& ctx, long n) {

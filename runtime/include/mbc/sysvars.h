@@ -7,6 +7,10 @@ namespace mbc {
 
 enum class VarAccess { Missing, ReadOnly, ReadWrite };
 
+/// The commons a machine profile may add ("extended_common").
+inline constexpr int kFirstExtendedCommon = 200;
+inline constexpr int kLastExtendedCommon = 499;
+
 /// The access class of #n on the built-in default machine (spec §2, §6).
 VarAccess variableAccess(int n);
 
