@@ -296,13 +296,13 @@ void Parser::expectEndOfBlock(const Stmt& s) {
   unexpected(DiagKind::ExpectedEndOfBlock);
 }
 
-std::string Parser::messageAfter(std::uint32_t offset) const {
+const Token* Parser::messageAfter(std::uint32_t offset) const {
   for (const Token& c : blockComments_) {
     if (c.range.begin.offset > offset) {
-      return c.text;
+      return &c;
     }
   }
-  return {};
+  return nullptr;
 }
 
 } // namespace detail

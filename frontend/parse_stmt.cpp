@@ -103,8 +103,29 @@ void Parser::parseAssign(Stmt& s) {
   advance();
   s.value = parseExpr(0);
   requireNumber(*s.value);
-  s.message = messageAfter(eq);
+  if (const Token* comment = messageAfter(eq)) {
+    s.message = comment->text;
+    checkMessageLength(s, *comment);
+  }
   (void)hash;
+}
+
+// #3000 and #3006 show at most 26 characters of their message (the
+// runtime's messageText); a longer one loses its end unnoticed.
+void Parser::checkMessageLength(const Stmt& s, const Token& comment) {
+  constexpr std::size_t kShown = 26;
+  if (!options_.checkWarnings || s.target.index ||
+      (s.target.number != 3000 && s.target.number != 3006)) {
+    return;
+  }
+  std::string_view text = s.message;
+  text.remove_prefix(std::min(text.find_first_not_of(" \t"), text.size()));
+  text.remove_suffix(text.size() -
+                     std::min(text.find_last_not_of(" \t") + 1, text.size()));
+  if (text.size() > kShown) {
+    diags_.report(DiagKind::MessageTooLong, comment.range, s.target.number,
+                  kShown, std::string(text.substr(0, kShown)));
+  }
 }
 
 // Reads '[' cond ']' and, for the seed-003 form `[a] OR [b]`, the rest of an

@@ -63,7 +63,8 @@ private:
   void addSequenceWord(Block& b, SourceRange range);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;
-  std::string messageAfter(std::uint32_t offset) const;
+  const Token* messageAfter(std::uint32_t offset) const;
+  void checkMessageLength(const Stmt& s, const Token& comment);
   Program& currentProgram(SourceLoc at);
 
   // Expressions (parse_expr.cpp).
