@@ -58,9 +58,11 @@ void passTime(mbrt_ctx& ctx, double seconds) {
 
 /// Feed moves take length / F minutes (G94), 1 / F (G93) or length / (F S)
 /// (G95); rapids length / rapid rate, the rate being in mm/min whatever the
-/// input unit.
-void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid) {
-  const double length = lengthCounts / ctx.scale();
+/// input unit. `timedCounts`: the length F applies to, which for a helix is
+/// the arc in its plane (FANUC: F is the feed along the arc).
+void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid,
+                  double timedCounts) {
+  const double length = timedCounts / ctx.scale();
   double minutes = 0.0;
   if (rapid) {
     minutes =
@@ -268,7 +270,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   advanceClock(ctx,
                travel(ctx, machine,
                       (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
-               false);
+               false, arc);
   ctx.program = target;
   const bool turnsClockwise = clockwise != frame.reversed;
   const AxisCounts workStart = machineToWork(ctx, ctx.machine);
@@ -345,7 +347,8 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
       return status;
     }
   }
-  advanceClock(ctx, travel(ctx, machine, 0, 0.0), rapid);
+  const double length = travel(ctx, machine, 0, 0.0);
+  advanceClock(ctx, length, rapid, length);
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, cycle);
   return 0;

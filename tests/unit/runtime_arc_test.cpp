@@ -119,8 +119,8 @@ TEST(RuntimeArc, Helix) {
   const mbrt_motion& arc = m.motions()[1];
   EXPECT_EQ(arc.end[2], -5.0);
   EXPECT_EQ(arc.center[0], 0.0);
-  const double length = std::hypot(5.0 * kPi, 5.0);
-  EXPECT_EQ(m.read(3001), std::floor(60.0 + length / 100.0 * 60000.0));
+  // F is along the arc in the plane: Z only follows.
+  EXPECT_EQ(m.read(3001), std::floor(60.0 + 5.0 * kPi / 100.0 * 60000.0));
 }
 
 TEST(RuntimeArc, ZXPlane) {
@@ -182,4 +182,15 @@ TEST(RuntimeArc, InchArc) {
 }
 
 } // namespace
+// F is the feed along the arc in its plane; the helix's linear axis only
+// follows (FANUC helical interpolation): a full circle of radius 5 at F100
+// takes 10 pi / 100 minutes whatever Z travels.
+TEST(RuntimeArc, HelixTakesTheArcTimeAtF) {
+  Machine m;
+  ASSERT_EQ(m.block("G17 G90 G01 X5. Y0 F100."), 0);
+  const double before = m.read(3001);
+  ASSERT_EQ(m.block("G02 X5. Y0 Z-10. I-5."), 0);
+  EXPECT_NEAR(m.read(3001) - before, 10.0 * kPi / 100.0 * 60000.0, 1.0);
+}
+
 } // namespace mbc::test
