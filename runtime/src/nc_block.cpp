@@ -324,10 +324,12 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
   if (block.nonModal == 40 && letter == 'X') {
-    // X1.5 is 1.5 s; X1500 counts milliseconds, like P.
-    block.dwellSeconds = word.kind == MBRT_WORD_INT_LITERAL
-                             ? numeric(word.value) / 1000.0
-                             : numeric(word.value);
+    // X1.5 is 1.5 s; X1500 counts milliseconds, like P, unless literals
+    // are whole units (3401#0 DPI).
+    block.dwellSeconds =
+        word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
+            ? numeric(word.value) / 1000.0
+            : numeric(word.value);
     return 0;
   }
   if (letter == 'K' && ctx.modal.cycle != 0) {
@@ -470,7 +472,12 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
   if (block.nonModal == 40) {
-    dwell(ctx, block.hasP ? block.p / 1000.0 : block.dwellSeconds);
+    const double seconds = block.hasP ? block.p / 1000.0 : block.dwellSeconds;
+    if (seconds < 0.0) {
+      return raise(ctx, AlarmId::IllegalMinusSign,
+                   fmt::format("G04 dwell of {} s", seconds));
+    }
+    dwell(ctx, seconds);
     return 0;
   }
   if (block.nonModal == 280) {
@@ -496,6 +503,10 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   if (ctx.modal.cycle != 0) {
     if (!block.k && block.hasL) {
       block.k = block.l; // the older controls' L
+    }
+    if (block.hasP && block.p < 0.0) {
+      return raise(ctx, AlarmId::IllegalMinusSign,
+                   fmt::format("cycle dwell P{}", block.p));
     }
     const CycleWords cycle{
         &motion, block.q,

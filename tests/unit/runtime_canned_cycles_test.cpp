@@ -70,4 +70,19 @@ TEST(RuntimeCannedCycles, DwellAdvancesTheClock) {
   EXPECT_TRUE(m.motions().empty());
 }
 
+// No time runs backwards: a negative dwell is PS0006, in G04 and in a cycle.
+TEST(RuntimeCannedCycles, NegativeDwellAlarms) {
+  EXPECT_EQ(Machine().block("G04 P-100"), status(AlarmId::IllegalMinusSign));
+  EXPECT_EQ(Machine().block("G04 X-1."), status(AlarmId::IllegalMinusSign));
+  EXPECT_EQ(Machine().block("G82 X1. Z-1. R1. P-500 F100."),
+            status(AlarmId::IllegalMinusSign));
+}
+
+// With whole-unit literals (3401#0 = 1) G04 X2 is 2 s, as X2 is 2 mm.
+TEST(RuntimeCannedCycles, DwellXFollowsDecimalPointInput) {
+  Machine m(R"({"parameters": {"3401": 1}})");
+  ASSERT_EQ(m.block("G04 X2"), 0);
+  EXPECT_EQ(m.read(3001), 2000.0);
+}
+
 } // namespace mbc::test
