@@ -84,7 +84,7 @@ private:
 /// feed Q, rapid to R, rapid down to d (5115) short of the depth reached,
 /// feed on.
 mbrt_status Hole::peck(bool toR) {
-  const Counts q = data().q > 0 ? data().q : std::llabs(data().z - rLevel());
+  const Counts q = data().q; // > 0: executeCycleBlock checked
   const Counts d = parameterCounts(ctx_, toR ? 5115 : 5114);
   const int dir = down();
   Counts depth = rLevel();
@@ -225,6 +225,10 @@ mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
   if (!data.hasZ) {
     return raise(ctx, AlarmId::ImproperNcAddress,
                  fmt::format("G{} without Z (the hole bottom)", cycle));
+  }
+  if ((cycle == 73 || cycle == 83) && data.q <= 0) {
+    return raise(ctx, AlarmId::PeckWithoutQ,
+                 fmt::format("G{} needs the depth of each peck, Q > 0", cycle));
   }
   const double repeat = words.k ? roundHalfAway(*words.k) : 1.0;
   if (repeat < 0.0 || repeat > 9999.0) {

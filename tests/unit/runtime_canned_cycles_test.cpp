@@ -70,6 +70,17 @@ TEST(RuntimeCannedCycles, DwellAdvancesTheClock) {
   EXPECT_TRUE(m.motions().empty());
 }
 
+// G73 and G83 need the depth of each peck (FANUC PS0045), alarmed before
+// the cycle moves.
+TEST(RuntimeCannedCycles, PeckWithoutQAlarms) {
+  Machine m;
+  EXPECT_EQ(m.block("G83 X1. Z-5. R2. F100."), status(AlarmId::PeckWithoutQ));
+  EXPECT_TRUE(m.motions().empty());
+  EXPECT_EQ(Machine().block("G73 X1. Z-5. R2. Q0 F100."),
+            status(AlarmId::PeckWithoutQ));
+  EXPECT_EQ(Machine().block("G73 X1. Z-5. R2. Q1. F100."), 0);
+}
+
 // No time runs backwards: a negative dwell is PS0006, in G04 and in a cycle.
 TEST(RuntimeCannedCycles, NegativeDwellAlarms) {
   EXPECT_EQ(Machine().block("G04 P-100"), status(AlarmId::IllegalMinusSign));
