@@ -224,7 +224,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   const int p = ctx.axisOf(plane.letters[0]);
   const int q = ctx.axisOf(plane.letters[1]);
   if (p < 0 || q < 0) {
-    return raise(ctx, AlarmId::ArcNoRadius,
+    return raise(ctx, AlarmId::IllegalPlaneSelect,
                  fmt::format("G{} arcs need axes {} and {}", ctx.modal.plane,
                              plane.letters[0], plane.letters[1]));
   }
@@ -246,8 +246,11 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
     if (const mbrt_status status = checkRadii(ctx, from, to, center)) {
       return status;
     }
-  } else {
+  } else if (ctx.profile.parameterBit(3403, 5)) {
     return raise(ctx, AlarmId::ArcNoRadius, "arc without R or I, J, K");
+  } else {
+    // Parameter 3403#5 CIR = 0 (FANUC's default): a straight feed move.
+    return moveStraight(ctx, target, false);
   }
   const ArcFrame frame = arcFrame(ctx, p, q);
   if (!frame.supported) {

@@ -159,14 +159,25 @@ TEST(RuntimeArc, RadiusTolerance) {
   EXPECT_EQ(unchecked.block("G03 X0 Y10.5 I-10. F100"), 0);
 }
 
+// Parameter 3403#5 CIR: 0 (FANUC's default) feeds straight to the end
+// point, 1 raises PS0022.
 TEST(RuntimeArc, ArcWithoutCentre) {
   Machine m;
-  EXPECT_EQ(m.block("G02 X10. Y10. F100"), status(AlarmId::ArcNoRadius));
+  ASSERT_EQ(m.block("G02 X10. Y10. F100"), 0);
+  ASSERT_EQ(m.motions().size(), 1u);
+  EXPECT_EQ(m.motions()[0].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.read(5001), 10.0);
+  EXPECT_EQ(m.read(4001), 2.0);
+  Machine cir(R"({"parameters": {"3403": 32}})");
+  EXPECT_EQ(cir.block("G02 X10. Y10. F100"), status(AlarmId::ArcNoRadius));
+  EXPECT_EQ(cir.report(), "test.nc:1: alarm PS0022: R OR I,J,K COMMAND NOT "
+                          "FOUND: arc without R or I, J, K\n");
 }
 
 TEST(RuntimeArc, PlaneAxesMustExist) {
   Machine m(R"({"axes": ["X", "Y"]})");
-  EXPECT_EQ(m.block("G18 G02 X1. I1. F100"), status(AlarmId::ArcNoRadius));
+  EXPECT_EQ(m.block("G18 G02 X1. I1. F100"),
+            status(AlarmId::IllegalPlaneSelect));
   EXPECT_NE(m.report().find("G18 arcs need axes Z and X"), std::string::npos);
 }
 
