@@ -203,6 +203,10 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       next.returnToR = tenths == 990;
       return 0;
     case 540:
+      if (block.hasP) { // G54 Pn is another spelling of G54.1 Pn
+        return selectG541(ctx, next, block);
+      }
+      [[fallthrough]];
     case 550:
     case 560:
     case 570:

@@ -255,6 +255,14 @@ TEST(RuntimeNcBlock, AdditionalWorkOffsets) {
   Machine n;
   EXPECT_EQ(n.block("G54.1 P301"), status(AlarmId::ImproperNcAddress));
   EXPECT_EQ(n.read(4130), 0.0); // the alarmed block set nothing
+  // G54 Pn is another spelling of G54.1 Pn; G54 alone is G54.
+  Machine g54(R"({"work_offsets": {"G54.1P7": [5, 0, 0]}})");
+  ASSERT_EQ(g54.block("G54 P7 G00 X1."), 0);
+  EXPECT_EQ(g54.read(4014), 54.1);
+  EXPECT_EQ(g54.read(4130), 7.0);
+  EXPECT_EQ(g54.read(5021), 6.0);
+  ASSERT_EQ(g54.block("G54"), 0);
+  EXPECT_EQ(g54.read(4014), 54.0);
 }
 
 // The last value of each address belongs to the run: a new run starts
