@@ -216,6 +216,8 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       return 0;
     case 541:
       return selectG541(ctx, next, block);
+    case 90: // G09 exact stop: the move ends at rest on the same path
+      return 0;
     case 610: // exact stop mode
     case 620: // automatic corner override
     case 630: // tapping mode

@@ -105,6 +105,14 @@ TEST(RuntimeNcBlock, IntegerAddresses) {
   EXPECT_EQ(ok.read(4113), 3.0);
 }
 
+// G09 (exact stop, one block) slows down, it does not change the path.
+TEST(RuntimeNcBlock, ExactStopMovesAsWritten) {
+  Machine m;
+  ASSERT_EQ(m.block("G09 G01 X10. F100"), 0);
+  EXPECT_EQ(m.read(5001), 10.0);
+  EXPECT_EQ(m.read(4001), 1.0);
+}
+
 TEST(RuntimeNcBlock, UnsupportedGCodes) {
   Machine m;
   EXPECT_EQ(m.block("G41 D1", 3), status(AlarmId::Unsupported));
