@@ -353,14 +353,27 @@ void Parser::parseWords(Stmt& s) {
       return;
     }
   }
+  // Letters whose literal is no length in this block: G04's X (ms), a
+  // cycle's K (repeats), G51's I J K (scale factors); G68's R is an angle.
   bool dwell = false;
+  WordUnits units;
   for (const Word& w : s.words) {
-    dwell = dwell || (w.letter == 'G' && w.value->kind == ExprKind::Number &&
-                      w.value->number == 4);
+    if (w.letter != 'G' || w.value->kind != ExprKind::Number) {
+      continue;
+    }
+    const double g = w.value->number;
+    dwell = dwell || g == 4;
+    if (g == 73 || g == 74 || g == 76 || (g >= 81 && g <= 89)) {
+      units.notLengths += 'K';
+    } else if (g == 51) {
+      units.notLengths += "IJK";
+    } else if (g == 68) {
+      units.angles += 'R';
+    }
   }
   for (const Word& w : s.words) {
     if (!dwell) {
-      checkDecimalPoint(w, false);
+      checkDecimalPoint(w, false, units);
     }
   }
 }
@@ -391,7 +404,8 @@ void Parser::finishMacroCall(Stmt& s) {
   }
 }
 
-void Parser::checkDecimalPoint(const Word& w, bool macroArgument) {
+void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
+                               const WordUnits& units) {
   if (!options_.checkWarnings) {
     return;
   }
@@ -407,7 +421,8 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument) {
                     ? std::string_view("XYZIJKRQ").find(w.letter) !=
                           std::string_view::npos
                     : isLengthAddress(w.letter);
-  if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length) {
+  if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length ||
+      units.notLengths.find(w.letter) != std::string::npos) {
     return;
   }
   double v = w.value->number;
@@ -419,7 +434,8 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument) {
   if (scaled.back() == '.') {
     scaled.pop_back();
   }
-  bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C';
+  bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C' ||
+                units.angles.find(w.letter) != std::string::npos;
   diags_.report(DiagKind::NoDecimalPoint, w.range, std::string(1, w.letter),
                 fmt::format("{}", v), scaled, rotary ? "deg" : "mm");
 }
