@@ -123,7 +123,12 @@ ExprPtr Parser::makeBinary(const Token& op, ExprPtr lhs, ExprPtr rhs) {
 ExprPtr Parser::parseExpr(int depth) {
   ExprPtr lhs = parseSum(depth, true);
   RelOp op;
-  if (!relOpOf(tok_, op)) {
+  if (tok_.kind == Tok::Equal && depth > 0) {
+    // `IF [#1 = 5]`: say how to compare, and read on as EQ.
+    diags_.report(DiagKind::EqualsAsComparison, tok_.range)
+        .fixIts.push_back({tok_.range, "EQ"});
+    op = RelOp::Eq;
+  } else if (!relOpOf(tok_, op)) {
     return lhs;
   }
   Token opTok = tok_;
