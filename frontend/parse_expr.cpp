@@ -131,7 +131,6 @@ ExprPtr Parser::parseExpr(int depth) {
   } else if (!relOpOf(tok_, op)) {
     return lhs;
   }
-  Token opTok = tok_;
   advance();
   // A signed operand after a comparison is common (`#1 GT -1`) and harmless.
   ExprPtr rhs = parseSum(depth, true);
@@ -148,7 +147,6 @@ ExprPtr Parser::parseExpr(int depth) {
   e->range = spanOf(*lhs, *rhs);
   e->args.push_back(std::move(lhs));
   e->args.push_back(std::move(rhs));
-  (void)opTok;
   return e;
 }
 

@@ -84,7 +84,6 @@ void Parser::misplacedHeader() {
 
 // assignment := '#' (number | '[' expr ']') '=' expr
 void Parser::parseAssign(Stmt& s) {
-  Token hash = tok_;
   ExprPtr target = parseVariable(0);
   if (s.kind != StmtKind::IfThen) {
     s.kind = StmtKind::Assign;
@@ -107,7 +106,6 @@ void Parser::parseAssign(Stmt& s) {
     s.message = comment->text;
     checkMessageLength(s, *comment);
   }
-  (void)hash;
 }
 
 // #3000 and #3006 show at most 26 characters of their message (the
