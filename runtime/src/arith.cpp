@@ -79,33 +79,28 @@ AlarmId evalBitwise(BinOp op, double a, double b, Num* out) {
   return finish(static_cast<double>(result), out);
 }
 
-/// sin and cos of one angle.
-struct SinCos {
-  double sin;
-  double cos;
-};
-
-/// 0 <= x <= 45 degrees; the values at 0, 30 and 45 are the exact ones
-/// rounded once (std::sin of 30 degrees in radians is not quite 0.5).
-SinCos firstOctant(double x) {
+/// sin (or cos, `cosine`) of 0 <= x <= 45 degrees; the values at 0, 30
+/// and 45 are the exact ones rounded once (std::sin of 30 degrees in
+/// radians is not quite 0.5).
+double firstOctant(double x, bool cosine) {
   if (x == 0.0) {
-    return {0.0, 1.0};
+    return cosine ? 1.0 : 0.0;
   }
   if (x == 30.0) {
-    return {0.5, std::numbers::sqrt3 / 2.0};
+    return cosine ? std::numbers::sqrt3 / 2.0 : 0.5;
   }
   if (x == 45.0) {
-    return {std::numbers::sqrt2 / 2.0, std::numbers::sqrt2 / 2.0};
+    return std::numbers::sqrt2 / 2.0;
   }
   const double radians = x / kDegPerRad;
-  return {std::sin(radians), std::cos(radians)};
+  return cosine ? std::cos(radians) : std::sin(radians);
 }
 
-/// sin and cos of |degrees| by exact reduction to the first octant, so
+/// sin (or cos) of |degrees| by exact reduction to the first octant, so
 /// that the usual identities hold bit for bit: SIN[-a] = -SIN[a],
 /// COS[-a] = COS[a], SIN[a] = COS[90 - a], SIN[a + 360] = SIN[a], and the
 /// multiples of 30 and 45 degrees give the exact values rounded once.
-SinCos sinCosOfMagnitude(double degrees) {
+double trigOfMagnitude(double degrees, bool cosine) {
   const double a = std::fabs(degrees);
   // fmod is exact; an angle under one turn skips it (it is slow).
   const double turn = a < 360.0 ? a : std::fmod(a, 360.0);
@@ -115,32 +110,22 @@ SinCos sinCosOfMagnitude(double degrees) {
                       : turn >= 90.0  ? 1
                                       : 0;
   const double x = turn - 90.0 * quarter;
-  SinCos sc{};
-  if (x > 45.0) {
-    const SinCos other = firstOctant(90.0 - x);
-    sc = {other.cos, other.sin};
-  } else {
-    sc = firstOctant(x);
-  }
-  switch (quarter) {
-    case 1:
-      return {sc.cos, -sc.sin};
-    case 2:
-      return {-sc.sin, -sc.cos};
-    case 3:
-      return {-sc.cos, sc.sin};
-    default:
-      return sc;
-  }
+  // sin(90q + x) is sin x, cos x, -sin x, -cos x for q = 0..3; cos(90q + x)
+  // is cos x, -sin x, -cos x, sin x.
+  const bool ofCosine = cosine != (quarter % 2 == 1);
+  const bool negative = cosine ? quarter == 1 || quarter == 2 : quarter >= 2;
+  const double v =
+      x > 45.0 ? firstOctant(90.0 - x, !ofCosine) : firstOctant(x, ofCosine);
+  return negative ? -v : v;
 }
 
 double sinDegrees(double degrees) {
-  const double s = sinCosOfMagnitude(degrees).sin;
+  const double s = trigOfMagnitude(degrees, false);
   return positiveZero(degrees < 0.0 ? -s : s);
 }
 
 double cosDegrees(double degrees) {
-  return positiveZero(sinCosOfMagnitude(degrees).cos);
+  return positiveZero(trigOfMagnitude(degrees, true));
 }
 
 /// NAT = 0 reports angles as 0..360 instead of negative (parameter 6004#0).
