@@ -88,7 +88,7 @@ TEST(RuntimeNcBlock, FeedZeroAlarm) {
 }
 
 // M S T H D take whole numbers of at most 8 digits, F and they no sign
-// (spec §1.5); a value (M[3.4], "M=3.4" here) is rounded.
+// (spec §1.5).
 TEST(RuntimeNcBlock, IntegerAddresses) {
   Machine m;
   EXPECT_EQ(m.block("M3.", 2), status(AlarmId::IllegalDecimalPoint));
@@ -99,10 +99,6 @@ TEST(RuntimeNcBlock, IntegerAddresses) {
   EXPECT_EQ(Machine().block("G01 X1. F-10."),
             status(AlarmId::IllegalMinusSign));
   EXPECT_EQ(Machine().block("M100000000"), status(AlarmId::TooManyDigits));
-  Machine ok;
-  EXPECT_EQ(ok.block("S99999999 M=3.4"), 0);
-  EXPECT_EQ(ok.read(4119), 99999999.0);
-  EXPECT_EQ(ok.read(4113), 3.0);
 }
 
 // G09 (exact stop, one block) slows down, it does not change the path.
@@ -207,6 +203,8 @@ TEST(RuntimeNcBlock, IntegerAddressesRound) {
   EXPECT_EQ(m.read(4119), 1001.0);
   EXPECT_EQ(m.read(4113), 3.0);
   EXPECT_EQ(m.read(4120), 3.0);
+  ASSERT_EQ(m.block("S99999999"), 0); // 8 digits
+  EXPECT_EQ(m.read(4119), 99999999.0);
 }
 
 TEST(RuntimeNcBlock, BlockEndAndPositions) {
