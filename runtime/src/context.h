@@ -310,6 +310,11 @@ inline double roundToCounts(double value, double scale) {
   return value < 0 ? -whole : whole;
 }
 
+/// M S T H D take whole numbers: no decimal point, no sign.
+inline bool isWholeNumberAddress(char letter) {
+  return std::string_view("DHMST").find(letter) != std::string_view::npos;
+}
+
 /// FANUC addresses take at most nine digits (PS0003 beyond).
 inline bool fitsAddress(double counts) {
   return std::fabs(counts) <= 999'999'999.0;

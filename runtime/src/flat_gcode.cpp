@@ -14,7 +14,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <string_view>
 
 namespace mbc::rt {
 
@@ -70,7 +69,7 @@ bool hasOtherMeanings(const mbrt_word* words, size_t count) {
 
 std::string wordText(const mbrt_word& word) {
   const double value = numeric(word.value);
-  if (std::string_view("DHMST").find(word.letter) != std::string_view::npos) {
+  if (isWholeNumberAddress(word.letter)) {
     // The whole number the block used: M3. would be PS0007.
     return fmt::format("{}{}", word.letter,
                        static_cast<long long>(roundHalfAway(value)));

@@ -356,7 +356,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return toCounts(ctx, word, &block.motion.center[index]);
   }
   if (numeric(word.value) < 0.0 &&
-      std::string_view("DFHMST").find(letter) != std::string_view::npos) {
+      (letter == 'F' || isWholeNumberAddress(letter))) {
     return raise(ctx, AlarmId::IllegalMinusSign,
                  fmt::format("{}{}: {} takes no sign", letter,
                              numeric(word.value), letter));
@@ -376,8 +376,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return raise(ctx, AlarmId::ImproperNcAddress,
                  fmt::format("{} is not an address of this machine", letter));
   }
-  if (word.kind == MBRT_WORD_DEC_LITERAL &&
-      std::string_view("DHMST").find(letter) != std::string_view::npos) {
+  if (word.kind == MBRT_WORD_DEC_LITERAL && isWholeNumberAddress(letter)) {
     // M3.0 is no M code (spec §1.5); a value, M[3.0] or M#1, is rounded.
     const double v = numeric(word.value);
     return raise(ctx, AlarmId::IllegalDecimalPoint,
