@@ -181,13 +181,13 @@ mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
   if (!hasSeq) {
     return 0;
   }
-  return jumpToSeq("M99 P", seq, pc_ - 1);
+  return jumpToSeq(seq, pc_ - 1);
 }
 
-mbrt_status Interpreter::jumpToSeq(const char* what, double seq, int from) {
+mbrt_status Interpreter::jumpToSeq(double seq, int from) {
   double n = roundHalfAway(seq);
   if (n < 1 || n > 99999) {
-    return mbrt_raise_sequence(ctx_, what, seq,
+    return mbrt_raise_sequence(ctx_, "M99 P", seq,
                                unit_.programs[prog_].name.c_str());
   }
   return jumpTo(static_cast<int>(n), from);

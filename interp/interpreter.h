@@ -40,8 +40,8 @@ private:
   // Control (interpreter.cpp).
   mbrt_status step(const Block& b);
   mbrt_status jumpTo(int seq, int from);
-  // `seq` rounded, PS0128 outside 1..99999 (M99 P).
-  mbrt_status jumpToSeq(const char* what, double seq, int from);
+  // M99 P's `seq` rounded, PS0128 outside 1..99999.
+  mbrt_status jumpToSeq(double seq, int from);
   mbrt_status enter(int program, int kind, std::vector<mbrt_word> args,
                     long repeat);
   mbrt_status leave(bool hasSeq, double seq, bool& finished);

@@ -123,7 +123,7 @@ mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
     case MBRT_FLOW_RETURN: {
       if (stack_.empty() && flow.has_seq != 0) {
         // M99 P in the main program jumps to that N of it (spec §5.8).
-        return jumpToSeq("M99 P", flow.seq, pc_);
+        return jumpToSeq(flow.seq, pc_);
       }
       if (stack_.empty()) {
         // M99 in the main program ends a batch run (spec Part A).
