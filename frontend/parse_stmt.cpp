@@ -2,6 +2,8 @@
 // calls. Macro B's classic mistakes get a diagnostic with the fix.
 #include "frontend/parser.h"
 
+#include <mbc/alarm.h>
+
 #include <cmath>
 
 namespace mbc::detail {
@@ -108,21 +110,17 @@ void Parser::parseAssign(Stmt& s) {
   }
 }
 
-// #3000 and #3006 show at most 26 characters of their message (the
-// runtime's messageText); a longer one loses its end unnoticed.
+// #3000 and #3006 show a part of their message (as the runtime does); a
+// longer one loses its end unnoticed.
 void Parser::checkMessageLength(const Stmt& s, const Token& comment) {
-  constexpr std::size_t kShown = 26;
   if (!options_.checkWarnings || s.target.index ||
       (s.target.number != 3000 && s.target.number != 3006)) {
     return;
   }
-  std::string_view text = s.message;
-  text.remove_prefix(std::min(text.find_first_not_of(" \t"), text.size()));
-  text.remove_suffix(text.size() -
-                     std::min(text.find_last_not_of(" \t") + 1, text.size()));
-  if (text.size() > kShown) {
+  const std::string_view text = trimmedMessage(s.message);
+  if (text.size() > kMessageShown) {
     diags_.report(DiagKind::MessageTooLong, comment.range, s.target.number,
-                  kShown, std::string(text.substr(0, kShown)));
+                  kMessageShown, std::string(text.substr(0, kMessageShown)));
   }
 }
 

@@ -3,6 +3,7 @@
 #include <mbc/alarm.h>
 
 #include <array>
+#include <cctype>
 #include <cstddef>
 
 namespace mbc {
@@ -42,6 +43,18 @@ std::string alarmCode(AlarmId id, int macroNumber) {
   }
   const AlarmInfo& info = alarmInfo(id);
   return info.prefix + zeroPadded(info.number, 4);
+}
+
+std::string_view trimmedMessage(std::string_view comment) {
+  while (!comment.empty() &&
+         std::isspace(static_cast<unsigned char>(comment.front()))) {
+    comment.remove_prefix(1);
+  }
+  while (!comment.empty() &&
+         std::isspace(static_cast<unsigned char>(comment.back()))) {
+    comment.remove_suffix(1);
+  }
+  return comment;
 }
 
 } // namespace mbc

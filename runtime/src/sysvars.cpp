@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cstdint>
 #include <limits>
 #include <string_view>
@@ -112,17 +111,10 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   return 0;
 }
 
-/// The control shows at most 26 characters of an alarm or message text.
+/// What the control shows of an alarm or message text.
 std::string messageText(const char* comment) {
-  std::string_view text = comment != nullptr ? comment : "";
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text[0]))) {
-    text.remove_prefix(1);
-  }
-  while (!text.empty() &&
-         std::isspace(static_cast<unsigned char>(text.back()))) {
-    text.remove_suffix(1);
-  }
-  return std::string(text.substr(0, 26));
+  return std::string(
+      trimmedMessage(comment != nullptr ? comment : "").substr(0, kMessageShown));
 }
 
 mbrt_status writeMacroAlarm(mbrt_ctx& ctx, int, Num value,

@@ -2,8 +2,10 @@
 // ("PS0112", "3001", "MBC0001").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace mbc {
 
@@ -24,5 +26,13 @@ const AlarmInfo& alarmInfo(AlarmId id);
 
 /// "PS0112" for program alarms, "3000+n" for macro alarms, "MBC0001" for ours.
 std::string alarmCode(AlarmId id, int macroNumber);
+
+/// The control shows at most this many characters of a #3000 or #3006
+/// message.
+inline constexpr std::size_t kMessageShown = 26;
+
+/// A #3000 or #3006 message as written in its comment, without the spaces
+/// around it.
+std::string_view trimmedMessage(std::string_view comment);
 
 } // namespace mbc
