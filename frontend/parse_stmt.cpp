@@ -2,6 +2,7 @@
 // calls. Macro B's classic mistakes get a diagnostic with the fix.
 #include "frontend/parser.h"
 
+#include <mbc/addresses.h>
 #include <mbc/alarm.h>
 
 #include <cmath>
@@ -406,7 +407,7 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
     return;
   }
   if (!macroArgument && w.kind == WordKind::DecLiteral &&
-      std::string_view("DHMST").find(w.letter) != std::string_view::npos) {
+      isWholeNumberAddress(w.letter)) {
     diags_.report(DiagKind::IntegerAddressDecimal, w.range,
                   std::string(1, w.letter));
     return;

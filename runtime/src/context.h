@@ -3,6 +3,7 @@
 // alarm, plus the helpers the runtime's source files share.
 #pragma once
 
+#include <mbc/addresses.h>
 #include <mbc/alarm.h>
 #include <mbc/compiled.h>
 #include <mbc/runtime.h>
@@ -308,11 +309,6 @@ inline double roundToCounts(double value, double scale) {
     whole += 1.0;
   }
   return value < 0 ? -whole : whole;
-}
-
-/// M S T H D take whole numbers: no decimal point, no sign.
-inline bool isWholeNumberAddress(char letter) {
-  return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
 /// FANUC addresses take at most nine digits (PS0003 beyond).
