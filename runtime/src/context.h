@@ -311,6 +311,10 @@ inline double roundToCounts(double value, double scale) {
   return value < 0 ? -whole : whole;
 }
 
+/// Least increments per unit of an address: 1000 or 10000 on axes, arc
+/// centres, Q and F, 10 for G codes (G54.1), 1 for the others.
+double addressCountsPerUnit(const mbrt_ctx& ctx, char letter);
+
 /// FANUC addresses take at most nine digits (PS0003 beyond).
 inline bool fitsAddress(double counts) {
   return std::fabs(counts) <= 999'999'999.0;

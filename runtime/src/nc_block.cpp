@@ -85,6 +85,21 @@ bool isArcCenterLetter(char letter) {
   return letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
 }
 
+} // namespace
+
+double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
+  if (letter == 'G') {
+    return 10.0;
+  }
+  if (ctx.axisOf(letter) >= 0 || isArcCenterLetter(letter) || letter == 'Q' ||
+      letter == 'F') {
+    return ctx.scale();
+  }
+  return 1.0;
+}
+
+namespace {
+
 /// An axis or arc word in counts: a literal without decimal point already is
 /// counts (unless 3401#0), everything else is rounded to the increment.
 mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
@@ -633,12 +648,5 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
 }
 
 double mbrt_address_increment(const mbrt_ctx* ctx, char letter) {
-  if (letter == 'G') {
-    return 0.1;
-  }
-  if (ctx->axisOf(letter) >= 0 || isArcCenterLetter(letter) || letter == 'Q' ||
-      letter == 'F') {
-    return 1.0 / ctx->scale();
-  }
-  return 1.0;
+  return 1.0 / addressCountsPerUnit(*ctx, letter);
 }
