@@ -43,8 +43,7 @@ int dispatch(int argc, char** argv) {
     if (!options->run.machinePath.empty() && !createContext(options->run)) {
       return 2;
     }
-    return loadUnit(options->files, true, cu, options->run.machinePath) ? 0
-                                                                       : 1;
+    return loadUnit(options->files, true, cu, options->run.machinePath) ? 0 : 1;
   }
   return runCommand(*options);
 }

@@ -1,7 +1,6 @@
 // Statements: assignments, IF/GOTO/THEN, WHILE/DO/END, NC words and G65
 // calls. Macro B's classic mistakes get a diagnostic with the fix.
 #include "frontend/parser.h"
-
 #include <mbc/addresses.h>
 #include <mbc/alarm.h>
 
@@ -202,10 +201,10 @@ void Parser::reportThenWithoutAssignment(const Token& then) {
   } else if (isKeyword(Keyword::Goto)) {
     auto& d =
         diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range, "GOTO");
-    d.fixIts.push_back({{then.range.begin, tok_.range.begin.offset +
-                                               tok_.range.length -
-                                               then.range.begin.offset},
-                        "GOTO"});
+    d.fixIts.push_back(
+        {{then.range.begin, tok_.range.begin.offset + tok_.range.length -
+                                then.range.begin.offset},
+         "GOTO"});
     diags_.note(DiagKind::ThenGotoNote, tok_.range);
   } else if (tok_.kind == Tok::Keyword) {
     diags_.report(DiagKind::ThenNeedsMacroStatement, tok_.range, tok_.text);
@@ -414,10 +413,9 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
   }
   // A U V W B C are axes only on machines that have them; as macro
   // arguments on the default machine they are plain numbers.
-  bool length = macroArgument
-                    ? std::string_view("XYZIJKRQ").find(w.letter) !=
-                          std::string_view::npos
-                    : isLengthAddress(w.letter);
+  bool length = macroArgument ? std::string_view("XYZIJKRQ").find(w.letter) !=
+                                    std::string_view::npos
+                              : isLengthAddress(w.letter);
   if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length ||
       units.notLengths.find(w.letter) != std::string::npos) {
     return;

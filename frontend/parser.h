@@ -52,11 +52,13 @@ private:
   void parseWords(Stmt& s);
   Word parseWord();
   void finishMacroCall(Stmt& s);
+
   // What a block's G codes make of its letters (checkDecimalPoint).
   struct WordUnits {
     std::string notLengths; // no length: no warning
     std::string angles;     // degrees
   };
+
   void checkDecimalPoint(const Word& w, bool macroArgument,
                          const WordUnits& units = {});
   void parsePrint(Stmt& s);

@@ -71,8 +71,7 @@ mbrt_status mbrt_round_address(mbrt_ctx* ctx, int letter, double x,
   // The same rounding as the address's own (a decimal tie such as 1.0005
   // rounds up although 1.0005 / 0.001 is 1000.4999...), in whole
   // increments per unit so that the result is the nearest double.
-  const double perUnit =
-      addressCountsPerUnit(*ctx, static_cast<char>(letter));
+  const double perUnit = addressCountsPerUnit(*ctx, static_cast<char>(letter));
   *out = roundToCounts(numeric(x), perUnit) / perUnit;
   return 0;
 }

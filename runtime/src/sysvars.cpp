@@ -52,13 +52,13 @@ mbrt_status writeOutputSignal(mbrt_ctx& ctx, int index, Num value,
                               const char*) {
   const double v = numeric(value);
   if (v != 0.0 && v != 1.0) {
-    return raise(ctx, AlarmId::ArgumentOutOfRange,
-                 fmt::format("#{} is one signal: 0 or 1, not {}", 1100 + index,
-                             v));
+    return raise(
+        ctx, AlarmId::ArgumentOutOfRange,
+        fmt::format("#{} is one signal: 0 or 1, not {}", 1100 + index, v));
   }
   const std::uint32_t bit = 1U << index;
-  ctx.outputWords[0] = v != 0.0 ? ctx.outputWords[0] | bit
-                                : ctx.outputWords[0] & ~bit;
+  ctx.outputWords[0] =
+      v != 0.0 ? ctx.outputWords[0] | bit : ctx.outputWords[0] & ~bit;
   return 0;
 }
 
@@ -113,8 +113,8 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
 
 /// What the control shows of an alarm or message text.
 std::string messageText(const char* comment) {
-  return std::string(
-      trimmedMessage(comment != nullptr ? comment : "").substr(0, kMessageShown));
+  return std::string(trimmedMessage(comment != nullptr ? comment : "")
+                         .substr(0, kMessageShown));
 }
 
 mbrt_status writeMacroAlarm(mbrt_ctx& ctx, int, Num value,

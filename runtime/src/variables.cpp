@@ -2,13 +2,12 @@
 // locals and the common variables are handled here on the hot path; every
 // number from #1000 up goes to the system variable table (sysvars.cpp).
 #include <mbc/arith.h>
+#include <mbc/sysvars.h>
 
 #include <fmt/format.h>
 
 #include "context.h"
 #include "sysvars.h"
-
-#include <mbc/sysvars.h>
 
 using namespace mbc;
 using namespace mbc::rt;

@@ -193,6 +193,7 @@ TEST(RuntimeArc, InchArc) {
 }
 
 } // namespace
+
 // F is the feed along the arc in its plane; the helix's linear axis only
 // follows (FANUC helical interpolation): a full circle of radius 5 at F100
 // takes 10 pi / 100 minutes whatever Z travels.
