@@ -2,14 +2,17 @@
 """Differential testing of mbc's engines on random Macro B programs.
 
 Generates valid programs (bounded loops, IF/GOTO with computed and
-loop-leaving jumps, M99 P in the main program, G65/M98 nests, G66 modal
-calls, indirection across variable ranges, vacant values, every function
-and operator with edge arguments, DPRNT, motion, system variables), runs
-each under every engine and optimisation level, and compares everything a
-run writes with the interpreter's: exit status, stderr (alarms,
-the --trace record), toolpath, DPRNT and variables. A program that differs is
-reduced line by line to a small one that still differs the same way and
-written to --out.
+loop-leaving jumps, M99 P in the main program, G65/M98 nests, G66 and
+G66.1 modal calls, calls by G, M and T codes, indirection across variable
+ranges, vacant values, every function and operator with edge arguments,
+DPRNT, BPRNT, motion with work and tool offsets, optional block skip,
+system variables read and written), each with the run options and machine
+profile it needs (--block-skip, --arg, --set, --machine), runs each under
+every engine and optimisation level, and compares everything a run writes
+with the interpreter's: exit status, stderr (alarms, the --trace record),
+toolpath, DPRNT and variables. A program that differs is reduced line by
+line to a small one that still differs the same way and written to --out
+(with its machine profile beside it, and its run options printed).
 
     tools/difftest.py --mbc build/mbc [--engines build/tests/difftest_engines]
                       -n 1000 [--seed 1] [--jobs 2]
@@ -20,6 +23,7 @@ fast; tests/difftest/engines_test.py checks it writes what mbc run does).
 Exit status 0 when every program agreed, 1 when one differed.
 """
 import argparse
+import json
 import multiprocessing
 import random
 import subprocess
@@ -51,9 +55,16 @@ MACRO_COUNTERS = (27, 28, 29)
 SUB_COUNTERS = (30, 31, 32)
 BRACKET_LIMIT = 5  # PS0118: brackets nest at most 5 deep
 # System variables a run changes: the last N, G codes, F, positions, the
-# simulated clock, the G66 state.
+# simulated clock, the G66 state, offsets, output signals, the parts count.
 SYSTEM_READS = ("#4114", "#4001", "#4003", "#4109", "#4012", "#5001",
-                "#5002", "#5003", "#5041", "#3001")
+                "#5002", "#5003", "#5041", "#3001", "#5043", "#5023",
+                "#5221", "#2001", "#1132", "#1101", "#3901")
+# Calls by codes (machine profile parameter and its value, the code, the
+# program called): a G code calling a macro, one whose call is modal
+# (negative; G67 cancels it), an M code calling a macro, an M code calling
+# a subprogram (no arguments). 6001 bit 5 makes T call O9000.
+CODE_CALLS = (("6050", 100, "G100", 9010), ("6051", -101, "G101", 9011),
+              ("6080", 200, "M200", 9020), ("6071", 300, "M300", 9001))
 
 
 class Generator:
@@ -64,6 +75,12 @@ class Generator:
         self.rng = random.Random(seed)
         self.macros = [2001 + i for i in range(self.rng.randint(0, 3))]
         self.subs = [3001 + i for i in range(self.rng.randint(0, 2))]
+        # Programs the main program calls by a code, each a program that
+        # calls nothing (a program called by a code calls by codes no more).
+        self.code_calls = ([c for c in CODE_CALLS if self.chance(0.6)]
+                           if self.chance(0.3) else [])
+        self.t_call = self.chance(0.1)
+        self.skip = self.chance(0.3)
 
     def chance(self, p):
         return self.rng.random() < p
@@ -205,12 +222,51 @@ class Generator:
         if code != "G00" and self.chance(0.4):
             words.append(f"F{self.rng.randint(50, 3000)}")
         prefix = self.pick(("", "", "G90 ", "G91 "))
+        if self.chance(0.15):
+            prefix += self.pick(("G54 ", "G55 ", "G49 "))
+        if code in ("G00", "G01") and self.chance(0.1):
+            prefix += f"G43 H{self.rng.randint(1, 3)} "
         if self.chance(0.2):  # no GOTO target: #4114 reads it
             prefix = f"N{self.rng.randint(1000, 1999)} {prefix}"
-        return f"{prefix}{code} {' '.join(words)}"
+        return f"{self.skip_mark()}{prefix}{code} {' '.join(words)}"
+
+    def skip_mark(self):
+        """Optional block skip, / or /2, on some NC blocks."""
+        if self.chance(0.1):
+            return self.pick(("/ ", "/2 "))
+        return ""
+
+    def system_write(self):
+        """A write to offsets or output signals that later blocks read."""
+        roll = self.rng.random()
+        if roll < 0.4:
+            number = self.pick((5221, 5222, 5223, 5241, 5242, 5201))
+            return f"#{number} = {self.expression(0, 1)}"
+        if roll < 0.7:
+            return f"#{self.rng.randint(2001, 2003)} = {self.expression(0, 1)}"
+        if roll < 0.8:
+            return f"#1132 = {self.rng.randint(-1000, 1000)}"
+        if roll < 0.9:
+            return f"#3901 = {self.rng.randint(0, 100)}"
+        return f"#{self.rng.randint(1100, 1115)} = {self.rng.randint(0, 1)}"
+
+    def code_call(self):
+        """A block that calls by a code of the machine profile."""
+        if self.t_call and (not self.code_calls or self.chance(0.2)):
+            return f"{self.skip_mark()}T{self.rng.randint(1, 99)}"
+        _, _, code, _ = self.pick(self.code_calls)
+        arguments = "" if code == "M300" else self.arguments()
+        return f"{self.skip_mark()}{code} {arguments}".rstrip()
 
     def dprnt(self):
+        if self.chance(0.15):
+            return self.pick(("POPEN", "PCLOS"))
         items = []
+        if self.chance(0.2):  # BPRNT: each value a 32-bit integer
+            for _ in range(self.rng.randint(1, 3)):
+                items.append(f"{self.pick('AXYZ')}#{self.rng.randint(1, 33)}"
+                             f"[{self.rng.randint(0, 5)}]")
+            return f"BPRNT[{'*'.join(items)}]"
         for _ in range(self.rng.randint(1, 3)):
             text = self.pick(("A", "VAL", "X", "R*", "N1*"))
             items.append(f"{text}#{self.rng.randint(1, 33)}"
@@ -243,7 +299,10 @@ class Generator:
         while budget > 0:
             budget -= 1
             roll = self.rng.random()
-            if roll < 0.3:
+            if (level == "main" and (self.code_calls or self.t_call)
+                    and self.chance(0.15)):
+                lines.append(self.code_call())
+            elif roll < 0.3:
                 lines.append(self.assignment())
             elif roll < 0.42:
                 lines.append(self.motion())
@@ -284,6 +343,11 @@ class Generator:
             elif roll < 0.89 and labels and level == "main":
                 # In the main program M99 P jumps like GOTO.
                 lines.append(f"M99 P{self.pick(labels)}")
+            elif roll < 0.93:
+                lines.append(self.system_write())
+            elif roll < 0.95 and self.skip:
+                # A macro statement under a numbered switch: /1 or /2.
+                lines.append(f"/{self.rng.randint(1, 2)} {self.assignment()}")
             else:
                 lines.append(self.assignment())
         return lines
@@ -298,12 +362,12 @@ class Generator:
             lines.append("G90 G17 G21 G00 X0 Y0 Z0 F1000")
         for i, label in enumerate(labels):
             later = labels[i + 1:]
-            # A section of the main program under a G66 modal call; a GOTO
-            # past its G67 leaves it in force under the next one's.
-            modal = level == "main" and self.macros and self.chance(0.2)
+            # A section of the main program under a G66 or G66.1 modal
+            # call, or a modal call by a G code; a GOTO past its G67
+            # leaves it in force under the next one's.
+            modal = level == "main" and self.modal_call()
             if modal:
-                lines.append(f"G66 P{self.pick(self.macros)} "
-                             f"{self.arguments()}".rstrip())
+                lines.append(modal)
             lines += self.body(number, level, [], later,
                                self.rng.randint(2, 8))
             if modal:
@@ -312,17 +376,65 @@ class Generator:
         lines.append("M30" if level == "main" else "M99")
         return lines
 
+    def modal_call(self):
+        """The block that starts a modal call, or None."""
+        modal_code = [code for _, value, code, _ in self.code_calls
+                      if value < 0]
+        if not self.chance(0.25) or not (self.macros or modal_code):
+            return None
+        if modal_code and (not self.macros or self.chance(0.3)):
+            return f"{modal_code[0]} {self.arguments()}".rstrip()
+        kind = "G66.1" if self.chance(0.25) else "G66"
+        return f"{kind} P{self.pick(self.macros)} {self.arguments()}".rstrip()
+
     def text(self):
         lines = ["%"] + self.program(1000, "main")
         for macro in self.macros:
             lines += self.program(macro, "macro")
         for sub in self.subs:
             lines += self.program(sub, "sub")
+        called = [program for _, _, _, program in self.code_calls]
+        for program in called + ([9000] if self.t_call else []):
+            lines += self.program(program, "sub")
         return "\n".join(lines + ["%", ""])
 
+    def profile(self):
+        """The machine profile (JSON text) the calls by codes need, or
+        None."""
+        parameters = {name: value for name, value, _, _ in self.code_calls}
+        if self.t_call:
+            parameters["6001"] = 32
+        if not parameters:
+            return None
+        return json.dumps({"parameters": parameters})
 
-def run(mbc, source, engine, options, work):
-    """Everything one run writes, as a dict of output name to text."""
+    def options(self):
+        """Run options: block skip switches, arguments of the main
+        program, preset variables."""
+        options = []
+        if self.skip:
+            options.append(self.pick(("--block-skip", "--block-skip=2")))
+        if self.chance(0.2):
+            for letter in self.rng.sample(ARGUMENT_LETTERS,
+                                          self.rng.randint(1, 3)):
+                options += ["--arg", f"{letter}={self.number()}"]
+        if self.chance(0.2):
+            number = self.pick((100, 105, 500, 503))
+            options += ["--set", f"#{number}={self.number()}"]
+        return options
+
+
+def generate(seed):
+    """The program of a seed, its run options and its machine profile
+    (JSON text or None)."""
+    generator = Generator(seed)
+    text = generator.text()
+    return text, generator.options(), generator.profile()
+
+
+def run(mbc, source, engine, options, work, extra=()):
+    """Everything one run writes, as a dict of output name to text (the
+    files' bytes); `extra`: the case's run options."""
     work.mkdir(parents=True, exist_ok=True)
     for name in OUTPUTS:
         (work / name).unlink(missing_ok=True)
@@ -332,7 +444,7 @@ def run(mbc, source, engine, options, work):
              "--trace", "--max-blocks", MAX_BLOCKS,
              "--toolpath", str(work / "toolpath.jsonl"),
              "--dprnt", str(work / "dprnt"),
-             "--vars-out", str(work / "vars.json")],
+             "--vars-out", str(work / "vars.json"), *extra],
             capture_output=True, text=True, timeout=60)
         status, stderr = str(result.returncode), result.stderr
     except subprocess.TimeoutExpired:
@@ -340,17 +452,18 @@ def run(mbc, source, engine, options, work):
     outputs = {"status": status, "stderr": stderr}
     for name in OUTPUTS[2:]:
         path = work / name
-        outputs[name] = path.read_text() if path.exists() else None
+        outputs[name] = path.read_bytes() if path.exists() else None
     return outputs
 
 
-def run_all(engines, source, work):
+def run_all(engines, source, work, extra=()):
     """What every run wrote, interp first then ENGINES, from one process of
     difftest_engines (tests/difftest/engines_main.cpp); None when that
     process itself failed (a crash in one engine ends them all)."""
     try:
-        result = subprocess.run([engines, str(source), MAX_BLOCKS, str(work)],
-                                capture_output=True, timeout=300)
+        result = subprocess.run(
+            [engines, str(source), MAX_BLOCKS, str(work), *extra],
+            capture_output=True, timeout=300)
     except subprocess.TimeoutExpired:
         return None
     if result.returncode != 0:
@@ -362,7 +475,7 @@ def run_all(engines, source, work):
                    "stderr": (folder / "stderr").read_text()}
         for name in OUTPUTS[2:]:
             path = folder / name
-            outputs[name] = path.read_text() if path.exists() else None
+            outputs[name] = path.read_bytes() if path.exists() else None
         runs.append(outputs)
     return runs
 
@@ -377,18 +490,28 @@ def first_difference(reference, runs):
     return None
 
 
-def compare(mbc, text, work, engines=None):
+def case_options(options, profile, work):
+    """The run options of a case, its machine profile written to `work`."""
+    if profile is None:
+        return list(options)
+    path = work / "machine.json"
+    path.write_text(profile)
+    return [*options, "--machine", str(path)]
+
+
+def compare(mbc, text, work, engines=None, options=(), profile=None):
     """The interpreter's exit status, and (engine, output) of the first
     engine that differs from the interpreter or None. With `engines`, one
     process runs them all; when it fails, each runs in an mbc of its own,
     which tells which one."""
     source = work / "case.nc"
     source.write_text(text)
-    runs = run_all(engines, source, work / "all") if engines else None
+    extra = case_options(options, profile, work)
+    runs = run_all(engines, source, work / "all", extra) if engines else None
     if runs is None:
-        runs = [run(mbc, source, "interp", [], work / "interp")]
-        runs += [run(mbc, source, engine, options, work / engine)
-                 for engine, options in ENGINES]
+        runs = [run(mbc, source, "interp", [], work / "interp", extra)]
+        runs += [run(mbc, source, engine, flags, work / engine, extra)
+                 for engine, flags in ENGINES]
     return runs[0]["status"], first_difference(runs[0], runs[1:])
 
 
@@ -413,10 +536,20 @@ def reduce(text, still_differs):
 
 def check(job):
     mbc, engines, seed = job
-    text = Generator(seed).text()
+    text, options, profile = generate(seed)
     with tempfile.TemporaryDirectory() as work:
-        status, found = compare(mbc, text, Path(work), engines)
-    return seed, text, status, found
+        status, found = compare(mbc, text, Path(work), engines, options,
+                                profile)
+    return seed, status, found
+
+
+def keep_case(out, seed, text, profile):
+    """Writes a case to `out`: its program and its machine profile."""
+    path = Path(out) / f"difftest-{seed}.nc"
+    path.write_text(text)
+    if profile is not None:
+        path.with_suffix(".json").write_text(profile)
+    return path
 
 
 def main():
@@ -431,7 +564,10 @@ def main():
                         "engines of a program in one process (faster)")
     args = parser.parse_args()
     if args.show is not None:
-        print(Generator(args.show).text(), end="")
+        text, options, profile = generate(args.show)
+        print(text, end="")
+        print(f"run options: {' '.join(options) or '(none)'}; machine "
+              f"profile: {profile or '(none)'}", file=sys.stderr)
         return 0
     mbc = str(Path(args.mbc).resolve())
     engines = str(Path(args.engines).resolve()) if args.engines else None
@@ -439,28 +575,29 @@ def main():
             for seed in range(args.seed, args.seed + args.n)]
     ends = {}
     with multiprocessing.Pool(args.jobs) as pool:
-        for done, (seed, text, status, found) in enumerate(
+        for done, (seed, status, found) in enumerate(
                 pool.imap(check, jobs), 1):
             ends[status] = ends.get(status, 0) + 1
+            if status not in ("0", "3") or found:
+                pool.terminate()
+                text, options, profile = generate(seed)
+                shown = f"run options: {' '.join(options) or '(none)'}"
             if status not in ("0", "3"):
                 # Not a valid program (a generator bug), an internal error,
                 # a crash or a hang: each worth a look.
-                pool.terminate()
-                path = Path(args.out) / f"difftest-{seed}.nc"
-                path.write_text(text)
+                path = keep_case(args.out, seed, text, profile)
                 print(f"difftest: seed {seed}: the interpreter's run ended "
-                      f"with status {status} ({path})", file=sys.stderr)
+                      f"with status {status} ({path}; {shown})",
+                      file=sys.stderr)
                 return 1
             if found:
-                pool.terminate()
                 print(f"difftest: seed {seed}: --engine {found[0]} differs "
                       f"from interp in {found[1]}; reducing", file=sys.stderr)
                 with tempfile.TemporaryDirectory() as work:
                     small = reduce(text, lambda t: compare(
-                        mbc, t, Path(work))[1] == found)
-                path = Path(args.out) / f"difftest-{seed}.nc"
-                path.write_text(small)
-                print(f"difftest: reduced case in {path}:\n{small}",
+                        mbc, t, Path(work), None, options, profile)[1] == found)
+                path = keep_case(args.out, seed, small, profile)
+                print(f"difftest: reduced case in {path} ({shown}):\n{small}",
                       file=sys.stderr)
                 return 1
             if done % 100 == 0:

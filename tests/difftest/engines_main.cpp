@@ -1,11 +1,12 @@
-// difftest_engines FILE MAX_BLOCKS DIR: runs FILE as `mbc run FILE
-// --engine E [-O] --trace --max-blocks N --toolpath ... --dprnt ...
-// --vars-out ...` would, under the interpreter, the IR evaluator and the
-// JIT at -O0, -O1 and -O2, all in this one process (through runCommand, as
-// mbc run does), and writes what each run wrote to DIR/<k>/ (status,
-// stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
+// difftest_engines FILE MAX_BLOCKS DIR [RUN OPTION]...: runs FILE as `mbc
+// run FILE --engine E [-O] --trace --max-blocks N --toolpath ... --dprnt ...
+// --vars-out ... [RUN OPTION]...` would, under the interpreter, the IR
+// evaluator and the JIT at -O0, -O1 and -O2, all in this one process (through
+// runCommand, as mbc run does), and writes what each run wrote to DIR/<k>/
+// (status, stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
 // tools/difftest.py --engines uses it for long runs: one process start
 // instead of five per program.
+#include "driver/arg_reader.h"
 #include "driver/run_command.h"
 #include "driver/run_options.h"
 
@@ -16,6 +17,7 @@
 #include <fstream>
 #include <string>
 #include <unistd.h>
+#include <utility>
 
 using namespace mbc::driver;
 
@@ -30,17 +32,15 @@ constexpr Config kConfigs[] = {
     {"interp", 2}, {"ir", 2}, {"jit", 0}, {"jit", 1}, {"jit", 2}};
 
 // One run as `mbc run` makes it, standard error going to `dir/stderr`.
-int runConfig(const Config& c, const std::string& file,
-              const std::string& maxBlocks, const std::string& dir) {
+int runConfig(const Config& c, const std::string& file, RunOptions run,
+              const std::string& dir) {
   Options o;
   o.command = "run";
   o.files = {file};
   o.engine = c.engine;
   o.optLevel = c.optLevel;
+  o.run = std::move(run);
   o.run.trace = true;
-  double limit = 0;
-  parseNumber(maxBlocks, limit);
-  o.run.maxBlocks = static_cast<std::uint64_t>(limit);
   o.run.toolpathPath = dir + "/toolpath.jsonl";
   o.run.dprntPath = dir + "/dprnt";
   o.run.varsOutPath = dir + "/vars.json";
@@ -50,9 +50,23 @@ int runConfig(const Config& c, const std::string& file,
 } // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: difftest_engines FILE MAX_BLOCKS DIR\n");
+  RunOptions run;
+  double limit = 0;
+  if (argc < 4 || !parseNumber(argv[2], limit)) {
+    std::fprintf(
+        stderr,
+        "usage: difftest_engines FILE MAX_BLOCKS DIR [RUN OPTION]...\n");
     return 2;
+  }
+  run.maxBlocks = static_cast<std::uint64_t>(limit);
+  ArgReader args(argc, argv, 4);
+  while (args.advance()) {
+    std::string error;
+    if (readRunOption(args, run, error) != OptionStatus::Taken) {
+      std::fprintf(stderr, "difftest_engines: %s: %s\n", args.arg().c_str(),
+                   error.empty() ? "not a run option" : error.c_str());
+      return 2;
+    }
   }
   const int savedStderr = dup(STDERR_FILENO);
   for (std::size_t k = 0; k < std::size(kConfigs); ++k) {
@@ -63,7 +77,7 @@ int main(int argc, char** argv) {
         open((dir + "/stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(err, STDERR_FILENO);
     close(err);
-    const int status = runConfig(kConfigs[k], argv[1], argv[2], dir);
+    const int status = runConfig(kConfigs[k], argv[1], run, dir);
     std::fflush(stderr);
     dup2(savedStderr, STDERR_FILENO);
     std::ofstream(dir + "/status") << status;
