@@ -7,6 +7,7 @@
 #include "codegen/emit_module.h"
 #include "codegen/native_target.h"
 #include "codegen/optimize.h"
+#include "codegen/out_of_memory.h"
 #include "codegen/verify.h"
 #include <mbc/compiled.h>
 
@@ -85,6 +86,7 @@ Jit::~Jit() = default;
 std::unique_ptr<Jit> Jit::compile(const ir::Module& module,
                                   const JitOptions& options,
                                   std::string& error) {
+  ExitOnOutOfMemory exitOnOutOfMemory;
   int optLevel = options.optLevel;
   initializeNativeTarget();
   auto builder = llvm::orc::JITTargetMachineBuilder::detectHost();

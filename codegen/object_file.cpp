@@ -5,6 +5,7 @@
 #include "codegen/link_objects.h"
 #include "codegen/native_target.h"
 #include "codegen/optimize.h"
+#include "codegen/out_of_memory.h"
 #include "codegen/verify.h"
 
 #include <llvm/ADT/Triple.h>
@@ -197,6 +198,7 @@ bool compileInParts(const ir::Module& module, const ObjectOptions& options,
 
 bool writeCompiled(const ir::Module& module, const ObjectOptions& options,
                    FileKind kind, const std::string& path, std::string& error) {
+  ExitOnOutOfMemory exitOnOutOfMemory;
   auto compile = [&](llvm::raw_pwrite_stream& out) {
     return compileModule(module, options, options.emit, kind, out, error);
   };

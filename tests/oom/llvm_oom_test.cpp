@@ -1,0 +1,175 @@
+// An allocation that fails while LLVM compiles must end mbc with "out of
+// memory" and status 4: never a crash from a std::bad_alloc thrown through
+// LLVM, which is not exception-safe. This executable replaces operator new
+// with one that fails the n-th allocation from a point on, as malloc would
+// under a memory limit (calling the new-handler, then throwing), and fails
+// each of a spread of the allocations of a JIT compile and of an object
+// file's compile in a child process of its own.
+#include "codegen/jit.h"
+#include "codegen/object_file.h"
+#include "driver/ir_pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <string>
+
+namespace {
+
+// Allocations left before the one that fails; negative: none fails.
+std::atomic<long> gAllocationsLeft{-1};
+std::atomic<long> gAllocations{0};
+
+void* allocate(std::size_t size) {
+  gAllocations.fetch_add(1, std::memory_order_relaxed);
+  for (;;) {
+    const bool fail =
+        gAllocationsLeft.load(std::memory_order_relaxed) >= 0 &&
+        gAllocationsLeft.fetch_sub(1, std::memory_order_relaxed) == 0;
+    if (void* p = fail ? nullptr : std::malloc(size == 0 ? 1 : size)) {
+      return p;
+    }
+    std::new_handler handler = std::get_new_handler();
+    if (handler == nullptr) {
+      throw std::bad_alloc();
+    }
+    handler();
+  }
+}
+
+} // namespace
+
+void* operator new(std::size_t size) {
+  return allocate(size);
+}
+
+void* operator new[](std::size_t size) {
+  return allocate(size);
+}
+
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace {
+
+using namespace mbc;
+
+// Loops, a macro call, a computed jump and DPRNT: enough for the passes and
+// the code generator to allocate at every stage.
+constexpr const char* kProgram = R"(%
+O1000
+#1 = 0
+WHILE [#1 LT 10] DO1
+G01 X[#1 * 2] Y[SIN[#1 * 36]] F500
+G65 P2000 A#1
+#1 = #1 + 1
+END1
+#2 = 20
+GOTO #2
+N10 #3 = 1
+N20 DPRNT[X#1[43]]
+M30
+O2000
+#100 = #100 + #1
+IF [#1 GT 5] GOTO 5
+#101 = ROUND[#1 / 3]
+N5 M99
+%
+)";
+
+ir::Module loadProgram(const std::filesystem::path& dir) {
+  const std::filesystem::path source = dir / "oom.nc";
+  std::ofstream(source) << kProgram;
+  driver::Options o;
+  o.command = "run";
+  o.files = {source.string()};
+  ir::Module m;
+  EXPECT_TRUE(driver::loadModule(o, m));
+  return m;
+}
+
+// Counts the allocations of `compile` (the second time: the first also
+// makes LLVM's one-time state), then, each in a child process, fails one
+// of `samples` of them spread over the whole compile: every child must
+// end with status 4 and the message.
+template <class Compile> void failEachSample(Compile compile, int samples) {
+  compile();
+  gAllocations = 0;
+  compile();
+  const long total = gAllocations.load();
+  ASSERT_GT(total, samples);
+  for (int i = 0; i < samples; ++i) {
+    const long failing = total * i / samples;
+    EXPECT_EXIT(
+        {
+          gAllocationsLeft = failing;
+          compile();
+          std::exit(0);
+        },
+        ::testing::ExitedWithCode(4), "mbc: error: out of memory")
+        << "failing allocation " << failing << " of " << total;
+  }
+}
+
+class LlvmOutOfMemory : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("mbc_oom_" +
+            std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir_);
+    module_ = loadProgram(dir_);
+  }
+
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::filesystem::path dir_;
+  ir::Module module_;
+};
+
+TEST_F(LlvmOutOfMemory, JitCompileExits) {
+  for (int level : {0, 2}) {
+    codegen::JitOptions options;
+    options.optLevel = level;
+    failEachSample(
+        [&] {
+          std::string error;
+          auto jit = codegen::Jit::compile(module_, options, error);
+          ASSERT_NE(jit, nullptr) << error;
+        },
+        40);
+  }
+}
+
+TEST_F(LlvmOutOfMemory, ObjectFileCompileExits) {
+  const std::string path = (dir_ / "oom.o").string();
+  codegen::ObjectOptions options;
+  failEachSample(
+      [&] {
+        std::string error;
+        ASSERT_TRUE(codegen::writeCompiled(
+            module_, options, codegen::FileKind::Object, path, error))
+            << error;
+      },
+      40);
+}
+
+} // namespace
