@@ -4,12 +4,13 @@
 #include "driver/batch_table.h"
 
 #include "driver/run_options.h"
+#include <mbc/read_file.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
+#include <cstring>
 #include <set>
 
 namespace mbc::driver {
@@ -127,9 +128,9 @@ bool isIdCharacter(char c) {
 
 bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
                     std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = fmt::format("cannot read '{}'", path);
+  std::string content;
+  if (int readError = readFile(path, content)) {
+    error = fmt::format("cannot read '{}': {}", path, std::strerror(readError));
     return false;
   }
   const auto fail = [&](int line, int column, const std::string& why) {
@@ -142,7 +143,10 @@ bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
   bool hasId = false;
   std::string text;
   int lineNumber = 0, badColumn = 0;
-  while (std::getline(in, text)) {
+  for (std::size_t next = 0; next < content.size();) {
+    const std::size_t end = std::min(content.find('\n', next), content.size());
+    text.assign(content, next, end - next);
+    next = end + 1;
     ++lineNumber;
     if (!text.empty() && text.back() == '\r') {
       text.pop_back();

@@ -3,10 +3,11 @@
 
 #include "frontend/parser.h"
 #include "frontend/sema.h"
+#include <mbc/read_file.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <cstring>
+#include <utility>
 
 namespace mbc::driver {
 
@@ -16,14 +17,13 @@ bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
   ParseOptions options;
   options.checkWarnings = checkWarnings;
   for (const std::string& path : files) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      std::fprintf(stderr, "mbc: error: cannot read '%s'\n", path.c_str());
+    std::string text;
+    if (int error = readFile(path, text)) {
+      std::fprintf(stderr, "mbc: error: cannot read '%s': %s\n", path.c_str(),
+                   std::strerror(error));
       return false;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    std::uint32_t id = out.sources.add(path, text.str());
+    std::uint32_t id = out.sources.add(path, std::move(text));
     parseFile(out.sources, id, diags, options, out.unit);
   }
   checkUnit(out.unit, diags, SemaOptions{machinePath.empty()});

@@ -6,10 +6,10 @@
 #include "ir/pass_manager.h"
 #include "ir/printer.h"
 #include "ir/verifier.h"
+#include <mbc/read_file.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <cstring>
 
 namespace mbc::driver {
 
@@ -37,15 +37,14 @@ bool parseIrFile(const std::vector<std::string>& files, ir::Module& out) {
     std::fprintf(stderr, "mbc: error: -x mbir takes exactly one file\n");
     return false;
   }
-  std::ifstream in(files[0], std::ios::binary);
-  if (!in) {
-    std::fprintf(stderr, "mbc: error: cannot read '%s'\n", files[0].c_str());
+  std::string text;
+  if (int error = readFile(files[0], text)) {
+    std::fprintf(stderr, "mbc: error: cannot read '%s': %s\n", files[0].c_str(),
+                 std::strerror(error));
     return false;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
   std::string error;
-  if (!ir::parseModule(text.str(), out, error)) {
+  if (!ir::parseModule(text, out, error)) {
     std::fprintf(stderr, "mbc: error: %s:%s\n", files[0].c_str(),
                  error.c_str());
     return false;

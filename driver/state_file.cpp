@@ -6,15 +6,16 @@
 #include "driver/state_file.h"
 
 #include "driver/output_files.h"
+#include <mbc/read_file.h>
 #include <mbc/value.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <map>
-#include <sstream>
 
 namespace mbc::driver {
 
@@ -165,14 +166,16 @@ bool sameValue(double a, double b) {
 } // namespace
 
 bool loadState(mbrt_ctx* ctx, const std::string& path, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    return true; // the first run makes the file
+  std::string text;
+  if (int readError = readFile(path, text)) {
+    if (readError == ENOENT) {
+      return true; // the first run makes the file
+    }
+    error = std::strerror(readError);
+    return false;
   }
-  std::stringstream text;
-  text << in.rdbuf();
   try {
-    const json root = json::parse(text.str());
+    const json root = json::parse(text);
     if (!root.is_object()) {
       throw std::runtime_error("the top level must be an object");
     }

@@ -3,6 +3,8 @@
 // are not about variables, calls, NC blocks or output.
 #include "context.h"
 
+#include <mbc/read_file.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,8 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <fstream>
-#include <sstream>
+#include <new>
 
 #include "frames.h"
 #include "motion.h"
@@ -21,10 +22,14 @@ namespace mbc::rt {
 
 namespace {
 
-void copyError(const std::string& message, char* err, size_t errSize) {
+void copyError(const char* message, char* err, size_t errSize) {
   if (err != nullptr && errSize > 0) {
-    std::snprintf(err, errSize, "%s", message.c_str());
+    std::snprintf(err, errSize, "%s", message);
   }
+}
+
+void copyError(const std::string& message, char* err, size_t errSize) {
+  copyError(message.c_str(), err, errSize);
 }
 
 /// #3011/#3012 are fixed for the whole run. SOURCE_DATE_EPOCH makes them
@@ -197,6 +202,10 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
     loadProfile(*ctx);
     resetRun(*ctx, "MAIN");
     return ctx;
+  } catch (const std::bad_alloc&) {
+    // No allocation here: there is no memory for one.
+    copyError("cannot create the runtime: out of memory", err, err_size);
+    return nullptr;
   } catch (const std::exception& e) {
     copyError(std::string("cannot create the runtime: ") + e.what(), err,
               err_size);
@@ -205,17 +214,15 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
 }
 
 mbrt_ctx* mbrt_create_from_file(const char* path, char* err, size_t err_size) {
-  std::ifstream in(path != nullptr ? path : "", std::ios::binary);
-  if (!in) {
+  std::string text;
+  if (int error = mbc::readFile(path != nullptr ? path : "", text)) {
     copyError(fmt::format("cannot read machine profile {}: {}",
                           path != nullptr ? path : "(null)",
-                          std::strerror(errno)),
+                          std::strerror(error)),
               err, err_size);
     return nullptr;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return mbrt_create(text.str().c_str(), err, err_size);
+  return mbrt_create(text.c_str(), err, err_size);
 }
 
 void mbrt_destroy(mbrt_ctx* ctx) {

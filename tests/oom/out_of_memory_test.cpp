@@ -1,16 +1,19 @@
-// An allocation that fails while LLVM compiles must end mbc with "out of
-// memory" and status 4: never a crash from a std::bad_alloc thrown through
-// LLVM, which is not exception-safe. This executable replaces operator new
-// with one that fails the n-th allocation from a point on, as malloc would
-// under a memory limit (calling the new-handler, then throwing), and fails
-// each of a spread of the allocations of a JIT compile and of an object
-// file's compile in a child process of its own.
+// An allocation that fails must end mbc with "out of memory": never a
+// crash, and never a wrong result. While LLVM compiles, which is not
+// exception-safe, mbc exits with status 4; elsewhere std::bad_alloc reaches
+// main, which says the same. This executable replaces operator new with one
+// that fails the n-th allocation from a point on, as malloc would under a
+// memory limit (calling the new-handler, then throwing), and fails each of
+// a spread of the allocations of a JIT compile, of an object file's compile
+// and of a whole `mbc run`, in a child process of its own.
 #include "codegen/jit.h"
 #include "codegen/object_file.h"
 #include "driver/ir_pipeline.h"
+#include "driver/run_command.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +21,7 @@
 #include <fstream>
 #include <new>
 #include <string>
+#include <sys/wait.h>
 
 namespace {
 
@@ -106,30 +110,32 @@ ir::Module loadProgram(const std::filesystem::path& dir) {
   return m;
 }
 
-// Counts the allocations of `compile` (the second time: the first also
-// makes LLVM's one-time state), then, each in a child process, fails one
-// of `samples` of them spread over the whole compile: every child must
-// end with status 4 and the message.
-template <class Compile> void failEachSample(Compile compile, int samples) {
-  compile();
+// Counts the allocations of `work` (the second time: the first also makes
+// LLVM's one-time state), then, each in a child process, fails one of
+// `samples` of them spread over the whole of it (every one when there are
+// fewer): every child must end with the message and a status `ended`
+// accepts.
+template <class Work, class Ended>
+void failEachSample(Work work, int samples, Ended ended) {
+  work();
   gAllocations = 0;
-  compile();
+  work();
   const long total = gAllocations.load();
-  ASSERT_GT(total, samples);
-  for (int i = 0; i < samples; ++i) {
-    const long failing = total * i / samples;
+  const long tried = std::min<long>(total, samples);
+  for (long i = 0; i < tried; ++i) {
+    const long failing = total * i / tried;
     EXPECT_EXIT(
         {
           gAllocationsLeft = failing;
-          compile();
+          work();
           std::exit(0);
         },
-        ::testing::ExitedWithCode(4), "mbc: error: out of memory")
+        ended, "mbc: error: .*out of memory")
         << "failing allocation " << failing << " of " << total;
   }
 }
 
-class LlvmOutOfMemory : public ::testing::Test {
+class OutOfMemory : public ::testing::Test {
 protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
@@ -145,7 +151,7 @@ protected:
   ir::Module module_;
 };
 
-TEST_F(LlvmOutOfMemory, JitCompileExits) {
+TEST_F(OutOfMemory, JitCompileExits) {
   for (int level : {0, 2}) {
     codegen::JitOptions options;
     options.optLevel = level;
@@ -155,11 +161,11 @@ TEST_F(LlvmOutOfMemory, JitCompileExits) {
           auto jit = codegen::Jit::compile(module_, options, error);
           ASSERT_NE(jit, nullptr) << error;
         },
-        40);
+        40, ::testing::ExitedWithCode(4));
   }
 }
 
-TEST_F(LlvmOutOfMemory, ObjectFileCompileExits) {
+TEST_F(OutOfMemory, ObjectFileCompileExits) {
   const std::string path = (dir_ / "oom.o").string();
   codegen::ObjectOptions options;
   failEachSample(
@@ -169,7 +175,39 @@ TEST_F(LlvmOutOfMemory, ObjectFileCompileExits) {
             module_, options, codegen::FileKind::Object, path, error))
             << error;
       },
-      40);
+      40, ::testing::ExitedWithCode(4));
+}
+
+// The whole of `mbc run` under the interpreter: reading the program, the
+// front end, the runtime and the run. Reading through a stream once took a
+// failed allocation for the end of the file, and the program, cut short,
+// got syntax errors.
+TEST_F(OutOfMemory, InterpreterRunSaysOutOfMemory) {
+  driver::Options o;
+  o.command = "run";
+  o.files = {(dir_ / "oom.nc").string()};
+  o.engine = "interp";
+  o.run.toolpathPath = (dir_ / "toolpath.jsonl").string();
+  o.run.dprntPath = (dir_ / "dprnt.txt").string();
+  o.run.varsOutPath = (dir_ / "vars.json").string();
+  failEachSample(
+      [&] {
+        try {
+          if (const int status = driver::runCommand(o); status != 0) {
+            std::exit(status);
+          }
+        } catch (const std::bad_alloc&) {
+          // What main does with it.
+          std::fputs("mbc: error: out of memory\n", stderr);
+          std::exit(4);
+        }
+      },
+      1000,
+      // 2: the runtime could not be created (a usage error's status).
+      [](int status) {
+        return WIFEXITED(status) &&
+               (WEXITSTATUS(status) == 4 || WEXITSTATUS(status) == 2);
+      });
 }
 
 } // namespace
