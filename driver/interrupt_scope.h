@@ -3,15 +3,21 @@
 // with whole records, are flushed, and the state file is saved as after an
 // alarm; a batch starts no more rows. A second signal ends the process at
 // once, as it would have without mbc's handler.
+//
+// Memory running out is handled the same way, with alarm MBC0005: a
+// std::bad_alloc cannot be thrown through compiled code (it has no unwind
+// tables; the process would abort), so an allocation that fails frees a
+// reserve for the block going on and stops the runs. If memory runs out
+// again, the outputs are flushed and mbc exits with status 4.
 #pragma once
 
 #include <mbc/runtime.h>
 
 namespace mbc::driver {
 
-/// The handlers, installed for the scope's lifetime; the destructor
-/// restores the previous ones. The contexts of the runs it stops must
-/// outlive it.
+/// The handlers (signals and the new-handler), installed for the scope's
+/// lifetime; the destructor restores the previous ones. The contexts of the
+/// runs it stops must outlive it.
 class InterruptScope {
 public:
   InterruptScope();

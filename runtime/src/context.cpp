@@ -104,6 +104,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.line = 0;
   ctx.block.blocks = 0;
   ctx.interrupted = false;
+  ctx.outOfMemory = false;
   setBlockLimit(ctx, ctx.maxBlocks);
   ctx.output = OutputBudget{0, ctx.output.limit};
   ctx.moves = 0;
@@ -255,6 +256,11 @@ void mbrt_interrupt(mbrt_ctx* ctx) {
   setBlockLimit(*ctx, 0);
 }
 
+void mbrt_out_of_memory(mbrt_ctx* ctx) {
+  ctx->outOfMemory = true;
+  setBlockLimit(*ctx, 0);
+}
+
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
   ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
   setBlockLimit(*ctx, ctx->maxBlocks);
@@ -299,6 +305,10 @@ mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
 }
 
 mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
+  if (ctx->outOfMemory) {
+    return raise(*ctx, AlarmId::OutOfMemory,
+                 "memory ran out; the run was stopped before this block");
+  }
   if (ctx->interrupted) {
     return raise(*ctx, AlarmId::Interrupted,
                  "the run was stopped before this block");

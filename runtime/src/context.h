@@ -220,9 +220,11 @@ struct mbrt_ctx {
 
   // The run: the block being executed and the count of blocks.
   // A signal handler or another thread lowers block.max_blocks to stop the
-  // run (mbrt_interrupt), so it is read and written atomically.
+  // run (mbrt_interrupt, mbrt_out_of_memory), so it is read and written
+  // atomically.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
   std::atomic<bool> interrupted{false};
+  std::atomic<bool> outOfMemory{false};
   std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
   mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n

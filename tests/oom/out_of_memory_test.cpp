@@ -19,9 +19,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <new>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace {
 
@@ -111,12 +113,12 @@ ir::Module loadProgram(const std::filesystem::path& dir) {
 }
 
 // Counts the allocations of `work` (the second time: the first also makes
-// LLVM's one-time state), then, each in a child process, fails one of
-// `samples` of them spread over the whole of it (every one when there are
-// fewer): every child must end with the message and a status `ended`
-// accepts.
-template <class Work, class Ended>
-void failEachSample(Work work, int samples, Ended ended) {
+// LLVM's one-time state), then, each in a child process that runs `child`
+// (`work` and what follows), fails one of `samples` of them spread over the
+// whole of it (every one when there are fewer): every child must end with
+// the message and a status `ended` accepts.
+template <class Work, class Child, class Ended>
+void failEachSample(Work work, Child child, int samples, Ended ended) {
   work();
   gAllocations = 0;
   work();
@@ -127,10 +129,10 @@ void failEachSample(Work work, int samples, Ended ended) {
     EXPECT_EXIT(
         {
           gAllocationsLeft = failing;
-          work();
+          child();
           std::exit(0);
         },
-        ended, "mbc: error: .*out of memory")
+        ended, "(out of memory|OUT OF MEMORY|outputs are complete)")
         << "failing allocation " << failing << " of " << total;
   }
 }
@@ -155,27 +157,106 @@ TEST_F(OutOfMemory, JitCompileExits) {
   for (int level : {0, 2}) {
     codegen::JitOptions options;
     options.optLevel = level;
-    failEachSample(
-        [&] {
-          std::string error;
-          auto jit = codegen::Jit::compile(module_, options, error);
-          ASSERT_NE(jit, nullptr) << error;
-        },
-        40, ::testing::ExitedWithCode(4));
+    const auto compile = [&] {
+      std::string error;
+      auto jit = codegen::Jit::compile(module_, options, error);
+      ASSERT_NE(jit, nullptr) << error;
+    };
+    failEachSample(compile, compile, 40, ::testing::ExitedWithCode(4));
   }
 }
 
 TEST_F(OutOfMemory, ObjectFileCompileExits) {
   const std::string path = (dir_ / "oom.o").string();
   codegen::ObjectOptions options;
-  failEachSample(
-      [&] {
-        std::string error;
-        ASSERT_TRUE(codegen::writeCompiled(
-            module_, options, codegen::FileKind::Object, path, error))
-            << error;
-      },
-      40, ::testing::ExitedWithCode(4));
+  const auto compile = [&] {
+    std::string error;
+    ASSERT_TRUE(codegen::writeCompiled(module_, options,
+                                       codegen::FileKind::Object, path, error))
+        << error;
+  };
+  failEachSample(compile, compile, 40, ::testing::ExitedWithCode(4));
+}
+
+// The whole of `mbc run` under the interpreter: reading the program, the
+// front end, the runtime and the run. Reading through a stream once took a
+// failed allocation for the end of the file, and the program, cut short,
+// got syntax errors.
+// True when `path` is empty or ends with a whole line.
+bool endsWithWholeLine(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (size <= 0) {
+    return true;
+  }
+  in.seekg(size - 1);
+  return in.get() == '\n';
+}
+
+std::string contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Runs as `mbc run` does (a std::bad_alloc that reaches main ends it with
+// status 4 and the message). A run that ended with an alarm must have
+// flushed whole records; one that ended well (a failure that the
+// reserve absorbed outside a run) must have written what `reference` holds
+// (toolpath, DPRNT, variables). The child's status is what mbc's would be.
+void runAsMbc(const driver::Options& o,
+              const std::vector<std::string>& reference) {
+  try {
+    const int status = driver::runCommand(o);
+    if (status == 0) {
+      if (reference != std::vector<std::string>{contents(o.run.toolpathPath),
+                                                contents(o.run.dprntPath),
+                                                contents(o.run.varsOutPath)}) {
+        std::fputs("the outputs differ from a run with memory enough\n",
+                   stderr);
+        std::exit(98);
+      }
+      std::fputs("the outputs are complete\n", stderr);
+      std::exit(0);
+    }
+    {
+      if (!endsWithWholeLine(o.run.toolpathPath) ||
+          !endsWithWholeLine(o.run.dprntPath)) {
+        std::fputs("an output ends in the middle of a record\n", stderr);
+        std::exit(99);
+      }
+      std::exit(status);
+    }
+  } catch (const std::bad_alloc&) {
+    std::fputs("mbc: error: out of memory\n", stderr);
+    std::exit(4);
+  }
+}
+
+std::vector<std::string> outputsOf(const driver::Options& o) {
+  EXPECT_EQ(driver::runCommand(o), 0);
+  return {contents(o.run.toolpathPath), contents(o.run.dprntPath),
+          contents(o.run.varsOutPath)};
+}
+
+driver::Options runOptions(const std::filesystem::path& dir,
+                           const std::string& program,
+                           const std::string& engine) {
+  driver::Options o;
+  o.command = "run";
+  o.files = {(dir / program).string()};
+  o.engine = engine;
+  o.run.toolpathPath = (dir / "toolpath.jsonl").string();
+  o.run.dprntPath = (dir / "dprnt.txt").string();
+  o.run.varsOutPath = (dir / "vars.json").string();
+  return o;
+}
+
+// 0: the outputs are complete; 2: the runtime could not be created (a
+// usage error's status); 3: the run stopped with alarm MBC0005; 4: out of
+// memory before or after the run.
+bool endedForLackOfMemory(int status) {
+  return WIFEXITED(status) && WEXITSTATUS(status) != 1 &&
+         WEXITSTATUS(status) <= 4;
 }
 
 // The whole of `mbc run` under the interpreter: reading the program, the
@@ -183,31 +264,31 @@ TEST_F(OutOfMemory, ObjectFileCompileExits) {
 // failed allocation for the end of the file, and the program, cut short,
 // got syntax errors.
 TEST_F(OutOfMemory, InterpreterRunSaysOutOfMemory) {
-  driver::Options o;
-  o.command = "run";
-  o.files = {(dir_ / "oom.nc").string()};
-  o.engine = "interp";
-  o.run.toolpathPath = (dir_ / "toolpath.jsonl").string();
-  o.run.dprntPath = (dir_ / "dprnt.txt").string();
-  o.run.varsOutPath = (dir_ / "vars.json").string();
-  failEachSample(
-      [&] {
-        try {
-          if (const int status = driver::runCommand(o); status != 0) {
-            std::exit(status);
-          }
-        } catch (const std::bad_alloc&) {
-          // What main does with it.
-          std::fputs("mbc: error: out of memory\n", stderr);
-          std::exit(4);
-        }
-      },
-      1000,
-      // 2: the runtime could not be created (a usage error's status).
-      [](int status) {
-        return WIFEXITED(status) &&
-               (WEXITSTATUS(status) == 4 || WEXITSTATUS(status) == 2);
-      });
+  const driver::Options o = runOptions(dir_, "oom.nc", "interp");
+  const std::vector<std::string> reference = outputsOf(o);
+  failEachSample([&] { driver::runCommand(o); },
+                 [&] { runAsMbc(o, reference); }, 1000, endedForLackOfMemory);
+}
+
+// A run of compiled code: a std::bad_alloc cannot unwind through it (the
+// process aborted), so the run stops before its next block with MBC0005
+// and its outputs end with whole records.
+TEST_F(OutOfMemory, CompiledRunStopsWithAnAlarm) {
+  std::ofstream(dir_ / "long.nc") << R"(%
+O1000
+#1 = 0
+WHILE [#1 LT 400] DO1
+G01 X[#1 / 10] Y[SIN[#1]] F500
+DPRNT[I#1[40]*X#5001[43]]
+#1 = #1 + 1
+END1
+M30
+%
+)";
+  const driver::Options o = runOptions(dir_, "long.nc", "jit");
+  const std::vector<std::string> reference = outputsOf(o);
+  failEachSample([&] { driver::runCommand(o); },
+                 [&] { runAsMbc(o, reference); }, 80, endedForLackOfMemory);
 }
 
 } // namespace

@@ -49,6 +49,18 @@ TEST(RuntimeEmbedding, InterruptStopsTheNextBlockOfThisRunOnly) {
   EXPECT_EQ(m.block("G00 X2.", 2), 0);
 }
 
+TEST(RuntimeEmbedding, OutOfMemoryStopsTheNextBlockOfThisRunOnly) {
+  Machine m;
+  ASSERT_EQ(m.block("G00 X1.", 1), 0);
+  mbrt_out_of_memory(m.ctx());
+  EXPECT_EQ(m.block("G00 X2.", 2), status(AlarmId::OutOfMemory));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm MBC0005: OUT OF MEMORY: memory ran "
+                        "out; the run was stopped before this block\n");
+  EXPECT_EQ(m.motions().size(), 1U);
+  mbrt_start(m.ctx(), "O1000");
+  EXPECT_EQ(m.block("G00 X2.", 2), 0);
+}
+
 TEST(RuntimeEmbedding, ProgramNamesOutliveTheirCalls) {
   Machine m;
   mbrt_buffer_motions(m.ctx(), 1);

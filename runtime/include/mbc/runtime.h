@@ -111,6 +111,11 @@ void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes);
  * The one call that may come from a signal handler or from another thread
  * while the run goes on; the next run (mbrt_start) is not interrupted. */
 void mbrt_interrupt(mbrt_ctx* ctx);
+/* Stops the run before its next block with alarm MBC0005 (OUT OF MEMORY):
+ * for a new-handler that found the memory exhausted and freed a reserve, so
+ * that the block going on can end and the run stop in order. May come from
+ * another thread, as mbrt_interrupt. */
+void mbrt_out_of_memory(mbrt_ctx* ctx);
 
 /* ---- Profile settings engines need --------------------------------------
  */
