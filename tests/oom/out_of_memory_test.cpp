@@ -10,6 +10,7 @@
 #include "codegen/object_file.h"
 #include "driver/ir_pipeline.h"
 #include "driver/run_command.h"
+#include <mbc/read_file.h>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <new>
 #include <string>
 #include <sys/wait.h>
@@ -182,20 +182,17 @@ TEST_F(OutOfMemory, ObjectFileCompileExits) {
 // front end, the runtime and the run. Reading through a stream once took a
 // failed allocation for the end of the file, and the program, cut short,
 // got syntax errors.
-// True when `path` is empty or ends with a whole line.
-bool endsWithWholeLine(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  const std::streamoff size = in.tellg();
-  if (size <= 0) {
-    return true;
-  }
-  in.seekg(size - 1);
-  return in.get() == '\n';
+// The file's bytes; empty when there is none.
+std::string contents(const std::string& path) {
+  std::string text;
+  readFile(path, text);
+  return text;
 }
 
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
+// True when `path` is empty or ends with a whole line.
+bool endsWithWholeLine(const std::string& path) {
+  const std::string text = contents(path);
+  return text.empty() || text.back() == '\n';
 }
 
 // Runs as `mbc run` does (a std::bad_alloc that reaches main ends it with
