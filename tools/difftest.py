@@ -5,14 +5,16 @@ Generates valid programs (bounded loops, IF/GOTO with computed and
 loop-leaving jumps, M99 P in the main program, G65/M98 nests, G66 and
 G66.1 modal calls, calls by G, M and T codes, indirection across variable
 ranges, vacant values, every function and operator with edge arguments,
-DPRNT, BPRNT, motion with work and tool offsets, optional block skip,
-system variables read and written), each with the run options and machine
-profile it needs (--block-skip, --arg, --set, --machine), runs each under
-every engine and optimisation level, and compares everything a run writes
-with the interpreter's: exit status, stderr (alarms, the --trace record),
-toolpath, DPRNT and variables. A program that differs is reduced line by
-line to a small one that still differs the same way and written to --out
-(with its machine profile beside it, and its run options printed).
+DPRNT, BPRNT, motion with work and tool offsets, planes, canned cycles,
+dwell, reference returns, G52/G92 shifts, scaling, rotation, mirror, G10
+offsets, feed modes and units, bounded backward GOTO loops, optional block
+skip, system variables read and written), each with the run options and
+machine profile it needs (--block-skip, --arg, --set, --machine), runs each
+under every engine and optimisation level, and compares everything a run
+writes with the interpreter's: exit status, stderr (alarms, the --trace
+record), toolpath, DPRNT and variables. A program that differs is reduced
+line by line to a small one that still differs the same way and written to
+--out (with its machine profile beside it, and its run options printed).
 
     tools/difftest.py --mbc build/mbc [--engines build/tests/difftest_engines]
                       -n 1000 [--seed 1] [--jobs 2]
@@ -58,13 +60,20 @@ BRACKET_LIMIT = 5  # PS0118: brackets nest at most 5 deep
 # simulated clock, the G66 state, offsets, output signals, the parts count.
 SYSTEM_READS = ("#4114", "#4001", "#4003", "#4109", "#4012", "#5001",
                 "#5002", "#5003", "#5041", "#3001", "#5043", "#5023",
-                "#5221", "#2001", "#1132", "#1101", "#3901")
+                "#5221", "#2001", "#1132", "#1101", "#3901", "#4002",
+                "#4005", "#4006", "#4009", "#4010", "#4016", "#5021",
+                "#5083", "#3002")
 # Calls by codes (machine profile parameter and its value, the code, the
 # program called): a G code calling a macro, one whose call is modal
 # (negative; G67 cancels it), an M code calling a macro, an M code calling
 # a subprogram (no arguments). 6001 bit 5 makes T call O9000.
 CODE_CALLS = (("6050", 100, "G100", 9010), ("6051", -101, "G101", 9011),
               ("6080", 200, "M200", 9020), ("6071", 300, "M300", 9001))
+CYCLES = ("G73", "G74", "G76", "G81", "G82", "G83", "G84", "G85", "G86",
+          "G87", "G88", "G89")
+# The counter of backward GOTO loops, which only the main program and G65
+# macros have (an M98 subprogram would share its caller's).
+BACK_COUNTER = 33
 
 
 class Generator:
@@ -81,6 +90,7 @@ class Generator:
                            if self.chance(0.3) else [])
         self.t_call = self.chance(0.1)
         self.skip = self.chance(0.3)
+        self.back_labels = 0
 
     def chance(self, p):
         return self.rng.random() < p
@@ -230,6 +240,94 @@ class Generator:
             prefix = f"N{self.rng.randint(1000, 1999)} {prefix}"
         return f"{self.skip_mark()}{prefix}{code} {' '.join(words)}"
 
+    def word(self, letter):
+        """An NC word: a literal (one without a point is in least
+        increments) or a computed value."""
+        if self.chance(0.5):
+            return f"{letter}{self.number()}"
+        return f"{letter}[{self.expression(1, 1)}]"
+
+    def length(self, low, high):
+        return f"{round(self.rng.uniform(low, high), 3)}"
+
+    def nc_feature(self):
+        """The lines of an NC function beyond plain moves: a plane with an
+        arc in it, a canned cycle, dwell, a reference return, a shift of
+        the coordinate system, a transform or its cancel, G10, a feed
+        mode, the unit."""
+        roll = self.rng.random()
+        if roll < 0.12:
+            plane = self.pick(("G17", "G18", "G19"))
+            if self.chance(0.4):
+                return [plane]
+            first, second = {"G17": "XY", "G18": "ZX", "G19": "YZ"}[plane]
+            arc = self.pick(("G02", "G03"))
+            return [f"{plane} {arc} {self.word(first)} {self.word(second)} "
+                    f"R[{self.expression(1, 1)}]"]
+        if roll < 0.3:
+            return self.canned_cycle()
+        if roll < 0.35:
+            return [self.pick((f"G04 P{self.rng.randint(0, 2000)}",
+                               f"G04 {self.word('X')}"))]
+        if roll < 0.43:
+            return [self.pick(("G91 G28 Z0",
+                               f"G28 {self.word('X')} {self.word('Y')}",
+                               f"G30 P{self.rng.randint(2, 4)} "
+                               f"Z{self.number()}",
+                               f"G29 {self.word('X')}",
+                               f"G53 {self.word('Z')}"))]
+        if roll < 0.5:
+            return [self.pick((f"G52 {self.word('X')} {self.word('Y')}",
+                               "G52 X0 Y0"))]
+        if roll < 0.55:
+            return [self.pick((f"G92 {self.word('X')} {self.word('Z')}",
+                               "G92.1 X0 Y0 Z0"))]
+        if roll < 0.63:
+            return [self.pick((f"G51 {self.word('X')} Y0 "
+                               f"P{self.length(0.5, 2)}",
+                               f"G51 P{self.rng.randint(50000, 200000)}",
+                               "G50"))]
+        if roll < 0.73:
+            return [self.pick((f"G68 {self.word('X')} Y0 {self.word('R')}",
+                               f"G68 R{self.length(-90, 90)}", "G69"))]
+        if roll < 0.79:
+            return [self.pick((f"G51.1 {self.word('X')}",
+                               f"G51.1 Y{self.length(-5, 5)}", "G50.1 X0",
+                               "G50.1"))]
+        if roll < 0.88:
+            return [self.pick((
+                f"G10 L2 P{self.rng.randint(0, 6)} {self.word('X')}",
+                f"G10 L20 P{self.rng.randint(1, 3)} {self.word('Z')}",
+                f"G10 L{self.rng.randint(10, 13)} P{self.rng.randint(1, 3)} "
+                f"{self.word('R')}"))]
+        if roll < 0.97:
+            return [self.pick((f"G93 G01 {self.word('X')} "
+                               f"F{self.length(1, 50)}",
+                               "G94", f"G95 S{self.rng.randint(100, 3000)}",
+                               f"S{self.rng.randint(0, 3000)} M03", "M05"))]
+        return [self.pick(("G20", "G21"))]
+
+    def canned_cycle(self):
+        """A canned cycle block, the holes after it, mostly its G80."""
+        code = self.pick(CYCLES)
+        words = [self.pick(("", "G98 ", "G99 ")) + code, self.word("X"),
+                 self.word("Y"), f"Z-{self.length(0.5, 10)}"]
+        if self.chance(0.8):
+            words.append(f"R{self.length(0, 5)}")
+        if code in ("G73", "G83", "G76", "G87") and self.chance(0.9):
+            words.append(f"Q{self.length(0.5, 4)}")
+        if code in ("G82", "G88", "G89"):
+            words.append(f"P{self.rng.randint(0, 1000)}")
+        if self.chance(0.2):
+            words.append(f"K{self.rng.randint(0, 3)}")
+        words.append(f"F{self.rng.randint(50, 500)}")
+        lines = [" ".join(words)]
+        for _ in range(self.rng.randint(0, 2)):
+            lines.append(f"{self.word('X')} {self.word('Y')}")
+        if self.chance(0.6):
+            lines.append("G80")
+        return lines
+
     def skip_mark(self):
         """Optional block skip, / or /2, on some NC blocks."""
         if self.chance(0.1):
@@ -291,9 +389,10 @@ class Generator:
         repeat = f" L{self.rng.randint(1, 3)}" if self.chance(0.4) else ""
         return f"M98 P{self.pick(self.subs)}{repeat}"
 
-    def body(self, program, level, loops, labels, budget):
+    def body(self, program, level, loops, labels, budget, back=True):
         """Statements of one nesting level; `loops` open WHILE counters;
-        `labels` the N numbers placed at the top level of the program."""
+        `labels` the N numbers placed at the top level of the program;
+        `back`: a backward GOTO loop may start here."""
         lines = []
         counters = SUB_COUNTERS if level == "sub" else MACRO_COUNTERS
         while budget > 0:
@@ -304,8 +403,10 @@ class Generator:
                 lines.append(self.code_call())
             elif roll < 0.3:
                 lines.append(self.assignment())
-            elif roll < 0.42:
+            elif roll < 0.38:
                 lines.append(self.motion())
+            elif roll < 0.42:
+                lines += self.nc_feature()
             elif roll < 0.5:
                 lines.append(self.dprnt())
             elif roll < 0.58 and len(loops) < 3:
@@ -348,9 +449,24 @@ class Generator:
             elif roll < 0.95 and self.skip:
                 # A macro statement under a numbered switch: /1 or /2.
                 lines.append(f"/{self.rng.randint(1, 2)} {self.assignment()}")
+            elif (roll < 0.97 and back and not loops
+                  and level in ("main", "macro")):
+                lines += self.backward_loop(program, level, labels)
             else:
                 lines.append(self.assignment())
         return lines
+
+    def backward_loop(self, program, level, labels):
+        """A loop made by a GOTO back to a label, bounded by its counter;
+        its forward GOTOs leave it."""
+        self.back_labels += 1
+        label = 5000 + self.back_labels
+        trips = self.rng.randint(1, 3)
+        return ([f"#{BACK_COUNTER} = 0", f"N{label} {self.assignment()}"]
+                + self.body(program, level, [], labels,
+                            self.rng.randint(1, 4), back=False)
+                + [f"#{BACK_COUNTER} = #{BACK_COUNTER} + 1",
+                   f"IF [#{BACK_COUNTER} LT {trips}] GOTO {label}"])
 
     def program(self, number, level):
         """A program whose top level is cut into labelled sections, so that
