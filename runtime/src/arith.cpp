@@ -17,12 +17,6 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
-/// -0.0 prints as "-0" in some tools and makes ATAN2 pick the wrong branch;
-/// no macro value is ever -0.0.
-double positiveZero(double x) {
-  return x == 0.0 ? 0.0 : x;
-}
-
 /// Every result passes through here: overflow to infinity (or a NaN that
 /// would be mistaken for vacant) is PS0111.
 AlarmId finish(double result, Num* out) {

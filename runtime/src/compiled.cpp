@@ -70,8 +70,10 @@ mbrt_status mbrt_round_address(mbrt_ctx* ctx, int letter, double x,
                                double* out) {
   // The same rounding as the address's own (a decimal tie such as 1.0005
   // rounds up although 1.0005 / 0.001 is 1000.4999...), in whole
-  // increments per unit so that the result is the nearest double.
+  // increments per unit so that the result is the nearest double. A value
+  // that rounds to zero is +0 like every macro value: -0.0001 gave -0, which
+  // the interpreter's subtraction made +0 and the JIT's kept.
   const double perUnit = addressCountsPerUnit(*ctx, static_cast<char>(letter));
-  *out = roundToCounts(numeric(x), perUnit) / perUnit;
+  *out = positiveZero(roundToCounts(numeric(x), perUnit) / perUnit);
   return 0;
 }

@@ -3,6 +3,8 @@
 // and the storage compiled code addresses directly.
 #include <mbc/arith.h>
 
+#include <cmath>
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -133,6 +135,12 @@ TEST(RuntimePrograms, CompiledArithmeticRaisesAlarms) {
   EXPECT_EQ(out, 0.5);
   EXPECT_EQ(mbrt_round_address(n.ctx(), 'X', 1.23456, &out), 0);
   EXPECT_DOUBLE_EQ(out, 1.235);
+  // Rounded to zero it is +0, as every macro value (a -0 came out as Y-0
+  // under the JIT, whose subtraction keeps the sign that the interpreter's
+  // dropped).
+  EXPECT_EQ(mbrt_round_address(n.ctx(), 'Y', -0.000001, &out), 0);
+  EXPECT_EQ(out, 0.0);
+  EXPECT_FALSE(std::signbit(out));
 }
 
 } // namespace

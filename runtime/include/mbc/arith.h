@@ -45,6 +45,13 @@ bool evalCompare(RelOp op, Num a, Num b);
 AlarmId evalBuiltin(Builtin f, const Num* args, const MathParams& params,
                     Num* out);
 
+/// -0.0 prints as "-0" in some tools and makes ATAN2 pick the wrong branch;
+/// no macro value is ever -0.0, so compiled code adds and subtracts without
+/// checking.
+inline double positiveZero(double x) {
+  return x == 0.0 ? 0.0 : x;
+}
+
 /// Rounds half away from zero to an integer: variable numbers, AND/OR/XOR
 /// operands, integer addresses and ROUND in macro statements (spec §2.2).
 /// The same result as std::round, inline: that is a libm call, and NC
