@@ -2,19 +2,20 @@
 """Differential testing of mbc's engines on random Macro B programs.
 
 Generates valid programs (bounded loops, IF/GOTO with computed and
-loop-leaving jumps, M99 P in the main program, G65/M98 nests, G66 and
-G66.1 modal calls, calls by G, M and T codes, indirection across variable
-ranges, vacant values, every function and operator with edge arguments,
-DPRNT, BPRNT, motion with work and tool offsets, planes, canned cycles,
-dwell, reference returns, G52/G92 shifts, scaling, rotation, mirror, G10
-offsets, feed modes and units, bounded backward GOTO loops, optional block
-skip, system variables read and written), each with the run options and
-machine profile it needs (--block-skip, --arg, --set, --machine), runs each
-under every engine and optimisation level, and compares everything a run
-writes with the interpreter's: exit status, stderr (alarms, the --trace
-record), toolpath, DPRNT and variables. A program that differs is reduced
-line by line to a small one that still differs the same way and written to
---out (with its machine profile beside it, and its run options printed).
+loop-leaving jumps, M99 P in the main program, G65/M98 nests with argument
+specification I and II, G66 and G66.1 modal calls, calls by G, M and T
+codes, indirection across variable ranges, vacant values, every function
+and operator with edge arguments, DPRNT, BPRNT, motion with work and tool
+offsets, planes, canned cycles, dwell, reference returns, skip moves,
+G52/G92 shifts, scaling, rotation, mirror, G10 offsets, feed modes and
+units, #3006 messages, bounded backward GOTO loops, optional block skip,
+system variables read and written), each with the run options and machine
+profile it needs (--block-skip, --arg, --set, --machine), runs each under
+every engine and optimisation level, and compares everything a run writes
+with the interpreter's: exit status, stderr (alarms, the --trace record),
+toolpath, DPRNT and variables. A program that differs is reduced line by
+line to a small one that still differs the same way and written to --out
+(with its machine profile beside it, and its run options printed).
 
     tools/difftest.py --mbc build/mbc [--engines build/tests/difftest_engines]
                       -n 1000 [--seed 1] [--jobs 2]
@@ -62,7 +63,7 @@ SYSTEM_READS = ("#4114", "#4001", "#4003", "#4109", "#4012", "#5001",
                 "#5002", "#5003", "#5041", "#3001", "#5043", "#5023",
                 "#5221", "#2001", "#1132", "#1101", "#3901", "#4002",
                 "#4005", "#4006", "#4009", "#4010", "#4016", "#5021",
-                "#5083", "#3002")
+                "#5083", "#3002", "#5061")
 # Calls by codes (machine profile parameter and its value, the code, the
 # program called): a G code calling a macro, one whose call is modal
 # (negative; G67 cancels it), an M code calling a macro, an M code calling
@@ -254,16 +255,19 @@ class Generator:
         """The lines of an NC function beyond plain moves: a plane with an
         arc in it, a canned cycle, dwell, a reference return, a shift of
         the coordinate system, a transform or its cancel, G10, a feed
-        mode, the unit."""
+        mode, a skip move, a message, the unit."""
         roll = self.rng.random()
         if roll < 0.12:
             plane = self.pick(("G17", "G18", "G19"))
             if self.chance(0.4):
                 return [plane]
             first, second = {"G17": "XY", "G18": "ZX", "G19": "YZ"}[plane]
+            centre = {"G17": "IJ", "G18": "KI", "G19": "JK"}[plane]
             arc = self.pick(("G02", "G03"))
+            size = (f"R[{self.expression(1, 1)}]" if self.chance(0.5) else
+                    f"{self.word(centre[0])} {self.word(centre[1])}")
             return [f"{plane} {arc} {self.word(first)} {self.word(second)} "
-                    f"R[{self.expression(1, 1)}]"]
+                    f"{size}"]
         if roll < 0.3:
             return self.canned_cycle()
         if roll < 0.35:
@@ -300,11 +304,16 @@ class Generator:
                 f"G10 L20 P{self.rng.randint(1, 3)} {self.word('Z')}",
                 f"G10 L{self.rng.randint(10, 13)} P{self.rng.randint(1, 3)} "
                 f"{self.word('R')}"))]
-        if roll < 0.97:
+        if roll < 0.95:
             return [self.pick((f"G93 G01 {self.word('X')} "
                                f"F{self.length(1, 50)}",
                                "G94", f"G95 S{self.rng.randint(100, 3000)}",
                                f"S{self.rng.randint(0, 3000)} M03", "M05"))]
+        if roll < 0.97:  # no probe scene: the move completes
+            return [f"G31 {self.word('X')} {self.word('Y')} "
+                    f"F{self.rng.randint(50, 500)}"]
+        if roll < 0.98:
+            return [f"#3006 = {self.rng.randint(1, 9)} (CHECK)"]
         return [self.pick(("G20", "G21"))]
 
     def canned_cycle(self):
@@ -368,10 +377,26 @@ class Generator:
         for _ in range(self.rng.randint(1, 3)):
             text = self.pick(("A", "VAL", "X", "R*", "N1*"))
             items.append(f"{text}#{self.rng.randint(1, 33)}"
-                         f"[{self.rng.randint(1, 5)}{self.rng.randint(0, 3)}]")
+                         f"[{self.format_digits()}]")
         return f"DPRNT[{'*'.join(items)}]"
 
+    def format_digits(self):
+        """The [cd] of a DPRNT item: mostly small, sometimes up to 8 and
+        8 (digits dropped, decimals past the value's)."""
+        if self.chance(0.2):
+            return f"{self.rng.randint(0, 8)}{self.rng.randint(0, 8)}"
+        return f"{self.rng.randint(1, 5)}{self.rng.randint(0, 3)}"
+
     def arguments(self):
+        """Argument specification I (letters) or, sometimes, II (A, B, C
+        and sets of I, J, K: #4-#33)."""
+        if self.chance(0.15):
+            words = [f"{letter}{self.number()}" for letter in "ABC"
+                     if self.chance(0.3)]
+            for _ in range(self.rng.randint(1, 6)):
+                words += [f"{letter}[{self.expression(1, 1)}]" for letter in
+                          [c for c in "IJK" if self.chance(0.6)] or ["I"]]
+            return " ".join(words)
         return " ".join(
             f"{letter}[{self.expression(1, 1)}]" if self.chance(0.6)
             else f"{letter}{self.number()}"
