@@ -26,7 +26,7 @@ enum class ExprKind {
 struct Expr {
   ExprKind kind = ExprKind::Number;
   SourceRange range;
-  bool bracketed = false; // written inside its own [ ]
+  bool bracketed = false; // written inside its own [ ] or after a unary +
   double number = 0;      // Number value
   bool hasDecimal = false;
   int var = 0; // Var number

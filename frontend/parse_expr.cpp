@@ -191,6 +191,9 @@ ExprPtr Parser::parseUnary(int depth, bool allowSign) {
     d.fixIts.push_back({span, fmt::format("[{}]", sourceText(span))});
   }
   if (sign.kind == Tok::Plus) {
+    // A sign makes an expression of a reference: like [#1], +#1 reads
+    // vacant as 0 (spec §2.3b: only a plain reference copies vacancy).
+    operand->bracketed = true;
     return operand;
   }
   auto e = std::make_unique<Expr>();
