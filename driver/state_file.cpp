@@ -126,10 +126,12 @@ std::map<int, double> wantedState(mbrt_ctx* ctx, const json& root) {
     set(numberKey(key, "variables"), value, "variables." + key);
   }
   const auto sets = workOffsetSets();
+  // Lambdas take structured bindings through init-captures: clang before 16
+  // cannot capture a binding itself.
   for (const auto& [key, values] : section(root, "work_offsets").items()) {
     const auto found =
         std::find_if(sets.begin(), sets.end(),
-                     [&](const auto& s) { return s.first == key; });
+                     [&k = key](const auto& s) { return s.first == k; });
     if (found == sets.end() || !values.is_array()) {
       throw std::runtime_error(
           fmt::format("\"work_offsets.{}\" is no work offset array", key));
@@ -148,7 +150,7 @@ std::map<int, double> wantedState(mbrt_ctx* ctx, const json& root) {
     for (const auto& [name, value] : entry.items()) {
       const auto field =
           std::find_if(std::begin(kToolFields), std::end(kToolFields),
-                       [&](const ToolField& f) { return name == f.key; });
+                       [&n = name](const ToolField& f) { return n == f.key; });
       if (field == std::end(kToolFields)) {
         throw std::runtime_error(
             fmt::format("unknown key \"tool_offsets.{}.{}\"", key, name));
