@@ -26,7 +26,10 @@ protected:
 
   void TearDown() override { std::remove(path_.c_str()); }
 
-  std::string path_ = ::testing::TempDir() + "batch_table_test.csv";
+  // One file per test: ctest runs the tests of this fixture in parallel.
+  std::string path_ =
+      ::testing::TempDir() + "batch_table_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".csv";
   std::vector<BatchRow> rows_;
   std::string error_;
 };
