@@ -1,6 +1,7 @@
 // Programs and blocks: '%', O numbers and <NAME> headers, '/' block skip, N
 // sequence numbers, and the end-of-block resynchronisation after an error.
 #include "frontend/parser.h"
+#include <mbc/addresses.h>
 
 #include <cmath>
 
@@ -103,7 +104,7 @@ bool Parser::parseProgramHeader() {
       diags_.report(DiagKind::ExpectedProgramNumber, start.range);
       fail();
     }
-    if (tok_.number < 1 || tok_.number > 9999) {
+    if (tok_.number < 1 || tok_.number > kMaxProgramNumber) {
       diags_.report(DiagKind::ProgramNumberRange, tok_.range, tok_.text);
       fail();
     }

@@ -170,6 +170,17 @@ mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
 
 } // namespace
 
+mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number) {
+  if (ctx.profile.programNumberDigits == 4 &&
+      number > kMaxProgramNumber4Digits) {
+    return raise(ctx, AlarmId::IllegalProgramNumber,
+                 fmt::format("O{}: this machine has program numbers O1 to "
+                             "O{} (profile program_number_digits)",
+                             number, kMaxProgramNumber4Digits));
+  }
+  return 0;
+}
+
 } // namespace mbc::rt
 
 using namespace mbc;
@@ -177,6 +188,10 @@ using namespace mbc::rt;
 
 mbrt_status mbrt_call(mbrt_ctx* ctx, const char* program, int kind,
                       const mbrt_word* args, size_t count) {
+  if (const mbrt_status status =
+          checkProgramNumber(*ctx, parseProgramNumber(program))) {
+    return status;
+  }
   return (kind & kCallMacroBit) != 0
              ? enterMacro(*ctx, program, kind, args, count)
              : enterSub(*ctx, program, kind);

@@ -105,7 +105,10 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.blocks = 0;
   ctx.interrupted = false;
   ctx.outOfMemory = false;
-  setBlockLimit(ctx, ctx.maxBlocks);
+  // A main program the machine cannot have alarms at its first block.
+  ctx.illegalMainNumber = ctx.profile.programNumberDigits == 4 &&
+                          ctx.mainProgramNumber > kMaxProgramNumber4Digits;
+  setBlockLimit(ctx, ctx.illegalMainNumber ? 0 : ctx.maxBlocks);
   ctx.output = OutputBudget{0, ctx.output.limit};
   ctx.moves = 0;
   ctx.stats = RunStats{};
@@ -305,6 +308,9 @@ mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
 }
 
 mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
+  if (ctx->illegalMainNumber) {
+    return checkProgramNumber(*ctx, ctx->mainProgramNumber);
+  }
   if (ctx->outOfMemory) {
     return raise(*ctx, AlarmId::OutOfMemory,
                  "memory ran out; the run was stopped before this block");

@@ -225,6 +225,7 @@ struct mbrt_ctx {
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
   std::atomic<bool> interrupted{false};
   std::atomic<bool> outOfMemory{false};
+  bool illegalMainNumber = false; // PS0074 at the first block
   std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
   mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
@@ -300,6 +301,10 @@ mbrt_status raiseOutputLimit(mbrt_ctx& ctx);
 
 /// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
 int parseProgramNumber(const char* name);
+
+/// PS0074 for a program number the machine cannot have (more than four
+/// digits on a profile with program_number_digits 4).
+mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number);
 
 /// Rounds `value` (input units) half away from zero to counts of the least
 /// increment. A decimal tie such as 2.0005 lands a few ulps off .5 after the

@@ -421,17 +421,23 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
 }
 
-/// M98 P L: with no L and more than four digits, the high digits of P are
-/// the repeat count (spec §5.8).
+/// M98 P L. With 8-digit program numbers P is the program and L the repeat
+/// count; with 4 digits a P of more than four digits and no L carries the
+/// repeat count in its high digits (spec §5.8).
 mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   if (!block.hasP) {
     return raise(ctx, AlarmId::ProgramNotFound, "M98 without P");
   }
   double program = block.p;
   double repeat = block.hasL ? block.l : 1.0;
-  if (!block.hasL && program > 9999.0) {
-    repeat = std::floor(program / 10000.0);
-    program = std::fmod(program, 10000.0);
+  constexpr double kRepeatUnit = kMaxProgramNumber4Digits + 1.0;
+  if (ctx.profile.programNumberDigits == 4 && !block.hasL &&
+      program > kMaxProgramNumber4Digits) {
+    repeat = std::floor(program / kRepeatUnit);
+    program = std::fmod(program, kRepeatUnit);
+  }
+  if (const mbrt_status status = checkProgramNumber(ctx, program)) {
+    return status;
   }
   if (repeat < 1.0) {
     return 0; // L0: no call

@@ -265,6 +265,11 @@ Profile parseTopLevel(const json& root) {
       parseLimits(item, profile);
     } else if (key == "parts") {
       parseParts(item, profile);
+    } else if (key == "program_number_digits") {
+      if (item != 4 && item != 8) {
+        fail(key, "must be 4 or 8");
+      }
+      profile.programNumberDigits = item.get<int>();
     } else if (key == "block_skip") {
       profile.blockSkip = boolean(item, key);
     } else if (key == "probe") {

@@ -54,6 +54,9 @@ struct Profile {
   double partsCount = 0.0;
   double partsRequired = 0.0;
   bool blockSkip = false;
+  // 8: O1-O99999999, M98 P is the program number alone (8-digit program
+  // number option); 4: O1-O9999, M98 P may carry the repeat count.
+  int programNumberDigits = 8;
   ProbeScene probe; // what G31 touches
 
   // Bits read on every NC word or function call, kept out of the map.

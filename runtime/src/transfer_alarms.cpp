@@ -20,6 +20,9 @@ mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
 
 mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number) {
   double n = roundHalfAway(number);
+  if (const mbrt_status status = rt::checkProgramNumber(*ctx, n)) {
+    return status;
+  }
   std::string detail = n >= 0 && n < 1e9
                            ? fmt::format("O{:04d}", static_cast<long>(n))
                            : fmt::format("O{}", number);

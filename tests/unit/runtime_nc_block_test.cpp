@@ -290,9 +290,10 @@ TEST(RuntimeNcBlock, SubprogramCallFlow) {
   EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL);
   EXPECT_EQ(m.flow().program, 1234);
   EXPECT_EQ(m.flow().repeat, 3);
+  // 8-digit program numbers (the default): P is the program alone.
   ASSERT_EQ(m.block("M98 P50010"), 0);
-  EXPECT_EQ(m.flow().program, 10);
-  EXPECT_EQ(m.flow().repeat, 5);
+  EXPECT_EQ(m.flow().program, 50010);
+  EXPECT_EQ(m.flow().repeat, 1);
   ASSERT_EQ(m.block("M98 P2000"), 0);
   EXPECT_EQ(m.flow().program, 2000);
   EXPECT_EQ(m.flow().repeat, 1);
@@ -304,6 +305,22 @@ TEST(RuntimeNcBlock, SubprogramCallFlow) {
   EXPECT_EQ(m.block("M98", 6), status(AlarmId::ProgramNotFound));
   EXPECT_EQ(m.report(),
             "test.nc:6: alarm PS0076: PROGRAM NOT FOUND: M98 without P\n");
+}
+
+// With 4-digit program numbers the high digits of a longer P are the
+// repeat count when there is no L (spec §5.8); with L, PS0074.
+TEST(RuntimeNcBlock, FourDigitSubprogramCall) {
+  Machine m(R"({"program_number_digits": 4})");
+  ASSERT_EQ(m.block("M98 P50010"), 0);
+  EXPECT_EQ(m.flow().program, 10);
+  EXPECT_EQ(m.flow().repeat, 5);
+  ASSERT_EQ(m.block("M98 P10001000"), 0);
+  EXPECT_EQ(m.flow().program, 1000);
+  EXPECT_EQ(m.flow().repeat, 1000);
+  EXPECT_EQ(m.block("M98 P50010 L2", 7), status(AlarmId::IllegalProgramNumber));
+  EXPECT_EQ(m.report(), "test.nc:7: alarm PS0074: ILLEGAL PROGRAM NUMBER: "
+                        "O50010: this machine has program numbers O1 to O9999 "
+                        "(profile program_number_digits)\n");
 }
 
 TEST(RuntimeNcBlock, ReturnAndEndFlow) {

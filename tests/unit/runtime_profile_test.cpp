@@ -105,6 +105,7 @@ TEST(RuntimeProfile, ErrorsNameTheKey) {
       {R"({"limits": {"depth": 5}})", "\"limits.depth\""},
       {R"({"parts": {"made": 5}})", "\"parts.made\""},
       {R"({"block_skip": "yes"})", "\"block_skip\""},
+      {R"({"program_number_digits": 5})", "\"program_number_digits\""},
       {R"({"probe": []})", "\"probe\""},
       {R"({"probe": {"tip": 1}})", "\"probe.tip\""},
       {R"({"probe": {"radius": -1}})", "\"probe.radius\""},

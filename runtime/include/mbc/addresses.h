@@ -11,4 +11,9 @@ inline bool isWholeNumberAddress(char letter) {
   return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
+/// Program numbers O1-O99999999: the 8-digit program number option, common
+/// on 0i-F and 30i-B; a machine profile can keep the standard O1-O9999.
+inline constexpr int kMaxProgramNumber = 99'999'999;
+inline constexpr int kMaxProgramNumber4Digits = 9'999;
+
 } // namespace mbc

@@ -347,7 +347,8 @@ mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail);
  * "N<seq> not found in <program>". */
 mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
                                 const char* program);
-/* PS0076 "O<number>": a called program that does not exist. */
+/* PS0076 "O<number>": a called program that does not exist (PS0074 when
+ * the number has more digits than the machine's program numbers). */
 mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number);
 /* The pending alarm id, or 0. */
 int mbrt_alarm(const mbrt_ctx* ctx);
