@@ -357,17 +357,10 @@ Token Lexer::lexNumber(std::uint32_t begin) {
     break;
   }
   pos_ = last;
-  // "1.5E3" would read as 1.5 and an address E, "0.012." as 0.012 and a
-  // number 0: say what is wrong instead, and take it into the number so
-  // that one mistake makes one error.
-  if (pos_ + 1 < end_ && (text_[pos_] == 'E' || text_[pos_] == 'e') &&
-      (isDigit(text_[pos_ + 1]) ||
-       ((text_[pos_ + 1] == '-' || text_[pos_ + 1] == '+') && pos_ + 2 < end_ &&
-        isDigit(text_[pos_ + 2])))) {
-    pos_ += 2;
-    skipNumberRest();
-    diags_.report(DiagKind::ExponentNotation, {{file_, begin}, pos_ - begin});
-  } else if (dot && pos_ < end_ && text_[pos_] == '.') {
+  // "0.012." would read as 0.012 and a number 0: say what is wrong instead,
+  // and take it into the number so that one mistake makes one error. A
+  // letter after a number is the next word ("F800E41" is F800 and E41).
+  if (dot && pos_ < end_ && text_[pos_] == '.') {
     const std::uint32_t second = pos_;
     skipNumberRest();
     if (digits != ".") { // "..." is an ellipsis, not a number

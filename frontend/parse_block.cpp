@@ -22,6 +22,7 @@ Parser::Parser(const SourceManager& sources, std::uint32_t file,
 }
 
 void Parser::advance() {
+  previous_ = std::move(tok_);
   for (;;) {
     if (!ahead_.empty()) {
       tok_ = std::move(ahead_.front());
@@ -277,9 +278,38 @@ void Parser::resynchronise() {
   }
 }
 
+// "1.5E3" where an expression goes on: in an NC block a letter after a
+// number is the next word (F800E41), but inside a macro statement or brackets
+// it can only be a mistaken exponent.
+void Parser::rejectExponent() {
+  const SourceRange& number = previous_.range;
+  if (previous_.kind != Tok::Number || tok_.kind != Tok::Letter ||
+      tok_.text != "E" ||
+      number.begin.offset + number.length != tok_.range.begin.offset) {
+    return;
+  }
+  std::string_view text = sources_.text(file_);
+  std::uint32_t end = tok_.range.begin.offset + 1;
+  if (end < text.size() && (text[end] == '-' || text[end] == '+')) {
+    ++end;
+  }
+  if (end >= text.size() || text[end] < '0' || text[end] > '9') {
+    return;
+  }
+  while (end < text.size() && text[end] >= '0' && text[end] <= '9') {
+    ++end;
+  }
+  diags_.report(DiagKind::ExponentNotation,
+                {number.begin, end - number.begin.offset});
+  fail();
+}
+
 void Parser::expectEndOfBlock(const Stmt& s) {
   if (tok_.kind == Tok::EndOfBlock || tok_.kind == Tok::EndOfFile) {
     return;
+  }
+  if (s.kind != StmtKind::Nc && s.kind != StmtKind::MacroCall) {
+    rejectExponent();
   }
   bool macroNext =
       tok_.kind == Tok::Hash ||

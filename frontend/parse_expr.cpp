@@ -255,6 +255,7 @@ ExprPtr Parser::parseBracketed(int depth) {
   advance();
   ExprPtr inner = parseExpr(depth + 1);
   if (tok_.kind != Tok::RBracket) {
+    rejectExponent();
     auto& d = diags_.report(DiagKind::ExpectedCloseBracket, tok_.range);
     d.fixIts.push_back({{tok_.range.begin, 0}, "]"});
     diags_.note(DiagKind::BracketOpenedHere, open.range);
@@ -333,6 +334,7 @@ ExprPtr Parser::parseCall(int depth) {
     advance();
   }
   if (tok_.kind != Tok::RBracket) {
+    rejectExponent();
     auto& d = diags_.report(DiagKind::ExpectedCloseBracket, tok_.range);
     d.fixIts.push_back({{tok_.range.begin, 0}, "]"});
     diags_.note(DiagKind::BracketOpenedHere, open.range);

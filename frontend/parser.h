@@ -64,6 +64,7 @@ private:
   void parsePrint(Stmt& s);
   PrintItem parsePrintVariable(const std::string& statement);
   void expectEndOfBlock(const Stmt& s);
+  void rejectExponent();
   [[noreturn]] void misplacedHeader();
   void resynchronise();
   void keepBrokenBlock(Block& b, std::string_view rest);
@@ -107,6 +108,7 @@ private:
   Unit& unit_;
   Lexer lexer_;
   Token tok_;
+  Token previous_; // the token before tok_
   std::deque<Token> ahead_;
   std::vector<Token> blockComments_;
   int program_ = -1; // index in unit_.programs

@@ -49,6 +49,12 @@ TEST(Lexer, LongestKeywordWins) {
   EXPECT_EQ(kinds(lex("END1\nDO2\n")), "KEND N1 ; KDO N2 ; ");
 }
 
+// Macro B has no exponent notation: a number followed by E is the next
+// word, as CAM posts pack them.
+TEST(Lexer, LetterAfterNumberIsTheNextWord) {
+  EXPECT_EQ(kinds(lex("F800E41V0.2E41\n")), "LF N800 LE N41 LV N0.2 LE N41 ; ");
+}
+
 TEST(Lexer, SpacesInsideNumbers) {
   auto t = lex("X1 00.5\n");
   ASSERT_EQ(t.size(), 3u);
