@@ -51,6 +51,38 @@ constexpr std::array kWords = {
     fn("BCD", Builtin::Bcd),
 };
 
+// The two-letter abbreviations of macro words that FANUC controls read
+// (docs/language.md): two letters in a row have no other meaning, since an
+// address is always followed by its value. PO is POW before '[' and
+// POPEN otherwise.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 26>
+    kAbbreviations = {{
+        {"AB", "ABS"},   {"AC", "ACOS"},  {"AD", "ADP"},   {"AN", "AND"},
+        {"AS", "ASIN"},  {"AT", "ATAN"},  {"BC", "BCD"},   {"BI", "BIN"},
+        {"BP", "BPRNT"}, {"CO", "COS"},   {"DP", "DPRNT"}, {"EN", "END"},
+        {"EX", "EXP"},   {"FI", "FIX"},   {"FU", "FUP"},   {"GO", "GOTO"},
+        {"MO", "MOD"},   {"PC", "PCLOS"}, {"PO", "POPEN"}, {"RO", "ROUND"},
+        {"SI", "SIN"},   {"SQ", "SQRT"},  {"TA", "TAN"},   {"TH", "THEN"},
+        {"WH", "WHILE"}, {"XO", "XOR"},
+    }};
+
+// The word a two-letter abbreviation stands for, or nullptr.
+const WordRow* abbreviated(std::string_view letters, bool bracketFollows) {
+  for (const auto& [abbreviation, word] : kAbbreviations) {
+    if (letters != abbreviation) {
+      continue;
+    }
+    const std::string_view spelling =
+        word == "POPEN" && bracketFollows ? "POW" : word;
+    for (const WordRow& w : kWords) {
+      if (w.spelling == spelling) {
+        return &w;
+      }
+    }
+  }
+  return nullptr;
+}
+
 bool isLetter(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
 }
@@ -402,13 +434,23 @@ Token Lexer::lexWord(std::uint32_t begin) {
       best = &w;
     }
   }
+  std::uint32_t length =
+      best ? static_cast<std::uint32_t>(best->spelling.size()) : 0;
+  if (!best && run.size() >= 2) {
+    std::uint32_t next = pos_ + 2;
+    while (next < end_ && isBlank(text_[next])) {
+      ++next;
+    }
+    best = abbreviated(run.substr(0, 2), next < end_ && text_[next] == '[');
+    length = 2;
+  }
   if (!best) {
     ++pos_;
     Token t = make(Tok::Letter, begin);
     t.text = std::string(1, run[0]);
     return t;
   }
-  pos_ += static_cast<std::uint32_t>(best->spelling.size());
+  pos_ += length;
   Token t = make(best->isFunction ? Tok::Function : Tok::Keyword, begin);
   t.text = std::string(best->spelling);
   t.keyword = best->keyword;

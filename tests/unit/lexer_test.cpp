@@ -55,6 +55,16 @@ TEST(Lexer, LetterAfterNumberIsTheNextWord) {
   EXPECT_EQ(kinds(lex("F800E41V0.2E41\n")), "LF N800 LE N41 LV N0.2 LE N41 ; ");
 }
 
+// Two letters in a row are the control's abbreviation of a macro word; PO
+// is POW before its bracket and POPEN alone.
+TEST(Lexer, TwoLetterAbbreviations) {
+  EXPECT_EQ(kinds(lex("WH[#1LT5]DO1\nEN1\nGO10\n")),
+            "KWHILE ? # N1 KLT N5 ? KDO N1 ; KEND N1 ; KGOTO N10 ; ");
+  EXPECT_EQ(kinds(lex("#1=PO[2,3]\nPO\n")),
+            "# N1 ? FPOW ? N2 ? N3 ? ; KPOPEN ; ");
+  EXPECT_EQ(kinds(lex("XY\n")), "LX LY ; ");
+}
+
 TEST(Lexer, SpacesInsideNumbers) {
   auto t = lex("X1 00.5\n");
   ASSERT_EQ(t.size(), 3u);
