@@ -101,6 +101,9 @@ struct Stmt {
   int match = -1;               // While: index of its END; End: of its DO
   std::optional<int> gotoBlock; // IfGoto/Goto with a constant target
   std::vector<Word> words;      // Nc; MacroCall arguments
+  // MacroCall: the G codes written before G65 (G57 G65 P...), which the
+  // parser turns into an NC block of their own ahead of the call.
+  std::vector<Word> leadCodes;
   ExprPtr program;              // MacroCall P
   ExprPtr repeat;               // MacroCall L (may be null)
   std::vector<PrintItem> items; // Dprnt/Bprnt

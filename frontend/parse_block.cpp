@@ -186,10 +186,32 @@ void Parser::parseBlock() {
     return;
   }
   b.range.length = tok_.range.begin.offset - b.range.begin.offset;
+  splitLeadCodes(b, seqRange);
   if (b.stmt.kind != StmtKind::Empty || b.seq >= 0) {
     currentProgram(b.range.begin).blocks.push_back(std::move(b));
   }
   advance();
+}
+
+// G codes written before G65 (G57 G65 P..., as some shops begin every
+// call) take effect before the call: they become an NC block of their own
+// on the same line, which takes the N number as GOTO's target.
+void Parser::splitLeadCodes(Block& b, SourceRange seqRange) {
+  if (b.stmt.kind != StmtKind::MacroCall || b.stmt.leadCodes.empty()) {
+    return;
+  }
+  Block codes;
+  codes.range = b.range;
+  codes.line = b.line;
+  codes.seq = b.seq;
+  codes.skipLevel = b.skipLevel;
+  codes.stmt.kind = StmtKind::Nc;
+  codes.stmt.range = b.stmt.range;
+  codes.stmt.words = std::move(b.stmt.leadCodes);
+  b.stmt.leadCodes.clear();
+  addSequenceWord(codes, seqRange);
+  b.seq = -1;
+  currentProgram(b.range.begin).blocks.push_back(std::move(codes));
 }
 
 // #4114 holds the N of the last NC block (spec §6.4): the runtime gets it as

@@ -382,6 +382,8 @@ void Parser::finishMacroCall(Stmt& s) {
     if (w.letter == 'G' && !seenG65 && w.value->kind == ExprKind::Number &&
         w.value->number == 65) {
       seenG65 = true;
+    } else if (w.letter == 'G' && !seenG65) {
+      s.leadCodes.push_back(std::move(w));
     } else if (w.letter == 'P') {
       s.program = std::move(w.value);
     } else if (w.letter == 'L') {

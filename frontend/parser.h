@@ -70,6 +70,7 @@ private:
   void keepBrokenBlock(Block& b, std::string_view rest);
   void reportThenWithoutAssignment(const Token& then);
   void addSequenceWord(Block& b, SourceRange range);
+  void splitLeadCodes(Block& b, SourceRange seqRange);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;
   const Token* messageAfter(std::uint32_t offset) const;
