@@ -350,7 +350,8 @@ void Parser::parseWords(Stmt& s) {
     }
   }
   // Letters whose literal is no length in this block: G04's X (ms), a
-  // cycle's K (repeats), G51's I J K (scale factors); G68's R is an angle.
+  // cycle's K (repeats), G51's I J K (scale factors), the switches of
+  // G05.1 and G05.4 (Q1, R level); G68's R is an angle.
   bool dwell = false;
   WordUnits units;
   for (const Word& w : s.words) {
@@ -363,6 +364,8 @@ void Parser::parseWords(Stmt& s) {
       units.notLengths += 'K';
     } else if (g == 51) {
       units.notLengths += "IJK";
+    } else if (g == 5.1 || g == 5.4) {
+      units.notLengths += "QR";
     } else if (g == 68) {
       units.angles += 'R';
     }

@@ -3,8 +3,8 @@
 // a decimal point; other words print a literal without decimal point as an
 // integer and any other value with a decimal point and as many digits as
 // it takes to round-trip (never in exponent form). In G04, G51 and G68
-// blocks the coordinate letters mean time, factors and angles: they print
-// the second way.
+// blocks the coordinate letters mean time, factors and angles, and in
+// G05.1 a switch and the axes it names: they print the second way.
 #include "flat_gcode.h"
 
 #include <mbc/arith.h>
@@ -14,6 +14,8 @@
 
 #include <cmath>
 #include <cstdlib>
+
+#include "look_ahead.h"
 
 namespace mbc::rt {
 
@@ -54,12 +56,14 @@ std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {
                      unitsText(counts / ctx.scale(), ctx.decimals()));
 }
 
-/// G04, G51, G68: blocks whose coordinate letters are no coordinates.
+/// G04, G51, G68 and the look-ahead switches: blocks whose coordinate
+/// letters are no coordinates.
 bool hasOtherMeanings(const mbrt_word* words, size_t count) {
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter == 'G') {
       const double tenths = std::round(numeric(words[i].value) * 10.0);
-      if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0) {
+      if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0 ||
+          isLookAheadCode(static_cast<int>(tenths))) {
         return true;
       }
     }

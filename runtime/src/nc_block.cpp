@@ -13,6 +13,7 @@
 #include "frame_codes.h"
 #include "frames.h"
 #include "g_codes.h"
+#include "look_ahead.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -68,8 +69,11 @@ struct Block {
   double p = 0.0;
   double l = 0.0;
   std::optional<Counts> q;
-  std::optional<double> k;   // the repeat count of a canned cycle
-  int nonModal = 0;          // G04 (40), G28 (280), G29, G30, G31, G53 (530)
+  std::optional<double> qWritten; // Q as written: G05.1's switch
+  std::optional<double> k;        // the repeat count of a canned cycle
+  // G04 (40), G28 (280), G29, G30, G31, G53 (530) and the look-ahead
+  // switches G05, G05.1, G05.4, G08.
+  int nonModal = 0;
   bool selectsG541 = false;  // #4130 becomes its P
   double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
@@ -255,6 +259,10 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
   }
   if (isCycleCode(tenths)) {
     next.cycle = tenths / 10;
+    return 0;
+  }
+  if (isLookAheadCode(tenths)) {
+    block.nonModal = tenths;
     return 0;
   }
   if (isFrameCode(tenths)) {
@@ -497,6 +505,12 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
+  if (isLookAheadCode(block.nonModal)) {
+    return switchLookAhead(
+        ctx, block.nonModal,
+        {block.hasP ? std::optional<double>(block.p) : std::nullopt,
+         block.qWritten});
+  }
   if (block.nonModal == 40) {
     const double seconds = block.hasP ? block.p / 1000.0 : block.dwellSeconds;
     if (seconds < 0.0) {
@@ -550,6 +564,8 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
       const double value = roundHalfAway(numeric(words[i].value));
       (letter == 'P' ? block.hasP : block.hasL) = true;
       (letter == 'P' ? block.p : block.l) = value;
+    } else if (letter == 'Q') {
+      block.qWritten = numeric(words[i].value);
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
       const double tenths = gTenths(words[i]);
       if (!setsOneField(tenths) || block.oneFieldCount == kMaxOneFieldCodes) {
@@ -613,7 +629,8 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (const mbrt_status status = decideFlow(ctx, block, flow)) {
     return status;
   }
-  block.codes.moved = block.motion.axisMask != 0 && block.frames.code == 0;
+  block.codes.moved = block.motion.axisMask != 0 && block.frames.code == 0 &&
+                      !isLookAheadCode(block.nonModal);
   // A block whose calls alarm still moved: it goes to the flattened program.
   // Most runs neither call codes nor flatten: no calls to say so.
   const mbrt_status status = ctx.profile.codeCalls || !ctx.modalCalls.empty()

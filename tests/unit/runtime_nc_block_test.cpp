@@ -416,4 +416,31 @@ TEST(RuntimeNcBlock, ReferenceReturnAndMachineCoordinates) {
   EXPECT_EQ(m.read(5023), -50.0);
 }
 
+// G05, G05.1, G05.4 and G08 switch look-ahead and smoothing: nothing moves,
+// the words are checked, and smoothing says that the path is the programmed
+// one.
+TEST(RuntimeNcBlock, LookAheadSwitches) {
+  Machine m;
+  for (const char* block : {"G05.1 Q1 R5", "G05.1 Q0", "G08 P1", "G08 P0",
+                            "G05 P10000", "G05 P0", "G05.4 Q1", "G05.4 Q0"}) {
+    EXPECT_EQ(m.block(block), 0) << block;
+  }
+  ASSERT_EQ(m.block("G05.1 Q3 X0 Y0 Z0", 4), 0);
+  EXPECT_TRUE(m.motions().empty());
+  EXPECT_EQ(m.messages(),
+            "test.nc:4: message: G05.1 Q3 nano smoothing: the toolpath keeps "
+            "the programmed points (the control smooths between them within "
+            "its tolerance)\n");
+  EXPECT_EQ(m.block("G08 P2", 5), status(AlarmId::ImproperNcAddress));
+  EXPECT_EQ(m.report(), "test.nc:5: alarm PS0009: IMPROPER NC-ADDRESS: G8 "
+                        "P2: P takes 0 or 1\n");
+}
+
+TEST(RuntimeNcBlock, HighSpeedCycleMachiningIsNotModelled) {
+  Machine m;
+  EXPECT_EQ(m.block("G05 P3", 2), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
+                        "G05 P3 (high-speed cycle machining)\n");
+}
+
 } // namespace mbc::test
