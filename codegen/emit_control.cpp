@@ -302,6 +302,10 @@ void FunctionEmitter::emitTerminator(const ir::Inst& inst) {
     case ir::Op::Ret:
       emitRet();
       return;
+    case ir::Op::Raise:
+      raise(static_cast<int>(inst.attr),
+            inst.str != 0 ? m_.ir.strings[inst.str - 1].c_str() : nullptr);
+      return;
     default:
       raise(static_cast<int>(AlarmId::Unsupported),
             "compiled code: unreachable code reached");

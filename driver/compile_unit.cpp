@@ -12,10 +12,12 @@
 namespace mbc::driver {
 
 bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out, const std::string& machinePath) {
+              CompiledUnit& out, const std::string& machinePath,
+              ErrorMode errors) {
   DiagnosticEngine diags(out.sources);
   ParseOptions options;
   options.checkWarnings = checkWarnings;
+  options.stopAtErrorLimit = errors == ErrorMode::Refuse;
   for (const std::string& path : files) {
     std::string text;
     if (int error = readFile(path, text)) {
@@ -27,8 +29,16 @@ bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
     parseFile(out.sources, id, diags, options, out.unit);
   }
   checkUnit(out.unit, diags, SemaOptions{machinePath.empty()});
-  std::string rendered = renderDiagnostics(diags);
+  std::string rendered = renderDiagnostics(diags, errors);
   std::fputs(rendered.c_str(), stderr);
+  if (errors == ErrorMode::Alarm && diags.totalErrors() > 0) {
+    std::fprintf(stderr,
+                 "mbc: warning: %d error%s in the input: each block that has "
+                 "one raises its alarm if the run reaches it (--strict "
+                 "refuses the input)\n",
+                 diags.totalErrors(), diags.totalErrors() == 1 ? "" : "s");
+    return true;
+  }
   if (diags.errorCount() > 0) {
     std::fprintf(stderr, "%d error%s generated.\n", diags.errorCount(),
                  diags.errorCount() == 1 ? "" : "s");

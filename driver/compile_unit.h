@@ -17,9 +17,12 @@ struct CompiledUnit {
 };
 
 /// Loads and checks the files. Diagnostics go to standard error. Returns
-/// false when there were errors (or a file could not be read).
+/// false when a file could not be read, or when there were errors and
+/// `errors` is ErrorMode::Refuse; under ErrorMode::Alarm errors print as
+/// warnings and each block that has one raises its alarm when it runs.
 /// `machinePath`: the --machine profile, if any, which the checks defer to.
 bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out, const std::string& machinePath = {});
+              CompiledUnit& out, const std::string& machinePath = {},
+              ErrorMode errors = ErrorMode::Refuse);
 
 } // namespace mbc::driver

@@ -148,6 +148,9 @@ bool checkOptions(const Options& o, std::string& error) {
     error = "mbc compile --shared needs -o FILE.so";
   } else if (!checkBatchOptions(o, error)) {
     return false;
+  } else if (o.command == "check" && o.strict == false) {
+    error = "mbc check reports errors as errors; --no-strict is for run, "
+            "batch, emit-ir, compile and build";
   } else if (!o.tableName.empty() && !isCIdentifier(o.tableName)) {
     error = fmt::format("--table '{}' is not a C identifier", o.tableName);
   } else {
@@ -158,24 +161,31 @@ bool checkOptions(const Options& o, std::string& error) {
 
 } // namespace
 
+ErrorMode errorMode(const Options& o) {
+  const bool runs = o.command == "run" || o.command == "batch";
+  return o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
+}
+
 std::string usageText() {
   return "usage: mbc run FILE... [--engine jit|interp|ir] [-O0..-O3]\n" +
-         runOptionsUsage(8) +
+         runOptionsUsage(8) + "        [--strict]\n" +
          "        [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc batch FILE... --params TABLE.csv --out DIR [-j N]\n"
          "        [--shard I/N] [--combined] [--engine jit|interp|ir]\n"
          "        [-O0..-O3] [--main O1234] [--set '#N=V']...\n"
          "        [--arg A=1.5]... [--machine PATH] [--max-blocks N]\n"
-         "        [--max-output SIZE] [--block-skip[=N]] [--trace]\n"
+         "        [--max-output SIZE] [--block-skip[=N]] [--trace] [--strict]\n"
          "       mbc check FILE... [--machine PATH]\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
-         "        [--disable-pass NAME]... [--verify-each]\n"
+         "        [--disable-pass NAME]... [--verify-each] [--no-strict]\n"
          "       mbc compile -c FILE... -o OUT.o [--header OUT.h]\n"
          "        [--emit=ir|llvm|asm|obj] [--table NAME] [--cpu NAME]\n"
-         "        [-O0..-O3] [-g]\n"
+         "        [-O0..-O3] [-g] [--no-strict]\n"
          "       mbc compile --shared FILE... -o LIB.so [--header OUT.h]\n"
-         "        [--table NAME] [--cpu NAME] [-O0..-O3] [-g] [-v]\n"
+         "        [--table NAME] [--cpu NAME] [-O0..-O3] [-g] [-v] "
+         "[--no-strict]\n"
          "       mbc build FILE... -o EXE [--cpu NAME] [-O0..-O3] [-g] [-v]\n"
+         "        [--no-strict]\n"
          "passes: " +
          ir::passNameList() + "\n";
 }
@@ -212,6 +222,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.shared = true;
     } else if (a == "--combined") {
       o.combined = true;
+    } else if (a == "--strict" || a == "--no-strict") {
+      o.strict = a == "--strict";
     } else if (a == "-c") {
       // compile only: what `mbc compile` always does (as with cc -c)
     } else if (a == "--no-opt") {

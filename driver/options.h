@@ -3,6 +3,7 @@
 #pragma once
 
 #include "driver/run_options.h"
+#include "frontend/diagnostics.h"
 
 #include <optional>
 #include <string>
@@ -33,7 +34,15 @@ struct Options {
   std::string shard;      // --shard I/N (batch)
   int jobs = 0;           // -j N (batch): threads; 0 = one per core
   bool combined = false;  // --combined (batch): one JSONL file
+  // --strict / --no-strict: whether errors in the input refuse it, or make
+  // their blocks alarm when they run (errorMode()).
+  std::optional<bool> strict;
 };
+
+/// What errors in the input do: run and batch run the input and alarm where
+/// the control would; check, emit-ir, compile and build refuse it (a build
+/// should fail loudly). --strict and --no-strict choose.
+ErrorMode errorMode(const Options& o);
 
 /// Parses argv; on a usage error returns nullopt after writing the message
 /// to `error`.

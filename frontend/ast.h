@@ -3,6 +3,7 @@
 #pragma once
 
 #include "frontend/source.h"
+#include <mbc/alarm.h>
 #include <mbc/arith.h>
 
 #include <memory>
@@ -115,11 +116,19 @@ struct Block {
   int seq = -1;      // N number, -1 when absent
   int skipLevel = 0; // 0: no '/', 1..9: '/n'
   Stmt stmt;
+  // A block mbc cannot read raises this alarm when it executes, as the
+  // control does; `stmt` then only keeps what the loop structure needs
+  // (a WHILE or END). AlarmId::None: an ordinary block.
+  AlarmId alarm = AlarmId::None;
+  std::string alarmDetail; // the diagnostic's message
 };
 
 struct Program {
   std::string name; // "O1000", "<NAME>" or "MAIN" for an anonymous main
   int number = -1;  // O number; -1 for named/anonymous programs
+  // A second program of the same name: the control keeps the first (the
+  // semantic checks drop this one after reporting it).
+  bool duplicate = false;
   SourceRange range;
   std::uint32_t file = 0;
   std::vector<Block> blocks;

@@ -14,11 +14,13 @@ namespace {
 struct KindRow {
   const char* name;
   Severity severity;
+  AlarmId alarm;
   const char* format;
 };
 
 constexpr std::array kKinds = {
-#define DIAG(Id, Sev, Text) KindRow{#Id, Severity::Sev, Text},
+#define DIAG(Id, Sev, Alarm, Text)                                             \
+  KindRow{#Id, Severity::Sev, AlarmId::Alarm, Text},
 #include "frontend/diagnostic_kinds.def"
 };
 
@@ -145,6 +147,10 @@ Severity severityOf(DiagKind kind) {
   return kKinds[static_cast<int>(kind)].severity;
 }
 
+AlarmId runTimeAlarm(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].alarm;
+}
+
 const char* kindName(DiagKind kind) {
   return kKinds[static_cast<int>(kind)].name;
 }
@@ -157,17 +163,27 @@ Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
                                   std::string message) {
   Severity sev = severityOf(kind);
   if (sev == Severity::Error) {
+    ++totalErrors_;
+    const bool blockError =
+        !blockError_.kind && runTimeAlarm(kind) != AlarmId::None;
+    if (blockError) {
+      blockError_ = {kind, message, -1};
+    }
     if (errors_ >= kErrorLimit) {
       lastStored_ = -1;
       // Past the limit nothing is stored; callers may still attach fix-its.
-      overflow_ = Diagnostic{kind, sev, range, {}, {}, {}};
+      overflow_ = Diagnostic{kind, sev, range, std::move(message), {}, {}};
       return overflow_;
     }
     ++errors_;
+    if (blockError) {
+      blockError_.index = static_cast<int>(diags_.size());
+    }
   } else if (sev == Severity::Warning) {
     ++warnings_;
   }
-  diags_.push_back(Diagnostic{kind, sev, range, std::move(message), {}, {}});
+  diags_.push_back(Diagnostic{
+      kind, sev, range, std::move(message), {}, {}, runTimeAlarm(kind)});
   lastStored_ = static_cast<int>(diags_.size()) - 1;
   if (errors_ == kErrorLimit && sev == Severity::Error) {
     diags_.push_back(Diagnostic{DiagKind::TooManyErrors,
@@ -181,7 +197,34 @@ Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
   return diags_.back();
 }
 
-std::string renderDiagnostics(const DiagnosticEngine& engine) {
+std::string alarmDetail(std::string_view message) {
+  constexpr std::string_view kPrefix = " (PS";
+  const std::size_t at = message.rfind(kPrefix);
+  if (at != std::string_view::npos && message.size() == at + 9 &&
+      message.back() == ')') {
+    message = message.substr(0, at);
+  }
+  return std::string(message);
+}
+
+// Under ErrorMode::Alarm: the note that says what the run makes of an
+// error, on one line (the error above shows the source).
+std::string alarmNote(const SourceManager& sm, const Diagnostic& d) {
+  const AlarmId alarm = d.alarm;
+  if (alarm == AlarmId::None) {
+    return "";
+  }
+  LineCol lc = sm.lineCol(d.range.begin);
+  const bool jump =
+      d.kind == DiagKind::GotoUndefined || d.kind == DiagKind::GotoRange;
+  return fmt::format("{}:{}:{}: note: {} alarm {} {}{}\n",
+                     sm.name(d.range.begin.file), lc.line, lc.col,
+                     jump ? "the jump raises" : "this block raises",
+                     alarmCode(alarm, 0), alarmInfo(alarm).message,
+                     jump ? " when it is taken" : " when it runs");
+}
+
+std::string renderDiagnostics(const DiagnosticEngine& engine, ErrorMode mode) {
   // Parsing and the semantic checks report in two passes; the reader wants
   // file order.
   std::vector<const Diagnostic*> sorted;
@@ -200,8 +243,18 @@ std::string renderDiagnostics(const DiagnosticEngine& engine) {
   std::string out;
   for (const Diagnostic* dp : sorted) {
     const Diagnostic& d = *dp;
+    const bool alarms = mode == ErrorMode::Alarm;
     if (d.kind == DiagKind::TooManyErrors) {
-      out += fmt::format("mbc: error: {}\n", d.message);
+      out += alarms ? "mbc: warning: too many problems; the others are not "
+                      "shown\n"
+                    : fmt::format("mbc: error: {}\n", d.message);
+      continue;
+    }
+    if (alarms && d.severity == Severity::Error) {
+      Diagnostic warning = d;
+      warning.severity = Severity::Warning;
+      renderOne(engine.sources(), warning, out);
+      out += alarmNote(engine.sources(), d);
       continue;
     }
     renderOne(engine.sources(), d, out);

@@ -3,17 +3,20 @@
 #pragma once
 
 #include "frontend/source.h"
+#include <mbc/alarm.h>
 
 #include <fmt/format.h>
 
 #include <deque>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbc {
 
 enum class DiagKind {
-#define DIAG(Id, Severity, Text) Id,
+#define DIAG(Id, Severity, Alarm, Text) Id,
 #include "frontend/diagnostic_kinds.def"
 };
 
@@ -31,9 +34,15 @@ struct Diagnostic {
   std::string message;
   std::vector<FixIt> fixIts;
   std::vector<Diagnostic> notes;
+  // What `mbc run` makes of an error (runTimeAlarm, unless the parser
+  // chose better for the block's statement).
+  AlarmId alarm = AlarmId::None;
 };
 
 Severity severityOf(DiagKind kind);
+/// The alarm a block with this error raises when it runs (AlarmId::None:
+/// the run goes on).
+AlarmId runTimeAlarm(DiagKind kind);
 const char* kindName(DiagKind kind);
 const char* formatOf(DiagKind kind);
 
@@ -66,6 +75,28 @@ public:
 
   int errorCount() const { return errors_; }
 
+  /// Every error reported, those past the limit too.
+  int totalErrors() const { return totalErrors_; }
+
+  /// The first error with a run-time alarm reported since the last call,
+  /// which the parser makes the alarm of the block it was reading; kind is
+  /// nullopt when there was none.
+  struct BlockError {
+    std::optional<DiagKind> kind;
+    std::string message;
+    int index = -1; // in diagnostics(), -1 past the error limit
+  };
+
+  BlockError takeBlockError() { return std::exchange(blockError_, {}); }
+
+  /// The alarm a block raises for its error, when the parser knows better
+  /// than the table (a macro statement's format error).
+  void setAlarm(const BlockError& error, AlarmId alarm) {
+    if (error.index >= 0) {
+      diags_[static_cast<std::size_t>(error.index)].alarm = alarm;
+    }
+  }
+
   int warningCount() const { return warnings_; }
 
   bool tooManyErrors() const { return errors_ >= kErrorLimit; }
@@ -86,11 +117,26 @@ private:
   Diagnostic overflow_{};
   int lastStored_ = -1; // diags_ index of the last report, -1 if dropped
   int errors_ = 0;
+  int totalErrors_ = 0;
   int warnings_ = 0;
+  BlockError blockError_;
+};
+
+/// A diagnostic's message as the detail of its run-time alarm: without the
+/// " (PS0124)" that names the alarm the report shows anyway.
+std::string alarmDetail(std::string_view message);
+
+/// What an error is to the command that reads the input.
+enum class ErrorMode {
+  Refuse, // mbc check, --strict: errors are errors
+  Alarm,  // mbc run: errors are warnings, their blocks alarm when they run
 };
 
 /// clang-style text of every diagnostic: "file:line:col: error: message",
-/// the source line, a caret under the range, and fix-it lines.
-std::string renderDiagnostics(const DiagnosticEngine& engine);
+/// the source line, a caret under the range, and fix-it lines. Under
+/// ErrorMode::Alarm an error prints as a warning with a note naming the
+/// alarm its block raises.
+std::string renderDiagnostics(const DiagnosticEngine& engine,
+                              ErrorMode mode = ErrorMode::Refuse);
 
 } // namespace mbc

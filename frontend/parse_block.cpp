@@ -64,7 +64,8 @@ void Parser::unexpected(DiagKind kind) {
 
 void Parser::run() {
   advance();
-  while (tok_.kind != Tok::EndOfFile && !diags_.tooManyErrors()) {
+  while (tok_.kind != Tok::EndOfFile &&
+         !(options_.stopAtErrorLimit && diags_.tooManyErrors())) {
     parseBlock();
   }
 }
@@ -77,8 +78,9 @@ Program& Parser::currentProgram(SourceLoc at) {
     p.range = {at, 0};
     p.file = file_;
     for (const Program& other : unit_.programs) {
-      if (other.name == p.name) {
+      if (other.name == p.name && !other.duplicate) {
         diags_.report(DiagKind::DuplicateProgram, p.range, p.name);
+        p.duplicate = true;
       }
     }
     unit_.programs.push_back(std::move(p));
@@ -116,9 +118,10 @@ bool Parser::parseProgramHeader() {
   p.range = {start.range.begin,
              tok_.range.begin.offset - start.range.begin.offset};
   for (const Program& other : unit_.programs) {
-    if (other.name == p.name) {
+    if (other.name == p.name && !other.duplicate) {
       diags_.report(DiagKind::DuplicateProgram, start.range, p.name);
       diags_.note(DiagKind::ProgramDefinedHere, other.range, p.name);
+      p.duplicate = true;
     }
   }
   unit_.programs.push_back(std::move(p));
@@ -138,10 +141,15 @@ void Parser::parseBlock() {
   b.range.begin = tok_.range.begin;
   b.line = sources_.lineCol(tok_.range.begin).line;
   SourceRange seqRange;
+  macroStatement_ = false;
   try {
     if ((tok_.kind == Tok::Letter && tok_.text == "O") ||
         tok_.kind == Tok::ProgramName) {
       parseProgramHeader();
+      // An error on the header line (a comment not closed) is the new
+      // program's first block.
+      b.range.length = tok_.range.begin.offset - b.range.begin.offset;
+      pushBlock(b);
       advance();
       return;
     }
@@ -180,17 +188,40 @@ void Parser::parseBlock() {
     expectEndOfBlock(b.stmt);
     addSequenceWord(b, seqRange);
   } catch (const BlockError&) {
-    std::string_view rest = lexer_.restOfBlock();
+    takeAlarm(b);
     resynchronise();
-    keepBrokenBlock(b, rest);
+    keepBrokenBlock(b);
     return;
   }
   b.range.length = tok_.range.begin.offset - b.range.begin.offset;
   splitLeadCodes(b, seqRange);
-  if (b.stmt.kind != StmtKind::Empty || b.seq >= 0) {
+  pushBlock(b);
+  advance();
+}
+
+// The first error of the block becomes the alarm it raises when it runs.
+// Called before the lexer moves on to the next block, whose errors are its
+// own.
+void Parser::takeAlarm(Block& b) {
+  const DiagnosticEngine::BlockError error = diags_.takeBlockError();
+  if (!error.kind || b.alarm != AlarmId::None) {
+    return;
+  }
+  b.alarm = runTimeAlarm(*error.kind);
+  // An unreadable part of a macro statement is a macro format error.
+  if (macroStatement_ && b.alarm == AlarmId::ImproperNcAddress) {
+    b.alarm = AlarmId::MacroStatementFormat;
+    diags_.setAlarm(error, b.alarm);
+  }
+  b.alarmDetail = alarmDetail(error.message);
+}
+
+void Parser::pushBlock(Block& b) {
+  takeAlarm(b);
+  if (b.stmt.kind != StmtKind::Empty || b.seq >= 0 ||
+      b.alarm != AlarmId::None) {
     currentProgram(b.range.begin).blocks.push_back(std::move(b));
   }
-  advance();
 }
 
 // G codes written before G65 (G57 G65 P..., as some shops begin every
@@ -211,6 +242,8 @@ void Parser::splitLeadCodes(Block& b, SourceRange seqRange) {
   b.stmt.leadCodes.clear();
   addSequenceWord(codes, seqRange);
   b.seq = -1;
+  codes.alarm = b.alarm;
+  codes.alarmDetail = b.alarmDetail;
   currentProgram(b.range.begin).blocks.push_back(std::move(codes));
 }
 
@@ -254,36 +287,81 @@ void Parser::noteParenthesis(const Token& after) {
   }
 }
 
-// A block with an error is not run (the run needs an error-free file), but
-// its N number and a DOm/ENDm in it still matter to the semantic checks:
-// without them one typo would also be reported as a missing GOTO target or
-// an unmatched loop.
-void Parser::keepBrokenBlock(Block& b, std::string_view rest) {
+namespace {
+
+// The loop number after "DO" or "END" at `at` (spaces between), or 0.
+int loopNumberAt(std::string_view text, std::size_t at) {
+  while (at < text.size() && text[at] == ' ') {
+    ++at;
+  }
+  return at < text.size() && text[at] >= '1' && text[at] <= '9' ? text[at] - '0'
+                                                                : 0;
+}
+
+} // namespace
+
+// A block with an error raises its alarm when it runs, but its N number and
+// the DOm/ENDm of a WHILE, DO or END statement still matter: without them one
+// typo would also be reported as a missing GOTO target or an unmatched loop,
+// and the loop around it would not be one.
+void Parser::keepBrokenBlock(Block& b) {
   bool loop =
       (b.stmt.kind == StmtKind::While || b.stmt.kind == StmtKind::End) &&
       b.stmt.loopId > 0;
   if (!loop) {
+    const SourceLoc from = b.stmt.range.begin.offset > b.range.begin.offset
+                               ? b.stmt.range.begin
+                               : b.range.begin;
     b.stmt = Stmt{};
-    b.stmt.range.begin = b.range.begin;
-    for (std::size_t i = 0; i + 2 < rest.size(); ++i) {
-      bool end = rest.substr(i, 3) == "END";
-      if (!end && rest.substr(i, 2) != "DO") {
-        continue;
-      }
-      std::size_t j = i + (end ? 3 : 2);
-      while (j < rest.size() && rest[j] == ' ') {
-        ++j;
-      }
-      if (j < rest.size() && rest[j] >= '1' && rest[j] <= '9') {
-        b.stmt.kind = end ? StmtKind::End : StmtKind::While;
-        b.stmt.loopId = rest[j] - '0';
+    b.stmt.range.begin = from;
+    // The statement as the lexer reads it: upper case, without comments.
+    const std::string_view line = sources_.lineText(from);
+    const std::size_t column = sources_.lineCol(from).col - 1;
+    std::string text;
+    int depth = 0;
+    for (char c : line.substr(std::min(column, line.size()))) {
+      depth += c == '(' ? 1 : c == ')' && depth > 0 ? -1 : 0;
+      if (c == ';') {
         break;
       }
+      if (depth == 0 && c != ')') {
+        text += c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c;
+      }
+    }
+    const std::size_t first = text.find_first_not_of(' ');
+    std::string_view statement =
+        first == std::string::npos ? "" : std::string_view(text).substr(first);
+    if (statement.starts_with("WH")) {
+      const std::size_t d = statement.rfind("DO");
+      b.stmt.loopId =
+          d == std::string_view::npos ? 0 : loopNumberAt(statement, d + 2);
+      b.stmt.kind = StmtKind::While;
+    } else if (statement.starts_with("DO")) {
+      b.stmt.loopId = loopNumberAt(statement, 2);
+      b.stmt.kind = StmtKind::While;
+    } else if (statement.starts_with("EN")) {
+      b.stmt.loopId =
+          loopNumberAt(statement, statement.starts_with("END") ? 3 : 2);
+      b.stmt.kind = StmtKind::End;
+    } else {
+      // Stray characters before the keyword ("**END1", pasted markdown).
+      for (std::size_t i = 0; i + 2 < statement.size(); ++i) {
+        const bool end = statement.substr(i, 3) == "END";
+        if (end || statement.substr(i, 2) == "DO") {
+          b.stmt.loopId = loopNumberAt(statement, i + (end ? 3 : 2));
+          b.stmt.kind = end ? StmtKind::End : StmtKind::While;
+          if (b.stmt.loopId != 0) {
+            break;
+          }
+        }
+      }
+    }
+    if (b.stmt.loopId == 0) {
+      b.stmt.kind = StmtKind::Empty;
     }
   }
-  if (b.stmt.kind != StmtKind::Empty || b.seq >= 0) {
-    currentProgram(b.range.begin).blocks.push_back(std::move(b));
-  }
+  b.range.length = tok_.range.begin.offset - b.range.begin.offset;
+  currentProgram(b.range.begin).blocks.push_back(std::move(b));
 }
 
 // After an error: continue with the first token of the next block, wherever

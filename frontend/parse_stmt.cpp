@@ -28,6 +28,7 @@ bool isLengthAddress(char c) {
 void Parser::parseStatement(Block& b) {
   Stmt& s = b.stmt;
   s.range.begin = tok_.range.begin;
+  macroStatement_ = tok_.kind == Tok::Hash || tok_.kind == Tok::Keyword;
   switch (tok_.kind) {
     case Tok::EndOfBlock:
     case Tok::EndOfFile:

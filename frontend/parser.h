@@ -16,6 +16,9 @@ struct ParseOptions {
   bool checkWarnings = false;
   /// The control's bracket nesting limit, function brackets included.
   int maxBracketDepth = 5;
+  /// Stop reading at the error limit (mbc check); `mbc run` reads on, since
+  /// every block it cannot read becomes an alarm.
+  bool stopAtErrorLimit = true;
 };
 
 /// Parses one file and appends its programs to unit.
@@ -67,10 +70,12 @@ private:
   void rejectExponent();
   [[noreturn]] void misplacedHeader();
   void resynchronise();
-  void keepBrokenBlock(Block& b, std::string_view rest);
+  void keepBrokenBlock(Block& b);
   void reportThenWithoutAssignment(const Token& then);
   void addSequenceWord(Block& b, SourceRange range);
   void splitLeadCodes(Block& b, SourceRange seqRange);
+  void takeAlarm(Block& b);
+  void pushBlock(Block& b);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;
   const Token* messageAfter(std::uint32_t offset) const;
@@ -114,6 +119,8 @@ private:
   std::vector<Token> blockComments_;
   int program_ = -1; // index in unit_.programs
   bool reportedDepth_ = false;
+  bool macroStatement_ = false; // the block's statement starts with # or a
+                                // keyword
   int operands_ = 0;
 };
 

@@ -16,19 +16,34 @@ struct Loop {
   int block;
 };
 
+// A loop the control cannot run alarms at the block it stops at (its first
+// error wins, as in the parser).
+void setAlarm(Block& b, AlarmId alarm, std::string detail) {
+  if (b.alarm == AlarmId::None) {
+    b.alarm = alarm;
+    b.alarmDetail = std::move(detail);
+  }
+}
+
+void setAlarm(Block& b, Diagnostic& d) {
+  setAlarm(b, runTimeAlarm(d.kind), alarmDetail(d.message));
+  d.alarm = b.alarm; // the note names the alarm the block raises
+}
+
 void matchLoops(Program& p, DiagnosticEngine& diags) {
   std::vector<Loop> open;
   for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
-    Stmt& s = p.blocks[i].stmt;
+    Block& b = p.blocks[i];
+    Stmt& s = b.stmt;
     if (s.kind == StmtKind::While) {
       if (open.size() == 3) {
-        diags.report(DiagKind::LoopNesting, s.range, 4);
+        setAlarm(b, diags.report(DiagKind::LoopNesting, s.range, 4));
       }
       // The innermost open loop of that number is the one to name, and
       // stopping there keeps thousands of nested WHILEs linear.
       for (auto l = open.rbegin(); l != open.rend(); ++l) {
         if (l->id == s.loopId) {
-          diags.report(DiagKind::LoopIdReused, s.range, s.loopId);
+          setAlarm(b, diags.report(DiagKind::LoopIdReused, s.range, s.loopId));
           diags.note(DiagKind::DoOpenedHere, p.blocks[l->block].stmt.range,
                      l->id);
           break;
@@ -48,15 +63,23 @@ void matchLoops(Program& p, DiagnosticEngine& diags) {
       }
     }
     if (found < 0) {
-      diags.report(DiagKind::EndWithoutDo, s.range, s.loopId, s.loopId);
+      setAlarm(
+          b, diags.report(DiagKind::EndWithoutDo, s.range, s.loopId, s.loopId));
       continue;
     }
     if (found != static_cast<int>(open.size()) - 1) {
       const Loop& inner = open.back();
-      diags.report(DiagKind::CrossingLoops, s.range, s.loopId, s.loopId,
-                   inner.id);
+      setAlarm(b, diags.report(DiagKind::CrossingLoops, s.range, s.loopId,
+                               s.loopId, inner.id));
       diags.note(DiagKind::DoOpenedHere, p.blocks[inner.block].stmt.range,
                  inner.id);
+      // The loops it crossed have lost their END.
+      for (int k = found + 1; k < static_cast<int>(open.size()); ++k) {
+        const int id = open[k].id;
+        setAlarm(p.blocks[open[k].block], runTimeAlarm(DiagKind::DoWithoutEnd),
+                 alarmDetail(fmt::vformat(formatOf(DiagKind::DoWithoutEnd),
+                                          fmt::make_format_args(id, id))));
+      }
     }
     Stmt& w = p.blocks[open[found].block].stmt;
     w.match = i;
@@ -64,8 +87,8 @@ void matchLoops(Program& p, DiagnosticEngine& diags) {
     open.resize(found);
   }
   for (const Loop& l : open) {
-    diags.report(DiagKind::DoWithoutEnd, p.blocks[l.block].stmt.range, l.id,
-                 l.id);
+    Block& b = p.blocks[l.block];
+    setAlarm(b, diags.report(DiagKind::DoWithoutEnd, b.stmt.range, l.id, l.id));
   }
 }
 
@@ -202,6 +225,9 @@ int findSequence(const Program& program, int seq, int from) {
 
 void checkUnit(Unit& unit, DiagnosticEngine& diags,
                const SemaOptions& options) {
+  // The parser reported them; the control keeps the first program of a
+  // number, and so do the calls.
+  std::erase_if(unit.programs, [](const Program& p) { return p.duplicate; });
   for (Program& p : unit.programs) {
     matchLoops(p, diags);
     checkSequences(p, diags);

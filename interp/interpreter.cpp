@@ -54,6 +54,9 @@ mbrt_status Interpreter::run(int mainIndex) {
             mbrt_begin_block(ctx_, sources_.name(p.file).c_str(), b.line)) {
       return st;
     }
+    if (b.alarm != AlarmId::None) {
+      return mbrt_raise(ctx_, static_cast<int>(b.alarm), b.alarmDetail.c_str());
+    }
     bool finished = false;
     mbrt_status st = 0;
     if (b.stmt.kind == StmtKind::Nc) {

@@ -157,6 +157,10 @@ mbrt_status Evaluator::terminate(const Function& fn, Frame& frame, int depth,
       }
       next = kLeave;
       return 0;
+    case Op::Raise:
+      return mbrt_raise(ctx_, static_cast<int>(inst.attr),
+                        inst.str != 0 ? module_.strings[inst.str - 1].c_str()
+                                      : nullptr);
     case Op::Unreachable:
       return internalError("unreachable code reached");
     default:

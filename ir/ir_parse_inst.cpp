@@ -23,6 +23,7 @@ private:
 
   std::uint32_t intern(const std::string& s);
   char letter();
+  std::int64_t alarm();
   void valueList();
   void fn();
   void words();
@@ -55,6 +56,17 @@ char OperandParser::letter() {
     Cursor::failAt(at, fmt::format("'{}' is not an address letter", w));
   }
   return w[0];
+}
+
+// alarm = CODE ;  "PS0114", "MBC0001"
+std::int64_t OperandParser::alarm() {
+  TextPos at = c_.pos();
+  std::string_view w = c_.word("an alarm code");
+  const AlarmId id = alarmFromCode(w);
+  if (id == AlarmId::None) {
+    Cursor::failAt(at, fmt::format("'{}' is not an alarm code", w));
+  }
+  return static_cast<std::int64_t>(id);
 }
 
 // values = [value {"," value}] ;
@@ -233,6 +245,10 @@ void OperandParser::parse() {
       while (c_.accept(',')) {
         inst_.ops.push_back(c_.value());
       }
+      return;
+    case Op::Raise:
+      inst_.attr = alarm();
+      message();
       return;
     case Op::Br:
       inst_.targets.push_back(c_.block());

@@ -141,6 +141,12 @@ void FunctionLowering::lowerBlock(int index) {
   }
   ValueId begin = emit(Op::Begin);
   fn_.insts[begin].attr = b.line;
+  if (b.alarm != AlarmId::None) {
+    ValueId raise = emit(Op::Raise);
+    fn_.insts[raise].attr = static_cast<std::int64_t>(b.alarm);
+    fn_.insts[raise].str = intern(b.alarmDetail);
+    return;
+  }
   lowerStatement(b.stmt, index);
 }
 

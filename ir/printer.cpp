@@ -202,6 +202,10 @@ void OperandPrinter::print() {
         operand(i);
       }
       return;
+    case Op::Raise:
+      put(" {}", alarmCode(static_cast<AlarmId>(inst_.attr), 0));
+      message();
+      return;
     case Op::Br:
       out_ += " ";
       target(0);

@@ -294,6 +294,13 @@ void FunctionVerifier::checkOperandCount(BlockId b, ValueId id,
       return;
     case Op::Phi: // one per input block: checkTargets
       return;
+    case Op::Raise:
+      expect(0, "");
+      if (alarmInfo(static_cast<AlarmId>(inst.attr)).prefix[0] == '\0') {
+        fail(b, id,
+             fmt::format("raise of alarm {}, which has no code", inst.attr));
+      }
+      return;
     case Op::Trace:
       if (inst.str == 0) {
         fail(b, id, "trace without a template");

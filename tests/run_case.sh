@@ -57,15 +57,19 @@ else
   if [ "${MBC_ENGINE:-}" = aot ]; then
     # An executable of `mbc build`: the .nc arguments are compiled in, the
     # others are its run options.
+    # The build reads the input as `mbc run` does: errors make their blocks
+    # alarm, unless the case asks for --strict.
     inputs=()
     run_args=()
+    strict=(--no-strict)
     for a in "${args[@]}"; do
       case $a in
         *.nc) inputs+=("$a") ;;
+        --strict) strict=() ;;
         *) run_args+=("$a") ;;
       esac
     done
-    "$mbc" build "$name.nc" "${inputs[@]}" "${extra[@]}" -o "$work/program" 2>"$work/stderr" &&
+    "$mbc" build "$name.nc" "${inputs[@]}" "${strict[@]}" "${extra[@]}" -o "$work/program" 2>"$work/stderr" &&
       "$work/program" "${run_args[@]}" "${outputs[@]}" 2>>"$work/stderr"
     status=$?
   else

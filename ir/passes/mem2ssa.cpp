@@ -185,8 +185,9 @@ Plan makePlan(const Function& f, Mask locals) {
       sync = sync && sharesFrame(f, p);
     }
     plan.sync[b] = sync;
+    const Op exit = f.insts[terminatorOf(f, b)].op;
     plan.storePoint[b] =
-        f.insts[terminatorOf(f, b)].op == Op::Ret || sharesFrame(f, b);
+        exit == Op::Ret || exit == Op::Raise || sharesFrame(f, b);
     for (ValueId id : f.blocks[b].insts) {
       const Inst& inst = f.insts[id];
       if (inst.op == Op::StVar && isLocal(inst.attr) &&

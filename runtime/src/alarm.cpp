@@ -45,6 +45,16 @@ std::string alarmCode(AlarmId id, int macroNumber) {
   return info.prefix + zeroPadded(info.number, 4);
 }
 
+AlarmId alarmFromCode(std::string_view code) {
+  for (std::size_t i = 1; i < kAlarmTable.size(); ++i) {
+    const auto id = static_cast<AlarmId>(i);
+    if (id != AlarmId::MacroAlarm && alarmCode(id, 0) == code) {
+      return id;
+    }
+  }
+  return AlarmId::None;
+}
+
 std::string_view trimmedMessage(std::string_view comment) {
   while (!comment.empty() &&
          std::isspace(static_cast<unsigned char>(comment.front()))) {

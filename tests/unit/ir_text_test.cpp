@@ -74,6 +74,9 @@ b1:
 b2:
   %4 = retseq
   switch %4 [3: b1]
+b3:
+  begin 4
+  raise PS0114, "expected ']' to close '['"
 }
 )mbir";
 

@@ -4,6 +4,7 @@
 #include "ir/cfg.h"
 #include "ir/ir_parser.h"
 #include "ir/verifier.h"
+#include <mbc/alarm.h>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +48,27 @@ b4:
 
 TEST(IrVerifier, AcceptsLoopWithPhiAndUnreachableBlock) {
   EXPECT_EQ(verifyText(kLoop), Messages{});
+}
+
+// raise ends a block the control cannot read: it names an alarm that has a
+// code (a #3000 macro alarm has none of its own).
+TEST(IrVerifier, RaiseNamesAnAlarmWithACode) {
+  Module m = parseText(R"mbir(func @O1 #1 "" {
+b0:
+  begin 1
+  raise PS0114, "expected an expression"
+}
+)mbir");
+  EXPECT_EQ(verify(m), Messages{});
+  for (Inst& inst : m.functions[0].insts) {
+    if (inst.op == Op::Raise) {
+      inst.attr = static_cast<std::int64_t>(mbc::AlarmId::MacroAlarm);
+    }
+  }
+  const Messages messages = verify(m);
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("which has no code"), std::string::npos)
+      << messages[0];
 }
 
 // retseq reads the N of the M99 P that entered its block: only landing

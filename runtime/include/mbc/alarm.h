@@ -27,6 +27,10 @@ const AlarmInfo& alarmInfo(AlarmId id);
 /// "PS0112" for program alarms, "3000+n" for macro alarms, "MBC0001" for ours.
 std::string alarmCode(AlarmId id, int macroNumber);
 
+/// The alarm whose code is "PS0112" or "MBC0001"; AlarmId::None for any
+/// other text (macro alarms have no fixed code).
+AlarmId alarmFromCode(std::string_view code);
+
 /// The control shows at most this many characters of a #3000 or #3006
 /// message.
 inline constexpr std::size_t kMessageShown = 26;
