@@ -3,6 +3,7 @@
 #include "frontend/parser.h"
 #include <mbc/addresses.h>
 #include <mbc/alarm.h>
+#include <mbc/g_codes.h>
 
 #include <cmath>
 
@@ -343,6 +344,7 @@ void Parser::parseWords(Stmt& s) {
     }
     s.words.push_back(parseWord());
   }
+  reportUnmodelledCodes(s.words);
   for (const Word& w : s.words) {
     if (w.letter == 'G' && w.value->kind == ExprKind::Number &&
         w.value->number == 65) {
@@ -374,6 +376,32 @@ void Parser::parseWords(Stmt& s) {
   for (const Word& w : s.words) {
     if (!dwell) {
       checkDecimalPoint(w, false, units);
+    }
+  }
+}
+
+// mbc check: a G code the runtime does not execute (the runtime's table
+// decides) stops the run, so the check says so. The run itself alarms at
+// the block, MBC0001 naming the code.
+void Parser::reportUnmodelledCodes(const std::vector<Word>& words) {
+  if (!options_.checkWarnings) {
+    return;
+  }
+  for (const Word& w : words) {
+    if (w.letter != 'G' || w.value->kind != ExprKind::Number) {
+      continue;
+    }
+    const double tenths = std::round(w.value->number * 10.0);
+    if (tenths < 0 || tenths > 9999) {
+      continue;
+    }
+    const int code = static_cast<int>(tenths);
+    if (const char* name = unmodelledGCode(code)) {
+      diags_.report(DiagKind::UnsupportedGCode, w.range,
+                    code % 10 == 0
+                        ? fmt::format("G{}", code / 10)
+                        : fmt::format("G{}.{}", code / 10, code % 10),
+                    name);
     }
   }
 }

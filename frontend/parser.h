@@ -55,6 +55,7 @@ private:
   void parseWords(Stmt& s);
   Word parseWord();
   void finishMacroCall(Stmt& s);
+  void reportUnmodelledCodes(const std::vector<Word>& words);
 
   // What a block's G codes make of its letters (checkDecimalPoint).
   struct WordUnits {

@@ -7,7 +7,8 @@
 namespace mbc::rt {
 
 struct GCodeInfo {
-  int tenths; // G54.1 -> 541
+  int tenths;    // G54.1 -> 541
+  bool modelled; // mbc executes it; otherwise the run stops with MBC0001
   const char* name;
 };
 

@@ -1,6 +1,12 @@
 // NC blocks through the C ABI: address conversion, linear moves, units,
 // modal information, work offsets, unsupported G codes and the flow asked
 // for by M codes.
+#include <mbc/g_codes.h>
+
+#include <fmt/format.h>
+
+#include <map>
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -118,6 +124,31 @@ TEST(RuntimeNcBlock, UnsupportedGCodes) {
        {"G12.1", "G68 X0 Y0 I0 J0 K1 R45.", "G16", "G05 P2", "G60 X1."}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
+  }
+}
+
+// One table says which FANUC G codes mbc executes: mbc check reports the
+// others, and the runtime stops at them with MBC0001. Each code here is
+// given the words it needs.
+TEST(RuntimeNcBlock, TheGCodeTableSaysWhatRuns) {
+  const std::map<int, const char*> words = {
+      {50, " P0"},        {51, " Q0"},        {54, " Q0"},  {80, " P0"},
+      {100, " L2 P1 X0"}, {310, " X1. F100"}, {660, " P1"}, {661, " P1"},
+      {680, " R0"},       {541, " P1"}};
+  for (int tenths = 0; tenths <= 9999; ++tenths) {
+    // G65 never reaches the runtime: the parser makes its block a call.
+    if (!isFanucGCode(tenths) || tenths == 650) {
+      continue;
+    }
+    const std::string code =
+        tenths % 10 == 0 ? fmt::format("G{}", tenths / 10)
+                         : fmt::format("G{}.{}", tenths / 10, tenths % 10);
+    const auto extra = words.find(tenths);
+    const std::string block =
+        code + (extra != words.end() ? extra->second : "");
+    Machine m;
+    const bool stopped = m.block(block) == status(AlarmId::Unsupported);
+    EXPECT_EQ(stopped, unmodelledGCode(tenths) != nullptr) << block;
   }
 }
 

@@ -7,4 +7,9 @@ namespace mbc {
 /// Whether G<tenths / 10>.<tenths % 10> is a G code of a FANUC 0i-MF.
 bool isFanucGCode(int tenths);
 
+/// The name of a FANUC G code that mbc does not execute yet (the run stops
+/// with MBC0001 at it), or nullptr for codes it executes and codes FANUC
+/// does not have.
+const char* unmodelledGCode(int tenths);
+
 } // namespace mbc
