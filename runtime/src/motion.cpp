@@ -324,8 +324,21 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
 
 namespace {
 
+/// Below these a feed per minute (mm/min, inch/min) is a lathe's feed per
+/// revolution (F0.2): a mill would crawl.
+constexpr double kLeastFeed[2] = {1.0, 0.04};
+
+mbrt_status refuseFeedPerRevolution(mbrt_ctx& ctx) {
+  return raise(ctx, AlarmId::Unsupported,
+               fmt::format("F{} per minute: a lathe's feed per revolution "
+                           "(G99 F{}; on a mill G95 feeds per revolution); "
+                           "mbc has no lathe profile yet",
+                           ctx.modal.feed, ctx.modal.feed));
+}
+
 /// PS0011 for a feed move without F (in G93 without F in its block, in G95
-/// without S); `cycle` names the canned cycle.
+/// without S); `cycle` names the canned cycle; a feed per minute too small
+/// for a mill stops the run (refuseFeedPerRevolution).
 mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
   if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
     return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
@@ -334,7 +347,10 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
     return raise(ctx, AlarmId::FeedZero, "G95 needs a spindle speed (S)");
   }
   if (ctx.modal.feed > 0.0) {
-    return 0;
+    return ctx.modal.feedMode != 94 ||
+                   ctx.modal.feed >= kLeastFeed[ctx.modal.inch]
+               ? 0
+               : refuseFeedPerRevolution(ctx);
   }
   return raise(ctx, AlarmId::FeedZero,
                cycle != 0 ? fmt::format("G{} needs F greater than 0", cycle)

@@ -396,8 +396,15 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   const int index = lastWordIndex(letter);
   if (index < 0) {
-    return raise(ctx, AlarmId::ImproperNcAddress,
-                 fmt::format("{} is not an address of this machine", letter));
+    // U and W are the incremental X and Z of a lathe (G code system A).
+    return raise(
+        ctx, AlarmId::ImproperNcAddress,
+        letter == 'U' || letter == 'W'
+            ? fmt::format("{} is not an address of this machine (on "
+                          "a lathe {} is the incremental {}; mbc "
+                          "has no lathe profile yet)",
+                          letter, letter, letter == 'U' ? 'X' : 'Z')
+            : fmt::format("{} is not an address of this machine", letter));
   }
   if (word.kind == MBRT_WORD_DEC_LITERAL && isWholeNumberAddress(letter)) {
     // M3.0 is no M code (spec §1.5); a value, M[3.0] or M#1, is rounded.
@@ -497,6 +504,38 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
   if (motion.axisMask != 0 ||
       (arcMode && (motion.centerMask != 0 || motion.hasR))) {
     return executeMotion(ctx, motion);
+  }
+  return 0;
+}
+
+/// Lathe blocks that a mill would run silently wrong: G50 X Z (coordinate
+/// setting) or G50 S (spindle speed limit) would be a scaling cancel and a
+/// move, G99 F0.25 (feed per revolution) the canned cycle's R level and a
+/// crawl of a feed per minute. Until there is a lathe profile they stop the
+/// run. A G99 block with a mill's feed (F150.) is no lathe block.
+mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
+                             const mbrt_word* words, size_t count) {
+  if (block.frames.cancelScaling &&
+      (block.motion.axisMask != 0 || block.codes.s)) {
+    return raise(ctx, AlarmId::Unsupported,
+                 "G50 with axis words or S: a lathe's coordinate system "
+                 "setting or spindle speed limit (on a mill G50 cancels "
+                 "scaling); mbc has no lathe profile yet");
+  }
+  const auto isG99 = [](const mbrt_word& w) {
+    return w.letter == 'G' && gTenths(w) == 990.0;
+  };
+  constexpr double kLatheFeed[2] = {10.0, 0.4}; // mm, inch per revolution
+  if (ctx.modal.returnToR && ctx.modal.cycle == 0 && ctx.feedInBlock &&
+      ctx.modal.feed < kLatheFeed[ctx.modal.inch] &&
+      block.gCodes != GCodes::None &&
+      std::any_of(words, words + count, isG99)) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("G99 F{}: a lathe's feed per revolution (on a "
+                             "mill G99 is the canned cycle's R level and F "
+                             "is per minute; G95 feeds per revolution); mbc "
+                             "has no lathe profile yet",
+                             ctx.modal.feed));
   }
   return 0;
 }
@@ -608,6 +647,9 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (const mbrt_status status = readWord(ctx, words[i], block)) {
       return status;
     }
+  }
+  if (const mbrt_status status = refuseLatheForms(ctx, block, words, count)) {
+    return status;
   }
   bool lengthChanged = false;
   if (const mbrt_status status =

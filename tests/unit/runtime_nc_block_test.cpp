@@ -152,6 +152,46 @@ TEST(RuntimeNcBlock, TheGCodeTableSaysWhatRuns) {
   }
 }
 
+// Lathe blocks a mill would run silently wrong stop the run, naming the
+// lathe form, until there is a lathe profile.
+TEST(RuntimeNcBlock, LatheFormsOnAMill) {
+  {
+    Machine m;
+    EXPECT_EQ(m.block("G50 X100. Z0"), status(AlarmId::Unsupported));
+    EXPECT_TRUE(m.motions().empty());
+    EXPECT_NE(m.report().find("coordinate system setting"), std::string::npos);
+  }
+  {
+    Machine m;
+    EXPECT_EQ(m.block("G50 S2000"), status(AlarmId::Unsupported));
+    ASSERT_EQ(m.block("G51 X0 Y0 P2."), 0);
+    ASSERT_EQ(m.block("G50"), 0); // a mill's scaling cancel
+  }
+  {
+    Machine m;
+    EXPECT_EQ(m.block("G01 W-2. F100."), status(AlarmId::ImproperNcAddress));
+    EXPECT_NE(m.report().find("on a lathe W is the incremental Z"),
+              std::string::npos);
+  }
+  {
+    Machine m;
+    EXPECT_EQ(m.block("G99 G01 X10. F0.25"), status(AlarmId::Unsupported));
+    EXPECT_NE(m.report().find("G99 F0.25: a lathe's feed per revolution"),
+              std::string::npos);
+  }
+  {
+    Machine m;
+    EXPECT_EQ(m.block("G01 X10. F0.2"), status(AlarmId::Unsupported));
+    EXPECT_NE(m.report().find("F0.2 per minute"), std::string::npos);
+  }
+  {
+    Machine m; // G99 for the canned cycles that follow, F per minute
+    ASSERT_EQ(m.block("G99 G81 X10. Z-5. R2. F120."), 0);
+    ASSERT_EQ(m.block("G80 G01 X20. F300."), 0);
+    ASSERT_EQ(m.block("G95 S1000 G01 X30. F0.2"), 0);
+  }
+}
+
 TEST(RuntimeNcBlock, ReferencePositionNumber) {
   Machine m;
   EXPECT_EQ(m.block("G30 P5 Z0", 6), status(AlarmId::IllegalReferenceReturn));
