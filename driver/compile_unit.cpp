@@ -1,37 +1,111 @@
-// Reads the input files, parses and checks them, and prints diagnostics.
+// Reads the input files and the programs they call, parses and checks them,
+// and prints diagnostics.
 #include "driver/compile_unit.h"
 
+#include "driver/program_search.h"
 #include "frontend/parser.h"
 #include "frontend/sema.h"
 #include <mbc/read_file.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <set>
 #include <utility>
 
 namespace mbc::driver {
 
-bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out, const std::string& machinePath,
-              ErrorMode errors) {
+namespace {
+
+bool readInto(const std::string& path, DiagnosticEngine& diags,
+              const ParseOptions& options, CompiledUnit& out) {
+  std::string text;
+  if (int error = readFile(path, text)) {
+    std::fprintf(stderr, "mbc: error: cannot read '%s': %s\n", path.c_str(),
+                 std::strerror(error));
+    return false;
+  }
+  std::uint32_t id = out.sources.add(path, std::move(text));
+  parseFile(out.sources, id, diags, options, out.unit);
+  return true;
+}
+
+/// Where called programs are looked for: the inputs' folders, then -I.
+std::vector<std::string> searchDirs(const std::vector<std::string>& files,
+                                    const std::vector<std::string>& include) {
+  std::vector<std::string> dirs;
+  for (const std::string& file : files) {
+    std::string dir = std::filesystem::path(file).parent_path().string();
+    dir = dir.empty() ? "." : dir;
+    if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) {
+      dirs.push_back(dir);
+    }
+  }
+  dirs.insert(dirs.end(), include.begin(), include.end());
+  return dirs;
+}
+
+/// A found file without an O number holds the program it is named for, as
+/// a data server's file does.
+void nameAnonymousProgram(Unit& unit, std::size_t first, int number) {
+  for (std::size_t i = first; i < unit.programs.size(); ++i) {
+    Program& p = unit.programs[i];
+    if (p.number < 0 && p.name == "MAIN") {
+      p.number = number;
+      p.name = fmt::format("O{:04d}", number);
+      p.duplicate = false;
+    }
+  }
+}
+
+/// Adds the programs the unit calls but does not define, as long as the
+/// search path has a file for one of them.
+bool loadCalledPrograms(const std::vector<std::string>& files,
+                        const LoadOptions& load, DiagnosticEngine& diags,
+                        const ParseOptions& options, CompiledUnit& out) {
+  const std::vector<std::string> dirs = searchDirs(files, load.includeDirs);
+  std::set<std::string> read(files.begin(), files.end());
+  for (bool added = true; added;) {
+    added = false;
+    for (int number : missingCalledPrograms(out.unit)) {
+      const std::optional<std::string> path = findProgramFile(number, dirs);
+      if (!path || !read.insert(*path).second) {
+        continue;
+      }
+      const std::size_t first = out.unit.programs.size();
+      if (!readInto(*path, diags, options, out)) {
+        return false;
+      }
+      nameAnonymousProgram(out.unit, first, number);
+      added = true;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
+              CompiledUnit& out) {
   DiagnosticEngine diags(out.sources);
   ParseOptions options;
-  options.checkWarnings = checkWarnings;
-  options.stopAtErrorLimit = errors == ErrorMode::Refuse;
+  options.checkWarnings = load.checkWarnings;
+  options.stopAtErrorLimit = load.errors == ErrorMode::Refuse;
   for (const std::string& path : files) {
-    std::string text;
-    if (int error = readFile(path, text)) {
-      std::fprintf(stderr, "mbc: error: cannot read '%s': %s\n", path.c_str(),
-                   std::strerror(error));
+    if (!readInto(path, diags, options, out)) {
       return false;
     }
-    std::uint32_t id = out.sources.add(path, std::move(text));
-    parseFile(out.sources, id, diags, options, out.unit);
   }
-  checkUnit(out.unit, diags, SemaOptions{machinePath.empty()});
-  std::string rendered = renderDiagnostics(diags, errors);
+  if (!loadCalledPrograms(files, load, diags, options, out)) {
+    return false;
+  }
+  checkUnit(out.unit, diags, SemaOptions{load.machinePath.empty()});
+  std::string rendered = renderDiagnostics(diags, load.errors);
   std::fputs(rendered.c_str(), stderr);
-  if (errors == ErrorMode::Alarm && diags.totalErrors() > 0) {
+  if (load.errors == ErrorMode::Alarm && diags.totalErrors() > 0) {
     std::fprintf(stderr,
                  "mbc: warning: %d error%s in the input: each block that has "
                  "one raises its alarm if the run reaches it (--strict "

@@ -16,13 +16,21 @@ struct CompiledUnit {
   Unit unit;
 };
 
-/// Loads and checks the files. Diagnostics go to standard error. Returns
-/// false when a file could not be read, or when there were errors and
-/// `errors` is ErrorMode::Refuse; under ErrorMode::Alarm errors print as
-/// warnings and each block that has one raises its alarm when it runs.
-/// `machinePath`: the --machine profile, if any, which the checks defer to.
-bool loadUnit(const std::vector<std::string>& files, bool checkWarnings,
-              CompiledUnit& out, const std::string& machinePath = {},
-              ErrorMode errors = ErrorMode::Refuse);
+/// How loadUnit reads the input.
+struct LoadOptions {
+  bool checkWarnings = false; // mbc check: the warnings only a review needs
+  std::string machinePath;    // --machine: the checks defer to a profile
+  ErrorMode errors = ErrorMode::Refuse;
+  std::vector<std::string> includeDirs; // -I: more places to find programs
+};
+
+/// Loads and checks the files, and the programs they call that none of them
+/// defines, from the files' folders and the -I folders (program_search.h).
+/// Diagnostics go to standard error. Returns false when a file could not be
+/// read, or when there were errors and the mode is ErrorMode::Refuse; under
+/// ErrorMode::Alarm errors print as warnings and each block that has one
+/// raises its alarm when it runs.
+bool loadUnit(const std::vector<std::string>& files, const LoadOptions& options,
+              CompiledUnit& out);
 
 } // namespace mbc::driver

@@ -80,8 +80,7 @@ bool loadModule(const Options& o, ir::Module& out) {
     }
   } else {
     CompiledUnit cu;
-    if (!loadUnit(o.files, false, cu, {}, errorMode(o)) ||
-        !buildModule(cu, o, out)) {
+    if (!loadUnit(o.files, loadOptions(o), cu) || !buildModule(cu, o, out)) {
       return false;
     }
   }

@@ -43,7 +43,9 @@ int dispatch(int argc, char** argv) {
     if (!options->run.machinePath.empty() && !createContext(options->run)) {
       return 2;
     }
-    return loadUnit(options->files, true, cu, options->run.machinePath) ? 0 : 1;
+    LoadOptions load = loadOptions(*options);
+    load.checkWarnings = true;
+    return loadUnit(options->files, load, cu) ? 0 : 1;
   }
   return runCommand(*options);
 }

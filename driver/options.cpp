@@ -42,6 +42,8 @@ bool setValueOption(Options& o, const std::string& name,
     o.outDir = value;
   } else if (name == "--shard") {
     o.shard = value;
+  } else if (name == "-I") {
+    o.includeDirs.push_back(value);
   } else if (name == "-j" || name == "--jobs") {
     double jobs = 0;
     if (!parseNumber(value, jobs) || jobs < 1 || jobs > 256 ||
@@ -62,7 +64,7 @@ bool isValueOption(const std::string& name) {
   return name == "--disable-pass" || name == "-x" || name == "--engine" ||
          name == "-o" || name == "--header" || name == "--emit" ||
          name == "--table" || name == "--cpu" || name == "--params" ||
-         name == "--out" || name == "--shard" || name == "-j" ||
+         name == "--out" || name == "--shard" || name == "-I" || name == "-j" ||
          name == "--jobs";
 }
 
@@ -161,9 +163,13 @@ bool checkOptions(const Options& o, std::string& error) {
 
 } // namespace
 
-ErrorMode errorMode(const Options& o) {
+LoadOptions loadOptions(const Options& o) {
   const bool runs = o.command == "run" || o.command == "batch";
-  return o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
+  LoadOptions load;
+  load.machinePath = o.run.machinePath;
+  load.errors = o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
+  load.includeDirs = o.includeDirs;
+  return load;
 }
 
 std::string usageText() {

@@ -2,8 +2,8 @@
 // emit-ir`, `mbc compile` and `mbc build`.
 #pragma once
 
+#include "driver/compile_unit.h"
 #include "driver/run_options.h"
-#include "frontend/diagnostics.h"
 
 #include <optional>
 #include <string>
@@ -35,14 +35,16 @@ struct Options {
   int jobs = 0;           // -j N (batch): threads; 0 = one per core
   bool combined = false;  // --combined (batch): one JSONL file
   // --strict / --no-strict: whether errors in the input refuse it, or make
-  // their blocks alarm when they run (errorMode()).
+  // their blocks alarm when they run (loadOptions()).
   std::optional<bool> strict;
+  std::vector<std::string> includeDirs; // -I DIR: where called programs are
 };
 
-/// What errors in the input do: run and batch run the input and alarm where
-/// the control would; check, emit-ir, compile and build refuse it (a build
-/// should fail loudly). --strict and --no-strict choose.
-ErrorMode errorMode(const Options& o);
+/// How the commands read their input (compile_unit.h). Errors in the input:
+/// run and batch run it and alarm where the control would; check, emit-ir,
+/// compile and build refuse it (a build should fail loudly); --strict and
+/// --no-strict choose.
+LoadOptions loadOptions(const Options& o);
 
 /// Parses argv; on a usage error returns nullopt after writing the message
 /// to `error`.

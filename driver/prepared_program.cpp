@@ -36,7 +36,7 @@ int findMain(const Unit& unit, const std::string& wanted) {
 int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
   engine_ = o.engine;
   auto start = std::chrono::steady_clock::now();
-  if (!loadUnit(o.files, false, cu_, o.run.machinePath, errorMode(o))) {
+  if (!loadUnit(o.files, loadOptions(o), cu_)) {
     return 1;
   }
   phases.emplace_back("front end", millisecondsSince(start));

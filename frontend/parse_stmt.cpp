@@ -343,6 +343,10 @@ void Parser::parseWords(Stmt& s) {
       misplacedHeader();
     }
     s.words.push_back(parseWord());
+    if (tok_.kind == Tok::ProgramName) { // M98 <NAME>, G65 <NAME>
+      diags_.report(DiagKind::CallByName, tok_.range, tok_.text);
+      fail();
+    }
   }
   reportUnmodelledCodes(s.words);
   for (const Word& w : s.words) {

@@ -58,18 +58,22 @@ else
     # An executable of `mbc build`: the .nc arguments are compiled in, the
     # others are its run options.
     # The build reads the input as `mbc run` does: errors make their blocks
-    # alarm, unless the case asks for --strict.
+    # alarm, unless the case asks for --strict; it finds called programs in
+    # the -I folders.
     inputs=()
     run_args=()
     strict=(--no-strict)
-    for a in "${args[@]}"; do
+    include=()
+    for ((i = 0; i < ${#args[@]}; ++i)); do
+      a=${args[i]}
       case $a in
         *.nc) inputs+=("$a") ;;
         --strict) strict=() ;;
+        -I) include+=(-I "${args[i + 1]}"); ((++i)) ;;
         *) run_args+=("$a") ;;
       esac
     done
-    "$mbc" build "$name.nc" "${inputs[@]}" "${strict[@]}" "${extra[@]}" -o "$work/program" 2>"$work/stderr" &&
+    "$mbc" build "$name.nc" "${inputs[@]}" "${strict[@]}" "${include[@]}" "${extra[@]}" -o "$work/program" 2>"$work/stderr" &&
       "$work/program" "${run_args[@]}" "${outputs[@]}" 2>>"$work/stderr"
     status=$?
   else

@@ -95,10 +95,16 @@ bool isCode(const mbrt_word& word, char letter, double value) {
   return word.letter == letter && numeric(word.value) == value;
 }
 
-/// Whether the block hands its P and L to M98 or M99.
+/// M98, M198 and M99: the calls and returns the flattened program has run.
+bool isTransfer(const mbrt_word& word) {
+  return isCode(word, 'M', 98) || isCode(word, 'M', 198) ||
+         isCode(word, 'M', 99);
+}
+
+/// Whether the block hands its P and L to a call or a return.
 bool transfers(const mbrt_word* words, size_t count) {
   for (size_t i = 0; i < count; ++i) {
-    if (isCode(words[i], 'M', 98) || isCode(words[i], 'M', 99)) {
+    if (isTransfer(words[i])) {
       return true;
     }
   }
@@ -127,8 +133,8 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   std::string line;
   for (size_t i = 0; i < count; ++i) {
     const mbrt_word& word = words[i];
-    if (dropTransfer && (isCode(word, 'M', 98) || isCode(word, 'M', 99) ||
-                         word.letter == 'P' || word.letter == 'L')) {
+    if (dropTransfer &&
+        (isTransfer(word) || word.letter == 'P' || word.letter == 'L')) {
       continue;
     }
     // G67 is a macro statement: the flattened program has no modal calls.

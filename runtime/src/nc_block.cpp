@@ -65,6 +65,7 @@ struct Block {
   int oneFieldCount = 0;
   MotionWords motion;
   bool hasP = false;
+  bool pDecimal = false; // P written with a decimal point
   bool hasL = false;
   double p = 0.0;
   double l = 0.0;
@@ -443,6 +444,12 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   if (!block.hasP) {
     return raise(ctx, AlarmId::ProgramNotFound, "M98 without P");
   }
+  if (block.qWritten) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("M98 P{} Q{} (starting a subprogram at a "
+                             "sequence number)",
+                             block.p, *block.qWritten));
+  }
   double program = block.p;
   double repeat = block.hasL ? block.l : 1.0;
   constexpr double kRepeatUnit = kMaxProgramNumber4Digits + 1.0;
@@ -480,6 +487,7 @@ mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
         flow->counts_part = 1;
         break;
       case 98:
+      case 198: // from an external device: the program search path
         if (const mbrt_status status = callSubprogram(ctx, block, flow)) {
           return status;
         }
@@ -551,6 +559,11 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
          block.qWritten});
   }
   if (block.nonModal == 40) {
+    if (block.pDecimal) {
+      return raise(ctx, AlarmId::IllegalDecimalPoint,
+                   "G04 P counts milliseconds and takes no decimal point "
+                   "(G04 X1.5 is seconds)");
+    }
     const double seconds = block.hasP ? block.p / 1000.0 : block.dwellSeconds;
     if (seconds < 0.0) {
       return raise(ctx, AlarmId::IllegalMinusSign,
@@ -603,6 +616,9 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
       const double value = roundHalfAway(numeric(words[i].value));
       (letter == 'P' ? block.hasP : block.hasL) = true;
       (letter == 'P' ? block.p : block.l) = value;
+      block.pDecimal =
+          block.pDecimal ||
+          (letter == 'P' && words[i].kind == MBRT_WORD_DEC_LITERAL);
     } else if (letter == 'Q') {
       block.qWritten = numeric(words[i].value);
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {

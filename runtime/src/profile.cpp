@@ -95,7 +95,7 @@ void parseParameters(const json& value, Profile& profile) {
     }
     // Nor do the M codes that stop, end, call or return.
     if (*n >= 6071 && *n <= 6089 &&
-        (x == 1 || x == 2 || x == 30 || x == 98 || x == 99)) {
+        (x == 1 || x == 2 || x == 30 || x == 98 || x == 99 || x == 198)) {
       fail(path, fmt::format("must not be M{:02} (0 = no code)", x));
     }
     profile.parameters[*n] = x;

@@ -192,6 +192,26 @@ TEST(RuntimeNcBlock, LatheFormsOnAMill) {
   }
 }
 
+// M198 calls like M98 (the program comes from the search path); M98 Q
+// (start at a sequence number) stops instead of being ignored; G04 P counts
+// milliseconds and takes no decimal point.
+TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
+  Machine m;
+  ASSERT_EQ(m.block("M198 P2002 L2"), 0);
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL);
+  EXPECT_EQ(m.flow().call_kind, MBRT_CALL_SUB);
+  EXPECT_EQ(m.flow().program, 2002);
+  EXPECT_EQ(m.flow().repeat, 2);
+  EXPECT_EQ(m.block("M98 P2002 Q30", 4), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.report(), "test.nc:4: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
+                        "M98 P2002 Q30 (starting a subprogram at a sequence "
+                        "number)\n");
+  Machine d;
+  EXPECT_EQ(d.block("G04 P1.5", 2), status(AlarmId::IllegalDecimalPoint));
+  ASSERT_EQ(d.block("G04 P1500"), 0);
+  ASSERT_EQ(d.block("G04 X1.5"), 0);
+}
+
 TEST(RuntimeNcBlock, ReferencePositionNumber) {
   Machine m;
   EXPECT_EQ(m.block("G30 P5 Z0", 6), status(AlarmId::IllegalReferenceReturn));
