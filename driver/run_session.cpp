@@ -136,7 +136,7 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
 
 mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
   for (auto [number, value] : o.presets) {
-    if (mbrt_status st = mbrt_write_var(ctx, number, value, nullptr)) {
+    if (mbrt_status st = mbrt_preset_var(ctx, number, value)) {
       return st;
     }
   }

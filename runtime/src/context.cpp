@@ -17,6 +17,7 @@
 
 #include "frames.h"
 #include "motion.h"
+#include "sysvars.h"
 
 namespace mbc::rt {
 
@@ -73,6 +74,10 @@ void loadProfile(mbrt_ctx& ctx) {
   }
   ctx.partsCount = profile.partsCount;
   ctx.partsRequired = profile.partsRequired;
+  ctx.inputWords = {};
+  for (const auto& [number, value] : profile.inputSignals) {
+    setInputSignal(ctx, number, value);
+  }
   // Call levels never outgrow this, so pushing one does not allocate.
   ctx.levels.reserve(profile.macroNesting + 2);
   ctx.calls.reserve(profile.totalNesting + 2);

@@ -177,7 +177,8 @@ struct mbrt_ctx {
   std::vector<mbc::rt::LocalLevel> levels; // back() is the current level
   std::array<mbc::Num, mbc::rt::kCommonEnd> commons{};
   // UO000-UO031 (#1132; bits 0-15 are #1100-#1115) and UO100-UO131 (#1133).
-  std::array<std::uint32_t, 2> outputWords{};
+  std::array<std::uint32_t, 4> outputWords{}; // UO000-UO031 ... UO300-UO331
+  std::array<std::uint32_t, 4> inputWords{};  // UI000-UI031 ... UI300-UI331
   std::vector<mbc::rt::ToolOffset> toolOffsets;
   std::vector<mbc::rt::AxisCounts> workOffsets;
   double clockMs = 0.0;

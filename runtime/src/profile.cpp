@@ -13,6 +13,7 @@
 
 #include "parameters.h"
 #include "profile_json.h"
+#include "sysvars.h"
 
 namespace mbc::rt {
 
@@ -202,6 +203,25 @@ void parseVariables(const json& value, Profile& profile) {
   }
 }
 
+/// #1000-#1031: one signal, 0 or 1; #1032-#1035: 32 of them, a signed
+/// 32-bit number.
+void parseInputSignals(const json& value, Profile& profile) {
+  for (const auto& [key, item] : object(value, "input_signals").items()) {
+    const std::string path = child("input_signals", key);
+    const auto n = keyNumber(key);
+    if (!n || *n < kFirstInputSignal || *n > kLastInputWord) {
+      unknownKey(path);
+    }
+    const double x = number(item, path);
+    if (*n < kFirstInputWord ? x != 0.0 && x != 1.0 : !isSignalWord(x)) {
+      fail(path, *n < kFirstInputWord
+                     ? "must be 0 or 1 (one signal)"
+                     : "must be a whole number of 32 bits (32 signals)");
+    }
+    profile.inputSignals.emplace_back(*n, x);
+  }
+}
+
 void parseLimits(const json& value, Profile& profile) {
   for (const auto& [key, item] : object(value, "limits").items()) {
     const std::string path = child("limits", key);
@@ -263,6 +283,8 @@ Profile parseTopLevel(const json& root) {
       profile.extendedCommon = boolean(item, key);
     } else if (key == "limits") {
       parseLimits(item, profile);
+    } else if (key == "input_signals") {
+      parseInputSignals(item, profile);
     } else if (key == "parts") {
       parseParts(item, profile);
     } else if (key == "program_number_digits") {

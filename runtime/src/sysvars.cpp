@@ -42,6 +42,20 @@ mbrt_status readZero(mbrt_ctx&, int, Num* out) {
   return 0;
 }
 
+/// #1000 + i is bit i of the word #1032 (spec §6.1): one input signal, 0 or
+/// 1, as the profile or a preset sets it (there is no PMC).
+mbrt_status readInputSignal(mbrt_ctx& ctx, int index, Num* out) {
+  *out = static_cast<double>((ctx.inputWords[0] >> index) & 1U);
+  return 0;
+}
+
+/// #1032-#1035: UI000-UI031, UI100-UI131, UI200-UI231, UI300-UI331 as
+/// signed 32-bit numbers.
+mbrt_status readInputWord(mbrt_ctx& ctx, int index, Num* out) {
+  *out = static_cast<double>(static_cast<std::int32_t>(ctx.inputWords[index]));
+  return 0;
+}
+
 /// #1100 + i is bit i of the word #1132 (spec §6.1): one signal, 0 or 1.
 mbrt_status readOutputSignal(mbrt_ctx& ctx, int index, Num* out) {
   *out = static_cast<double>((ctx.outputWords[0] >> index) & 1U);
@@ -70,8 +84,7 @@ mbrt_status readOutputWord(mbrt_ctx& ctx, int index, Num* out) {
 
 mbrt_status writeOutputWord(mbrt_ctx& ctx, int index, Num value, const char*) {
   const double v = roundHalfAway(numeric(value));
-  if (v < std::numeric_limits<std::int32_t>::min() ||
-      v > std::numeric_limits<std::int32_t>::max()) {
+  if (!isSignalWord(v)) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
                  fmt::format("#{} holds 32 signals: {} is no 32-bit number",
                              1132 + index, numeric(value)));
@@ -324,10 +337,10 @@ mbrt_status writeG541Offset(mbrt_ctx& ctx, int index, Num value, const char*) {
 }
 
 constexpr std::array kSystemVariables = {
-    SysVarRange{1000, 1015, readZero, nullptr}, // input signals
-    SysVarRange{1032, 1032, readZero, nullptr},
-    SysVarRange{1100, 1115, readOutputSignal, writeOutputSignal},
-    SysVarRange{1132, 1133, readOutputWord, writeOutputWord},
+    SysVarRange{1000, 1031, readInputSignal, nullptr},
+    SysVarRange{1032, 1035, readInputWord, nullptr},
+    SysVarRange{1100, 1131, readOutputSignal, writeOutputSignal},
+    SysVarRange{1132, 1135, readOutputWord, writeOutputWord},
     SysVarRange{2001, 2200, readToolOffset<&ToolOffset::hWear>,
                 writeToolOffset<&ToolOffset::hWear, 11>},
     SysVarRange{2201, 2400, readToolOffset<&ToolOffset::hGeometry>,
@@ -391,6 +404,25 @@ const SysVarRange* findSystemVariable(long n) {
 }
 
 } // namespace
+
+bool setInputSignal(mbrt_ctx& ctx, int number, double value) {
+  if (number >= kFirstInputSignal && number < kFirstInputWord) {
+    if (value != 0.0 && value != 1.0) {
+      return false;
+    }
+    const std::uint32_t bit = 1U << (number - kFirstInputSignal);
+    ctx.inputWords[0] =
+        value != 0.0 ? ctx.inputWords[0] | bit : ctx.inputWords[0] & ~bit;
+    return true;
+  }
+  if (number >= kFirstInputWord && number <= kLastInputWord &&
+      isSignalWord(value)) {
+    ctx.inputWords[number - kFirstInputWord] =
+        static_cast<std::uint32_t>(static_cast<std::int32_t>(value));
+    return true;
+  }
+  return false;
+}
 
 } // namespace mbc::rt
 

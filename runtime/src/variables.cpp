@@ -91,6 +91,20 @@ mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
   return outOfRange(*ctx, n);
 }
 
+mbrt_status mbrt_preset_var(mbrt_ctx* ctx, double number, mbrt_num value) {
+  const long n = variableNumber(number);
+  if (n >= kFirstInputSignal && n <= kLastInputWord) {
+    if (!setInputSignal(*ctx, static_cast<int>(n), numeric(value))) {
+      return raise(*ctx, AlarmId::ArgumentOutOfRange,
+                   fmt::format("#{} = {}: an input signal takes 0 or 1, a "
+                               "word of 32 signals a 32-bit number",
+                               n, numeric(value)));
+    }
+    return 0;
+  }
+  return mbrt_write_var(ctx, number, value, nullptr);
+}
+
 mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
   const long n = variableNumber(number);
   if (isLocal(n)) {

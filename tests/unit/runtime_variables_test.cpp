@@ -75,8 +75,14 @@ TEST(RuntimeVariables, InterfaceSignals) {
   EXPECT_EQ(n.read(1100), 1.0);
   EXPECT_EQ(n.write(1133, 255.0), 0);
   EXPECT_EQ(n.read(1133), 255.0);
+  // A 30i-B has 32 single signals each way and four words.
+  EXPECT_EQ(n.write(1131, 1.0), 0);
+  EXPECT_EQ(n.read(1132), -2147483647.0);
+  EXPECT_EQ(n.write(1135, -1.0), 0);
   mbrt_num value = 0;
-  EXPECT_EQ(mbrt_read_var(n.ctx(), 1116, &value),
+  EXPECT_EQ(mbrt_read_var(n.ctx(), 1036, &value),
+            status(AlarmId::VariableOutOfRange));
+  EXPECT_EQ(mbrt_read_var(n.ctx(), 1136, &value),
             status(AlarmId::VariableOutOfRange));
 }
 
@@ -250,4 +256,23 @@ TEST(RuntimeVariables, AdpGivesTheLiteralBack) {
 }
 
 } // namespace
+
+// The input signals come from the profile and from presets (--set), as the
+// PMC would set them; a program only reads them.
+TEST(RuntimeVariables, InputSignalsFromProfileAndPresets) {
+  Machine m(R"({"input_signals": {"1000": 1, "1033": 255}})");
+  EXPECT_EQ(m.read(1000), 1.0);
+  EXPECT_EQ(m.read(1001), 0.0);
+  EXPECT_EQ(m.read(1032), 1.0);
+  EXPECT_EQ(m.read(1033), 255.0);
+  ASSERT_EQ(mbrt_preset_var(m.ctx(), 1031, 1.0), 0);
+  EXPECT_EQ(m.read(1032), -2147483647.0);
+  ASSERT_EQ(mbrt_preset_var(m.ctx(), 1035, -1.0), 0);
+  EXPECT_EQ(m.read(1035), -1.0);
+  EXPECT_EQ(mbrt_preset_var(m.ctx(), 1002, 0.5),
+            status(AlarmId::ArgumentOutOfRange));
+  EXPECT_EQ(mbrt_write_var(m.ctx(), 1000, 0.0, nullptr),
+            status(AlarmId::WriteProtectedVariable));
+}
+
 } // namespace mbc::test

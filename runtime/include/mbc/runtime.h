@@ -171,6 +171,11 @@ mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out);
  * (may be NULL). Read-only variables give PS0116. */
 mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
                            const char* comment);
+/* #[number] = value from outside the program (mbc run --set, a batch
+ * table's #N column): as mbrt_write_var, but the input signals #1000-#1031
+ * (0 or 1) and #1032-#1035 (32-bit words), which programs only read, take
+ * the value as the PMC would set them. */
+mbrt_status mbrt_preset_var(mbrt_ctx* ctx, double number, mbrt_num value);
 /* ADP[#number]: a local set from a macro argument written without decimal
  * point gets its decimal point back (X10 -> 0.010 -> 10.0). */
 mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
