@@ -146,9 +146,8 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
 }
 
 // Variables that cannot exist on the default machine are only a warning: a
-// profile may add them (#200-#499), and the control alarms only if the block
-// runs.
-// With a machine profile only the runtime knows about #200-#499.
+// profile may add them (#200-#499, #2401-#2800), and the control alarms only
+// if the block runs. With a machine profile only the runtime knows.
 struct Reported {
   bool defaultMachine;
   std::set<int> numbers; // one warning per variable and program is enough
@@ -156,8 +155,7 @@ struct Reported {
 
 void warnMissing(int n, SourceRange at, Reported& reported,
                  DiagnosticEngine& diags) {
-  if (!reported.defaultMachine && n >= kFirstExtendedCommon &&
-      n <= kLastExtendedCommon) {
+  if (!reported.defaultMachine && dependsOnProfile(n)) {
     return;
   }
   if (variableAccess(n) == VarAccess::Missing &&

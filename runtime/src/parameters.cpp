@@ -21,6 +21,7 @@ constexpr std::array kParameters = {
     ParameterSpec{5400, 5400, 0, 255, 0, true},     // #0 RIN, #6 XSC, #7 SCR
     ParameterSpec{5410, 5410, -360000, 360000, 0, true}, // G68 angle, 0.001 deg
     ParameterSpec{5411, 5411, 0, 999999, 0, true},       // G51 magnification
+    ParameterSpec{6000, 6000, 0, 255, 0, true},          // #3 V15
     ParameterSpec{6001, 6001, 0, 255, 0, true},          // #1 PRT, #5 TCS
     ParameterSpec{6004, 6004, 0, 255, 0, true},          // #0 NAT
     ParameterSpec{6007, 6007, 0, 255, 0, true},          // #4 BCS, #5 SCS

@@ -114,17 +114,19 @@ void parseParameters(const json& value, Profile& profile) {
                                   });
 }
 
-void parseToolOffset(const json& value, const std::string& path,
+/// Memory A holds one value per offset (h_geometry), memory B a geometry
+/// and a wear that H and D share, memory C all four.
+void parseToolOffset(const json& value, const std::string& path, char memory,
                      ToolOffset& offset) {
   for (const auto& [key, item] : object(value, path).items()) {
     const std::string itemPath = child(path, key);
     if (key == "h_geometry") {
       offset.hGeometry = number(item, itemPath);
-    } else if (key == "h_wear") {
+    } else if (key == "h_wear" && memory != 'A') {
       offset.hWear = number(item, itemPath);
-    } else if (key == "d_geometry") {
+    } else if (key == "d_geometry" && memory == 'C') {
       offset.dGeometry = number(item, itemPath);
-    } else if (key == "d_wear") {
+    } else if (key == "d_wear" && memory == 'C') {
       offset.dWear = number(item, itemPath);
     } else {
       unknownKey(itemPath);
@@ -138,9 +140,16 @@ void parseToolOffsets(const json& value, Profile& profile) {
     profile.toolOffsetCount =
         integer(offsets["count"], "tool_offsets.count", 1, kMaxToolOffsets);
   }
+  if (offsets.contains("memory")) {
+    const json& memory = offsets["memory"];
+    if (memory != "A" && memory != "B" && memory != "C") {
+      fail("tool_offsets.memory", "must be \"A\", \"B\" or \"C\"");
+    }
+    profile.toolOffsetMemory = memory.get<std::string>()[0];
+  }
   profile.toolOffsets.assign(profile.toolOffsetCount + 1, ToolOffset{});
   for (const auto& [key, item] : offsets.items()) {
-    if (key == "count") {
+    if (key == "count" || key == "memory") {
       continue;
     }
     const std::string path = child("tool_offsets", key);
@@ -148,7 +157,8 @@ void parseToolOffsets(const json& value, Profile& profile) {
     if (!n || *n < 1 || *n > profile.toolOffsetCount) {
       unknownKey(path);
     }
-    parseToolOffset(item, path, profile.toolOffsets[*n]);
+    parseToolOffset(item, path, profile.toolOffsetMemory,
+                    profile.toolOffsets[*n]);
   }
 }
 

@@ -44,9 +44,10 @@ struct Profile {
   std::map<int, double> parameters;
   std::map<int, AxisValues> axisParameters; // 1241: one value per axis
   int toolOffsetCount = 400;
-  std::vector<ToolOffset> toolOffsets;              // index 0 unused
-  std::vector<AxisValues> workOffsets;              // kWorkOffsetCount entries
-  std::vector<std::pair<int, double>> variables;    // #500..#999 start values
+  char toolOffsetMemory = 'C';                   // offset memory type A, B or C
+  std::vector<ToolOffset> toolOffsets;           // index 0 unused
+  std::vector<AxisValues> workOffsets;           // kWorkOffsetCount entries
+  std::vector<std::pair<int, double>> variables; // #500..#999 start values
   std::vector<std::pair<int, double>> inputSignals; // #1000..#1035
   bool extendedCommon = false;
   int macroNesting = 5;

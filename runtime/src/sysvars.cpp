@@ -31,7 +31,8 @@ struct SysVarRange {
   long first;
   long last;
   Reader read;
-  Writer write; // nullptr: read-only (PS0116)
+  Writer write;           // nullptr: read-only (PS0116)
+  bool byProfile = false; // missing on the default machine (#2401-#2800)
 };
 
 /// Offsets are 20 numbers apart per coordinate system, one per axis.
@@ -94,23 +95,87 @@ mbrt_status writeOutputWord(mbrt_ctx& ctx, int index, Num value, const char*) {
   return 0;
 }
 
-/// Tool offset number index + 1; beyond the profile's count is PS0115.
-template <double ToolOffset::*Field>
-mbrt_status readToolOffset(mbrt_ctx& ctx, int index, Num* out) {
+/// The tool offset variables come in four series, #2001/#10001,
+/// #2201/#11001, #2401/#12001 and #2601/#13001 (the #2xxx form for offsets
+/// 1-200); what each holds depends on the offset memory type and on
+/// parameter 6000#3 V15 (docs/machine-profile.md). nullptr: the series does
+/// not exist on this machine.
+using OffsetField = double ToolOffset::*;
+
+OffsetField offsetSeries(const Profile& profile, int series, bool shortForm) {
+  static constexpr OffsetField kStandard[4] = {
+      &ToolOffset::hWear, &ToolOffset::hGeometry, &ToolOffset::dWear,
+      &ToolOffset::dGeometry};
+  // V15: numbered as on a Series 15, geometry before wear, D in #2401+.
+  static constexpr OffsetField kSeries15[4] = {
+      &ToolOffset::hGeometry, &ToolOffset::hWear, &ToolOffset::dGeometry,
+      &ToolOffset::dWear};
+  const bool v15 = profile.parameterBit(6000, 3);
+  const OffsetField* layout = v15 ? kSeries15 : kStandard;
+  switch (profile.toolOffsetMemory) {
+    case 'A': // one value per offset, for H and D
+      return series == 0 ? &ToolOffset::hGeometry : nullptr;
+    case 'B': // geometry and wear, shared by H and D
+      return series < 2 ? layout[series] : nullptr;
+    default:
+      return shortForm && series >= 2 && !v15 ? nullptr : layout[series];
+  }
+}
+
+/// The G10 L of a field, for the flattened program.
+int offsetL(OffsetField field) {
+  if (field == &ToolOffset::hGeometry) {
+    return 10;
+  }
+  if (field == &ToolOffset::hWear) {
+    return 11;
+  }
+  return field == &ToolOffset::dGeometry ? 12 : 13;
+}
+
+/// Series `Series` of the tool offsets (short form: #2xxx), offset number
+/// index + 1; beyond the profile's count, or a series the machine does not
+/// have, is PS0115.
+template <int Series, bool ShortForm>
+mbrt_status findToolOffset(mbrt_ctx& ctx, int index, OffsetField* field) {
+  *field = offsetSeries(ctx.profile, Series, ShortForm);
+  if (*field == nullptr) {
+    const int first = ShortForm ? 2001 + Series * 200 : 10001 + Series * 1000;
+    const bool v15Would =
+        ShortForm && Series >= 2 && ctx.profile.toolOffsetMemory == 'C';
+    return raise(ctx, AlarmId::VariableOutOfRange,
+                 fmt::format("#{}: no such tool offset variable with offset "
+                             "memory {}{}",
+                             first + index, ctx.profile.toolOffsetMemory,
+                             v15Would ? " (#2401-#2800 are the D offsets with "
+                                        "parameter 6000#3 V15)"
+                                      : ""));
+  }
   if (index + 1 > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::VariableOutOfRange,
                  fmt::format("tool offset {} (the machine has {})", index + 1,
                              ctx.profile.toolOffsetCount));
   }
-  *out = ctx.toolOffsets[index + 1].*Field;
+  return 0;
+}
+
+template <int Series, bool ShortForm>
+mbrt_status readToolOffset(mbrt_ctx& ctx, int index, Num* out) {
+  OffsetField field = nullptr;
+  if (const mbrt_status status =
+          findToolOffset<Series, ShortForm>(ctx, index, &field)) {
+    return status;
+  }
+  *out = ctx.toolOffsets[index + 1].*field;
   return 0;
 }
 
 /// Offset memory holds least increments, like the work offsets.
-template <double ToolOffset::*Field, int L>
+template <int Series, bool ShortForm>
 mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
-  Num ignored;
-  if (const mbrt_status status = readToolOffset<Field>(ctx, index, &ignored)) {
+  OffsetField field = nullptr;
+  if (const mbrt_status status =
+          findToolOffset<Series, ShortForm>(ctx, index, &field)) {
     return status;
   }
   const double counts = roundToCounts(numeric(value), ctx.scale());
@@ -119,8 +184,8 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
                  fmt::format("tool offset {}", numeric(value)));
   }
   const double units = countsToUnits(static_cast<Counts>(counts), ctx.scale());
-  ctx.toolOffsets[index + 1].*Field = units;
-  flattenToolOffset(ctx, L, index + 1, units);
+  ctx.toolOffsets[index + 1].*field = units;
+  flattenToolOffset(ctx, offsetL(field), index + 1, units);
   return 0;
 }
 
@@ -341,10 +406,12 @@ constexpr std::array kSystemVariables = {
     SysVarRange{1032, 1035, readInputWord, nullptr},
     SysVarRange{1100, 1131, readOutputSignal, writeOutputSignal},
     SysVarRange{1132, 1135, readOutputWord, writeOutputWord},
-    SysVarRange{2001, 2200, readToolOffset<&ToolOffset::hWear>,
-                writeToolOffset<&ToolOffset::hWear, 11>},
-    SysVarRange{2201, 2400, readToolOffset<&ToolOffset::hGeometry>,
-                writeToolOffset<&ToolOffset::hGeometry, 10>},
+    SysVarRange{2001, 2200, readToolOffset<0, true>, writeToolOffset<0, true>},
+    SysVarRange{2201, 2400, readToolOffset<1, true>, writeToolOffset<1, true>},
+    SysVarRange{2401, 2600, readToolOffset<2, true>, writeToolOffset<2, true>,
+                true},
+    SysVarRange{2601, 2800, readToolOffset<3, true>, writeToolOffset<3, true>,
+                true},
     SysVarRange{3000, 3000, readZero, writeMacroAlarm},
     SysVarRange{3001, 3001, readClockMs, writeClockMs},
     SysVarRange{3002, 3002, readClockHours, writeClockHours},
@@ -378,14 +445,14 @@ constexpr std::array kSystemVariables = {
     SysVarRange{5201, 5340, readG54Offset, writeG54Offset},
     SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
                 writeG541Offset<kOffsetStride>},
-    SysVarRange{10001, 10999, readToolOffset<&ToolOffset::hWear>,
-                writeToolOffset<&ToolOffset::hWear, 11>},
-    SysVarRange{11001, 11999, readToolOffset<&ToolOffset::hGeometry>,
-                writeToolOffset<&ToolOffset::hGeometry, 10>},
-    SysVarRange{12001, 12999, readToolOffset<&ToolOffset::dWear>,
-                writeToolOffset<&ToolOffset::dWear, 13>},
-    SysVarRange{13001, 13999, readToolOffset<&ToolOffset::dGeometry>,
-                writeToolOffset<&ToolOffset::dGeometry, 12>},
+    SysVarRange{10001, 10999, readToolOffset<0, false>,
+                writeToolOffset<0, false>},
+    SysVarRange{11001, 11999, readToolOffset<1, false>,
+                writeToolOffset<1, false>},
+    SysVarRange{12001, 12999, readToolOffset<2, false>,
+                writeToolOffset<2, false>},
+    SysVarRange{13001, 13999, readToolOffset<3, false>,
+                writeToolOffset<3, false>},
     SysVarRange{14001, 19988, readG541Offset<MBRT_MAX_AXES>,
                 writeG541Offset<MBRT_MAX_AXES>},
 };
@@ -441,10 +508,18 @@ VarAccess variableAccess(int n) {
     return VarAccess::Missing;
   }
   const rt::SysVarRange* range = rt::findSystemVariable(n);
-  if (range == nullptr) {
+  if (range == nullptr || range->byProfile) {
     return VarAccess::Missing;
   }
   return range->write ? VarAccess::ReadWrite : VarAccess::ReadOnly;
+}
+
+bool dependsOnProfile(int n) {
+  if (n >= kFirstExtendedCommon && n <= kLastExtendedCommon) {
+    return true;
+  }
+  const rt::SysVarRange* range = rt::findSystemVariable(n);
+  return range != nullptr && range->byProfile;
 }
 
 } // namespace mbc

@@ -275,4 +275,36 @@ TEST(RuntimeVariables, InputSignalsFromProfileAndPresets) {
             status(AlarmId::WriteProtectedVariable));
 }
 
+// Which tool offset a variable reads depends on the offset memory type and
+// on 6000#3 V15 (Series 15 numbering: geometry first, D in #2401-#2800).
+TEST(RuntimeVariables, ToolOffsetNumberings) {
+  Machine standard(R"({"tool_offsets": {"3": {"h_geometry": 120.5,
+      "h_wear": -0.02, "d_geometry": 5, "d_wear": 0.01}}})");
+  EXPECT_EQ(standard.read(2003), -0.02);
+  EXPECT_EQ(standard.read(2203), 120.5);
+  mbrt_num value = 0;
+  EXPECT_EQ(mbrt_read_var(standard.ctx(), 2403, &value),
+            status(AlarmId::VariableOutOfRange));
+  Machine v15(R"({"parameters": {"6000": 8}, "tool_offsets": {"3":
+      {"h_geometry": 120.5, "h_wear": -0.02, "d_geometry": 5,
+       "d_wear": 0.01}}})");
+  EXPECT_EQ(v15.read(2003), 120.5);
+  EXPECT_EQ(v15.read(2203), -0.02);
+  EXPECT_EQ(v15.read(2403), 5.0);
+  EXPECT_EQ(v15.read(2603), 0.01);
+  EXPECT_EQ(v15.read(12003), 5.0);
+  Machine b(R"({"tool_offsets": {"memory": "B", "3": {"h_geometry": 120.5,
+      "h_wear": -0.02}}})");
+  EXPECT_EQ(b.read(10003), -0.02);
+  EXPECT_EQ(b.read(11003), 120.5);
+  EXPECT_EQ(mbrt_read_var(b.ctx(), 13003, &value),
+            status(AlarmId::VariableOutOfRange));
+  Machine a(R"({"tool_offsets": {"memory": "A", "3": {"h_geometry": 9.5}}})");
+  EXPECT_EQ(a.read(2003), 9.5);
+  EXPECT_EQ(a.write(10003, 7.25), 0);
+  EXPECT_EQ(a.read(2003), 7.25);
+  EXPECT_EQ(mbrt_read_var(a.ctx(), 2203, &value),
+            status(AlarmId::VariableOutOfRange));
+}
+
 } // namespace mbc::test

@@ -14,4 +14,8 @@ inline constexpr int kLastExtendedCommon = 499;
 /// The access class of #n on the built-in default machine (spec §2, §6).
 VarAccess variableAccess(int n);
 
+/// #n exists on some machines only, as their profile says (#200-#499, the
+/// D offsets #2401-#2800 of 6000#3 V15).
+bool dependsOnProfile(int n);
+
 } // namespace mbc
