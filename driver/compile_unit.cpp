@@ -102,7 +102,7 @@ bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
   if (!loadCalledPrograms(files, load, diags, options, out)) {
     return false;
   }
-  checkUnit(out.unit, diags, SemaOptions{load.machinePath.empty()});
+  checkUnit(out.unit, diags, SemaOptions{load.defaultMachine});
   std::string rendered = renderDiagnostics(diags, load.errors);
   std::fputs(rendered.c_str(), stderr);
   if (load.errors == ErrorMode::Alarm && diags.totalErrors() > 0) {

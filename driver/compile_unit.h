@@ -19,7 +19,10 @@ struct CompiledUnit {
 /// How loadUnit reads the input.
 struct LoadOptions {
   bool checkWarnings = false; // mbc check: the warnings only a review needs
-  std::string machinePath;    // --machine: the checks defer to a profile
+  // The input runs on the built-in default machine: variables only a
+  // profile has get a warning. False with --machine, and for compile and
+  // build, whose code learns its machine when it runs.
+  bool defaultMachine = true;
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
 };

@@ -166,7 +166,8 @@ bool checkOptions(const Options& o, std::string& error) {
 LoadOptions loadOptions(const Options& o) {
   const bool runs = o.command == "run" || o.command == "batch";
   LoadOptions load;
-  load.machinePath = o.run.machinePath;
+  load.defaultMachine = o.run.machinePath.empty() && o.command != "compile" &&
+                        o.command != "build";
   load.errors = o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
   load.includeDirs = o.includeDirs;
   return load;

@@ -1,6 +1,7 @@
 // Output files of `mbc run` (see output_files.h).
 #include "driver/output_files.h"
 
+#include <mbc/sysvars.h>
 #include <mbc/toolpath_json.h>
 #include <mbc/value.h>
 
@@ -105,14 +106,18 @@ bool replaceFile(const std::string& path, const std::string& content) {
 std::string variablesJson(const mbrt_ctx* ctx) {
   std::string json = "{";
   bool first = true;
-  for (int n = 100; n <= 999; ++n) {
-    mbrt_num v;
-    if (!mbrt_peek_common(ctx, n, &v) || isVacant(v)) {
-      continue;
+  const auto add = [&](int from, int to) {
+    for (int n = from; n <= to; ++n) {
+      mbrt_num v;
+      if (!mbrt_peek_common(ctx, n, &v) || isVacant(v)) {
+        continue;
+      }
+      json += fmt::format("{}\"{}\":{}", first ? "" : ",", n, v);
+      first = false;
     }
-    json += fmt::format("{}\"{}\":{}", first ? "" : ",", n, v);
-    first = false;
-  }
+  };
+  add(100, 999);
+  add(kFirstCommon98000, kLastCommon98000);
   json += "}\n";
   return json;
 }

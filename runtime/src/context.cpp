@@ -69,6 +69,7 @@ void loadProfile(mbrt_ctx& ctx) {
   }
   ctx.toolOffsets = profile.toolOffsets;
   ctx.commons.fill(vacant());
+  ctx.commons98000.fill(vacant());
   for (const auto& [number, value] : profile.variables) {
     ctx.commons[number] = value;
   }

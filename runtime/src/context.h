@@ -7,6 +7,7 @@
 #include <mbc/alarm.h>
 #include <mbc/compiled.h>
 #include <mbc/runtime.h>
+#include <mbc/sysvars.h>
 #include <mbc/value.h>
 
 #include <algorithm>
@@ -176,6 +177,9 @@ struct mbrt_ctx {
   // Variables.
   std::vector<mbc::rt::LocalLevel> levels; // back() is the current level
   std::array<mbc::Num, mbc::rt::kCommonEnd> commons{};
+  // #98000-#98499, when the profile has them.
+  std::array<mbc::Num, mbc::kLastCommon98000 - mbc::kFirstCommon98000 + 1>
+      commons98000{};
   // UO000-UO031 (#1132; bits 0-15 are #1100-#1115) and UO100-UO131 (#1133).
   std::array<std::uint32_t, 4> outputWords{}; // UO000-UO031 ... UO300-UO331
   std::array<std::uint32_t, 4> inputWords{};  // UI000-UI031 ... UI300-UI331

@@ -291,6 +291,8 @@ Profile parseTopLevel(const json& root) {
       parseVariables(item, profile);
     } else if (key == "extended_common") {
       profile.extendedCommon = boolean(item, key);
+    } else if (key == "common_98000") {
+      profile.commons98000 = boolean(item, key);
     } else if (key == "limits") {
       parseLimits(item, profile);
     } else if (key == "input_signals") {

@@ -50,6 +50,7 @@ struct Profile {
   std::vector<std::pair<int, double>> variables; // #500..#999 start values
   std::vector<std::pair<int, double>> inputSignals; // #1000..#1035
   bool extendedCommon = false;
+  bool commons98000 = false; // #98000-#98499
   int macroNesting = 5;
   int subprogramNesting = 10;
   int totalNesting = 15;

@@ -189,6 +189,32 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   return 0;
 }
 
+/// #98000-#98499: commons a profile with "common_98000" has.
+mbrt_status findCommon98000(mbrt_ctx& ctx, int index) {
+  if (!ctx.profile.commons98000) {
+    return raise(ctx, AlarmId::VariableOutOfRange,
+                 fmt::format("#{} (a profile with \"common_98000\" has it)",
+                             kFirstCommon98000 + index));
+  }
+  return 0;
+}
+
+mbrt_status readCommon98000(mbrt_ctx& ctx, int index, Num* out) {
+  if (const mbrt_status status = findCommon98000(ctx, index)) {
+    return status;
+  }
+  *out = ctx.commons98000[static_cast<std::size_t>(index)];
+  return 0;
+}
+
+mbrt_status writeCommon98000(mbrt_ctx& ctx, int index, Num value, const char*) {
+  if (const mbrt_status status = findCommon98000(ctx, index)) {
+    return status;
+  }
+  ctx.commons98000[static_cast<std::size_t>(index)] = value;
+  return 0;
+}
+
 /// What the control shows of an alarm or message text.
 std::string messageText(const char* comment) {
   return std::string(trimmedMessage(comment != nullptr ? comment : "")
@@ -455,6 +481,8 @@ constexpr std::array kSystemVariables = {
                 writeToolOffset<3, false>},
     SysVarRange{14001, 19988, readG541Offset<MBRT_MAX_AXES>,
                 writeG541Offset<MBRT_MAX_AXES>},
+    SysVarRange{kFirstCommon98000, kLastCommon98000, readCommon98000,
+                writeCommon98000, true},
 };
 
 const SysVarRange* findSystemVariable(long n) {

@@ -132,6 +132,12 @@ int mbrt_tool_offset_count(const mbrt_ctx* ctx) {
 }
 
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {
+  if (ctx->profile.commons98000 && number >= kFirstCommon98000 &&
+      number <= kLastCommon98000) {
+    *out =
+        ctx->commons98000[static_cast<std::size_t>(number - kFirstCommon98000)];
+    return 1;
+  }
   if (!isCommon(*ctx, number)) {
     return 0;
   }

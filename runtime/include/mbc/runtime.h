@@ -179,8 +179,8 @@ mbrt_status mbrt_preset_var(mbrt_ctx* ctx, double number, mbrt_num value);
 /* ADP[#number]: a local set from a macro argument written without decimal
  * point gets its decimal point back (X10 -> 0.010 -> 10.0). */
 mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
-/* A common variable (#100..#999) without side effects: 1 and *out when the
- * number is a common variable of this machine, else 0. */
+/* A common variable (#100..#999, #98000..#98499) without side effects: 1
+ * and *out when the number is a common variable of this machine, else 0. */
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out);
 /* How many tool offsets the machine has (#10001.. up to #10000 + count). */
 int mbrt_tool_offset_count(const mbrt_ctx* ctx);
