@@ -58,6 +58,11 @@ public:
 
   const CycleData& data() const { return ctx_.modal.cycleData; }
 
+  /// M29 given, or 5200#0 G84: G84 and G74 tap rigidly.
+  bool rigid() const {
+    return ctx_.modal.rigidTapping || ctx_.profile.parameterBit(5200, 0);
+  }
+
   Counts rLevel() const { return data().hasR ? data().r : data().initial; }
 
   Counts returnLevel() const {
@@ -68,6 +73,7 @@ public:
   int down() const { return data().z < rLevel() ? -1 : 1; }
 
   mbrt_status peck(bool toR);
+  mbrt_status rigidPeck(bool toR);
   mbrt_status backBore();
   mbrt_status drill();
 
@@ -113,6 +119,38 @@ mbrt_status Hole::peck(bool toR) {
   return 0;
 }
 
+/// Peck rigid tapping (M29, G84/G74 with Q): every move is the spindle's,
+/// at the feed. High-speed (5200#5 PCP = 0): tap Q, back out d (5213), tap
+/// on. Standard (PCP = 1, toR): tap Q, back out to R, in again to d short of
+/// the depth reached, tap on.
+mbrt_status Hole::rigidPeck(bool toR) {
+  const Counts q = data().q;
+  const Counts d = parameterCounts(ctx_, 5213);
+  const int dir = down();
+  Counts depth = rLevel();
+  while (depth != data().z) {
+    Counts next = depth + dir * q;
+    if ((data().z - next) * dir < 0) {
+      next = data().z;
+    }
+    if (depth != rLevel()) {
+      if (toR) {
+        if (mbrt_status st = feed(rLevel())) {
+          return st;
+        }
+      }
+      if (mbrt_status st = feed(depth - dir * d)) {
+        return st;
+      }
+    }
+    if (mbrt_status st = feed(next)) {
+      return st;
+    }
+    depth = next;
+  }
+  return 0;
+}
+
 /// G87: shift, rapid to R below the hole, shift back, feed up to Z, dwell,
 /// shift, rapid to the initial level, shift back. Always returns to the
 /// initial level.
@@ -144,6 +182,14 @@ mbrt_status Hole::drill() {
       break;
     case 74: // tapping: feed out with the spindle reversed
     case 84:
+      st = rigid() && data().q > 0
+               ? rigidPeck(ctx_.profile.parameterBit(5200, 5))
+               : feed(data().z);
+      if (st == 0) {
+        dwellAtBottom();
+        st = feed(rLevel());
+      }
+      break;
     case 89:
       if ((st = feed(data().z)) == 0) {
         dwellAtBottom();
@@ -197,6 +243,9 @@ void takeDrillingData(mbrt_ctx& ctx, const CycleWords& words, int axis) {
 void changeCycle(mbrt_ctx& ctx, int cycle) {
   if (cycle == ctx.modal.cycle) {
     return;
+  }
+  if (cycle == 0) {
+    ctx.modal.rigidTapping = false; // G80 ends rigid tapping
   }
   if (cycle == 0 || ctx.modal.cycle == 0) {
     ctx.modal.cycleData = CycleData{};

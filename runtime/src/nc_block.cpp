@@ -347,6 +347,10 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
                  fmt::format("more than {} M codes in one block", kMaxMCodes));
   }
   codes.m[codes.mCount++] = static_cast<int>(value);
+  // The rigid tapping M code (5210, M29) makes the next G84/G74 rigid.
+  if (value == ctx.profile.parameter(5210)) {
+    ctx.modal.rigidTapping = true;
+  }
   return 0;
 }
 

@@ -18,7 +18,10 @@ constexpr std::array kParameters = {
     ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift
     ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // G73 retract, G83 gap
-    ParameterSpec{5400, 5400, 0, 255, 0, true},     // #0 RIN, #6 XSC, #7 SCR
+    ParameterSpec{5200, 5200, 0, 255, 0, true},     // #0 G84, #5 PCP: rigid
+    ParameterSpec{5210, 5210, 0, kMaxCode, 29, true}, // rigid tapping M code
+    ParameterSpec{5213, 5213, 0, 1000, 0.1, false},   // rigid peck return
+    ParameterSpec{5400, 5400, 0, 255, 0, true},       // #0 RIN, #6 XSC, #7 SCR
     ParameterSpec{5410, 5410, -360000, 360000, 0, true}, // G68 angle, 0.001 deg
     ParameterSpec{5411, 5411, 0, 999999, 0, true},       // G51 magnification
     ParameterSpec{6000, 6000, 0, 255, 0, true},          // #3 V15
