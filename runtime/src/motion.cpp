@@ -474,15 +474,21 @@ Point3 tipOf(const mbrt_ctx& ctx, const AxisCounts& machine) {
 
 } // namespace
 
-mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words) {
+mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words, double p) {
   constexpr int kSkipCode = 31;
+  if (!(p >= 1.0 && p <= kSkipSignals)) {
+    return raise(
+        ctx, AlarmId::ImproperNcAddress,
+        fmt::format("G31 P{}: the skip signal is P1 to P{}", p, kSkipSignals));
+  }
+  const int signal = static_cast<int>(p);
   if (const mbrt_status status = checkFeed(ctx, kSkipCode)) {
     return status;
   }
   const AxisCounts target = workTarget(ctx, words, ctx.program);
   const AxisCounts machine = workToMachine(ctx, programToWork(ctx, target));
   const std::optional<double> contact = firstContact(
-      ctx.profile.probe, tipOf(ctx, ctx.machine), tipOf(ctx, machine));
+      ctx.profile.probe, tipOf(ctx, ctx.machine), tipOf(ctx, machine), signal);
   mbrt_status status = 0;
   if (contact) {
     AxisCounts stop = ctx.machine;

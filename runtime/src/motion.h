@@ -57,9 +57,10 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
 /// axis words give.
 mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words);
 
-/// G31: a feed move that stops where the probe first touches the profile's
-/// scene, or completes without contact; #5061 takes where it ended.
-mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words);
+/// G31 (P1) to G31 P4: a feed move that stops where the probe first touches
+/// a solid of the profile's scene that gives that skip signal, or completes
+/// without contact; #5061 takes where it ended.
+mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words, double p);
 
 /// G53: rapid to machine coordinates on the axes written (ignored in G91).
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words);

@@ -590,8 +590,10 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   if (block.nonModal == 290) {
     return returnFromReference(ctx, motion);
   }
-  if (block.nonModal == 310) {
-    return motion.axisMask != 0 ? skipMove(ctx, motion) : 0;
+  if (block.nonModal == 310) { // G31 P1-P4: the multi-step skip's signal
+    return motion.axisMask != 0
+               ? skipMove(ctx, motion, block.hasP ? block.p : 1.0)
+               : 0;
   }
   if (block.nonModal == 530) {
     return moveInMachineCoordinates(ctx, motion);

@@ -141,7 +141,10 @@ ProbeShape parseShape(const json& value, const std::string& path) {
   ProbeShape shape;
   shape.kind = *kind;
   for (const auto& [key, item] : value.items()) {
-    if (key != "type" && !parseShapeKey(key, item, child(path, key), shape)) {
+    if (key == "signal") {
+      shape.signal = integer(item, child(path, key), 1, kSkipSignals);
+    } else if (key != "type" &&
+               !parseShapeKey(key, item, child(path, key), shape)) {
       unknownKey(child(path, key));
     }
   }
@@ -171,16 +174,18 @@ ProbeShape parseShape(const json& value, const std::string& path) {
 
 } // namespace
 
-double clearance(const ProbeScene& scene, const Point3& point) {
+double clearance(const ProbeScene& scene, const Point3& point, int signal) {
   double nearest = HUGE_VAL;
   for (const ProbeShape& shape : scene.shapes) {
-    nearest = std::min(nearest, distance(shape, point));
+    if (shape.signal == signal) {
+      nearest = std::min(nearest, distance(shape, point));
+    }
   }
   return nearest - scene.radius;
 }
 
 std::optional<double> firstContact(const ProbeScene& scene, const Point3& from,
-                                   const Point3& to) {
+                                   const Point3& to, int signal) {
   const double total =
       length(to[0] - from[0], to[1] - from[1], to[2] - from[2]);
   double travelled = 0.0;
@@ -189,7 +194,7 @@ std::optional<double> firstContact(const ProbeScene& scene, const Point3& from,
     const Point3 at{from[0] + f * (to[0] - from[0]),
                     from[1] + f * (to[1] - from[1]),
                     from[2] + f * (to[2] - from[2])};
-    const double gap = clearance(scene, at);
+    const double gap = clearance(scene, at, signal);
     if (gap <= kContact) {
       return f;
     }
