@@ -96,7 +96,8 @@ mbrt_status mapArguments(mbrt_ctx& ctx, const mbrt_word* args, size_t count,
     // X10 passes 0.010 mm (spec §5.4); ADP gives the 10 back.
     if (word.kind == MBRT_WORD_INT_LITERAL && scalesLiteral(ctx, word.letter) &&
         !ctx.profile.decimalPointInput) {
-      level.value[local - 1] = word.value / ctx.scale();
+      level.value[local - 1] =
+          word.value / addressCountsPerUnit(ctx, word.letter);
       level.adp_mask |= bit;
     } else {
       level.value[local - 1] = word.value;
@@ -169,6 +170,16 @@ mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
 }
 
 } // namespace
+
+double argumentScale(const mbrt_ctx& ctx, int local) {
+  for (std::size_t i = 0; i < kArgumentLocal.size(); ++i) {
+    const char letter = static_cast<char>('A' + i);
+    if (kArgumentLocal[i] == local && scalesLiteral(ctx, letter)) {
+      return addressCountsPerUnit(ctx, letter);
+    }
+  }
+  return ctx.scale(); // the I, J, K of specification II
+}
 
 mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number) {
   if (ctx.profile.programNumberDigits == 4 &&

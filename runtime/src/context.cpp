@@ -59,12 +59,11 @@ void loadProfile(mbrt_ctx& ctx) {
     ctx.axisIndex[profile.axes[axis] - 'A'] = static_cast<std::int8_t>(axis);
   }
   ctx.modal.inch = profile.inch;
-  const double scale = ctx.scale();
   ctx.workOffsets.assign(kWorkOffsetCount, AxisCounts{});
   for (int index = 0; index < kWorkOffsetCount; ++index) {
     for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
       ctx.workOffsets[index][axis] = static_cast<Counts>(
-          roundToCounts(profile.workOffsets[index][axis], scale));
+          roundToCounts(profile.workOffsets[index][axis], ctx.axisScale(axis)));
     }
   }
   ctx.toolOffsets = profile.toolOffsets;
@@ -401,7 +400,8 @@ void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
   out->axis_count = ctx->axisCount();
   out->axis_names = ctx->profile.axes.c_str();
   for (int axis = 0; axis < ctx->axisCount(); ++axis) {
-    out->box_min[axis] = stats.low[axis] / unit;
-    out->box_max[axis] = stats.high[axis] / unit;
+    const double axisUnit = ctx->isRotary(axis) ? 1.0 : unit; // degrees
+    out->box_min[axis] = stats.low[axis] / axisUnit;
+    out->box_max[axis] = stats.high[axis] / axisUnit;
   }
 }

@@ -27,7 +27,8 @@
 namespace mbc::rt {
 
 inline constexpr int kLocalCount = 33;
-inline constexpr int kCommonEnd = 1000; // commons are #100..#999
+inline constexpr int kCommonEnd = 1000;            // commons are #100..#999
+inline constexpr double kCountsPerDegree = 1000.0; // 0.001 deg (IS-B)
 inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
 inline constexpr std::uint64_t kDefaultMaxOutput = std::uint64_t{1} << 30;
 
@@ -261,6 +262,21 @@ struct mbrt_ctx {
   /// Counts per input unit: 1000 (0.001 mm) or 10000 (0.0001 inch).
   double scale() const { return modal.inch ? 10000.0 : 1000.0; }
 
+  bool isRotary(int axis) const {
+    return (profile.rotaryMask >> axis & 1) != 0;
+  }
+
+  /// Counts per unit of an axis: a rotary axis counts 0.001 degree whatever
+  /// G20/G21.
+  double axisScale(int axis) const {
+    return isRotary(axis) ? mbc::rt::kCountsPerDegree : scale();
+  }
+
+  /// Counts per unit of an axis in the summary's box: mm, or degrees.
+  double boxScale(int axis) const {
+    return isRotary(axis) ? mbc::rt::kCountsPerDegree : countsPerMm();
+  }
+
   int decimals() const { return modal.inch ? 4 : 3; }
 
   /// Counts per mm, for parameters given in mm whatever the input unit.
@@ -307,6 +323,10 @@ mbrt_status raiseOutputLimit(mbrt_ctx& ctx);
 
 /// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
 int parseProgramNumber(const char* name);
+
+/// Counts per unit of the address that sets local `local` (1-33) from a
+/// literal without decimal point: ADP gives the literal back with it.
+double argumentScale(const mbrt_ctx& ctx, int local);
 
 /// PS0074 for a program number the machine cannot have (more than four
 /// digits on a profile with program_number_digits 4).

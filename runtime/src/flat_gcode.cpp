@@ -46,14 +46,21 @@ std::string unitsText(double value, int decimals) {
   return text.find('.') == std::string::npos ? text + '.' : text;
 }
 
+/// A rotary axis counts 0.001 degree whatever G20/G21.
+int axisDecimals(const mbrt_ctx& ctx, int axis) {
+  return axis >= 0 && ctx.isRotary(axis) ? 3 : ctx.decimals();
+}
+
 std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {
+  const int axis = ctx.axisOf(word.letter);
+  const double scale = axis >= 0 ? ctx.axisScale(axis) : ctx.scale();
   const double value = numeric(word.value);
   const double counts =
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
-          : roundToCounts(value, ctx.scale());
+          : roundToCounts(value, scale);
   return fmt::format("{}{}", word.letter,
-                     unitsText(counts / ctx.scale(), ctx.decimals()));
+                     unitsText(counts / scale, axisDecimals(ctx, axis)));
 }
 
 /// G04, G51, G68 and the look-ahead switches: blocks whose coordinate
@@ -161,10 +168,10 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
           ? fmt::format("G10 L2 P{}", offset - kExternalOffset)
           : fmt::format("G10 L20 P{}", offset - kFirstG541Offset + 1);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    data += fmt::format(
-        " {}{}", ctx.profile.axes[axis],
-        unitsText(countsToUnits(ctx.workOffsets[offset][axis], ctx.scale()),
-                  ctx.decimals()));
+    data += fmt::format(" {}{}", ctx.profile.axes[axis],
+                        unitsText(countsToUnits(ctx.workOffsets[offset][axis],
+                                                ctx.axisScale(axis)),
+                                  axisDecimals(ctx, axis)));
   }
   sendData(ctx, data);
 }

@@ -28,8 +28,6 @@ PlaneAxes planeAxes(int plane) {
 
 namespace {
 
-constexpr double kMmPerInch = 25.4;
-
 struct Point {
   double x;
   double y;
@@ -56,32 +54,40 @@ void passTime(mbrt_ctx& ctx, double seconds) {
   ctx.stats.seconds += seconds;
 }
 
+/// How far a move goes: over every axis in input units, a degree counting
+/// as one unit (as FANUC's feed of a move with a rotary axis does), and
+/// along the linear axes alone in mm, for the summary and the rapids.
+struct Travel {
+  double units = 0.0;
+  double mm = 0.0;
+};
+
 /// Feed moves take length / F minutes (G94), 1 / F (G93) or length / (F S)
-/// (G95); rapids length / rapid rate, the rate being in mm/min whatever the
-/// input unit. `timedCounts`: the length F applies to, which for a helix is
-/// the arc in its plane (FANUC: F is the feed along the arc).
-void advanceClock(mbrt_ctx& ctx, double lengthCounts, bool rapid,
-                  double timedCounts) {
-  const double length = timedCounts / ctx.scale();
+/// (G95); rapids the linear length / rapid rate, the rate being in mm/min
+/// whatever the input unit (degrees at the same number when only rotary
+/// axes move). `timed`: the length F applies to, in input units, which for
+/// a helix is the arc in its plane (FANUC: F is the feed along the arc).
+void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid,
+                  double timed) {
   double minutes = 0.0;
   if (rapid) {
     minutes =
-        length * (ctx.modal.inch ? kMmPerInch : 1.0) / ctx.profile.rapidRate;
+        (travel.mm > 0.0 ? travel.mm : travel.units) / ctx.profile.rapidRate;
   } else if (ctx.modal.feedMode == 93) {
     minutes = 1.0 / ctx.modal.feed;
   } else if (ctx.modal.feedMode == 95) {
-    minutes = length / (ctx.modal.feed * ctx.lastWords[kLastSIndex]);
+    minutes = timed / (ctx.modal.feed * ctx.lastWords[kLastSIndex]);
   } else {
-    minutes = length / ctx.modal.feed;
+    minutes = timed / ctx.modal.feed;
   }
   passTime(ctx, minutes * 60.0);
-  const double mm = lengthCounts / ctx.countsPerMm();
-  (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += mm;
+  (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += travel.mm;
 }
 
-/// Widens the toolpath's bounding box (mm) by a workpiece point (counts).
+/// Widens the toolpath's bounding box (mm; degrees on rotary axes) by a
+/// workpiece point (counts).
 void widenBox(mbrt_ctx& ctx, int axis, double counts, bool first) {
-  const double mm = counts / ctx.countsPerMm();
+  const double mm = counts / ctx.boxScale(axis);
   RunStats& stats = ctx.stats;
   stats.low[axis] = first ? mm : std::min(stats.low[axis], mm);
   stats.high[axis] = first ? mm : std::max(stats.high[axis], mm);
@@ -112,9 +118,10 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.axis_count = ctx.axisCount();
   motion.axis_names = ctx.profile.axes.c_str();
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    motion.end[axis] = countsToUnits(work[axis], scale);
-    motion.machine[axis] = countsToUnits(machine[axis], scale);
-    motion.start[axis] = countsToUnits(start[axis], scale);
+    const double axisScale = ctx.axisScale(axis);
+    motion.end[axis] = countsToUnits(work[axis], axisScale);
+    motion.machine[axis] = countsToUnits(machine[axis], axisScale);
+    motion.start[axis] = countsToUnits(start[axis], axisScale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : ctx.modal.feed;
   motion.plane = ctx.modal.plane;
@@ -128,18 +135,6 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.program = ctx.programName();
   motion.cycle = cycle;
   ctx.motionSink.fn(ctx.motionSink.user, &motion);
-}
-
-double distance(const AxisCounts& from, const AxisCounts& to, int axisCount,
-                std::uint32_t skipMask) {
-  double sum = 0.0;
-  for (int axis = 0; axis < axisCount; ++axis) {
-    if ((skipMask >> axis & 1) == 0) {
-      const auto delta = static_cast<double>(to[axis] - from[axis]);
-      sum += delta * delta;
-    }
-  }
-  return std::sqrt(sum);
 }
 
 /// R > 0 takes the arc of at most 180 degrees, R < 0 the longer one; an R
@@ -189,13 +184,25 @@ mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
 }
 
 /// The length of a move of the control point: the path in the workpiece
-/// frame (`path`, counts) combined with what the other axes travel.
-double travel(const mbrt_ctx& ctx, const AxisCounts& machine,
+/// frame (`path`, counts of linear axes) combined with what the other axes
+/// travel.
+Travel travel(const mbrt_ctx& ctx, const AxisCounts& machine,
               std::uint32_t pathAxes, double path) {
-  const double others =
-      distance(ctx.machine, machine, ctx.axisCount(), pathAxes);
+  double linear = 0.0;
+  double rotary = 0.0;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((pathAxes >> axis & 1) == 0) {
+      const auto delta = static_cast<double>(machine[axis] - ctx.machine[axis]);
+      (ctx.isRotary(axis) ? rotary : linear) += delta * delta;
+    }
+  }
   // hypot(0, d) is d exactly; std::hypot is slow enough to show per move.
-  return path == 0.0 ? others : std::hypot(path, others);
+  const double counts =
+      path == 0.0 ? std::sqrt(linear) : std::hypot(path, std::sqrt(linear));
+  const double units = counts / ctx.scale();
+  const double degrees = std::sqrt(rotary) / kCountsPerDegree;
+  return {degrees == 0.0 ? units : std::hypot(units, degrees),
+          counts / ctx.countsPerMm()};
 }
 
 /// The points of an arc farthest along its plane axes, where it passes
@@ -273,7 +280,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   advanceClock(ctx,
                travel(ctx, machine,
                       (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
-               false, arc);
+               false, arc / ctx.scale());
   ctx.program = target;
   const bool turnsClockwise = clockwise != frame.reversed;
   const AxisCounts workStart = machineToWork(ctx, ctx.machine);
@@ -298,12 +305,19 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
     counts = static_cast<Counts>(
         roundHalfAway(static_cast<double>(counts) * factor));
   };
+  // Rotary axes stay in degrees.
   const auto convertAll = [&](AxisCounts& counts) {
-    std::for_each(counts.begin(), counts.end(), convert);
+    for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
+      if (!ctx.isRotary(axis)) {
+        convert(counts[axis]);
+      }
+    }
   };
-  const auto scaleAll = [factor](AxisValues& values) {
-    for (double& value : values) {
-      value *= factor;
+  const auto scaleAll = [&](AxisValues& values) {
+    for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
+      if (!ctx.isRotary(axis)) {
+        values[axis] *= factor;
+      }
     }
   };
   convertAll(ctx.machine);
@@ -366,8 +380,8 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
       return status;
     }
   }
-  const double length = travel(ctx, machine, 0, 0.0);
-  advanceClock(ctx, length, rapid, length);
+  const Travel length = travel(ctx, machine, 0, 0.0);
+  advanceClock(ctx, length, rapid, length.units);
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, cycle);
   return 0;

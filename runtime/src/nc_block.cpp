@@ -96,8 +96,10 @@ double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
   if (letter == 'G') {
     return 10.0;
   }
-  if (ctx.axisOf(letter) >= 0 || isArcCenterLetter(letter) || letter == 'Q' ||
-      letter == 'F') {
+  if (const int axis = ctx.axisOf(letter); axis >= 0) {
+    return ctx.axisScale(axis);
+  }
+  if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F') {
     return ctx.scale();
   }
   return 1.0;
@@ -105,14 +107,16 @@ double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
 
 namespace {
 
-/// An axis or arc word in counts: a literal without decimal point already is
-/// counts (unless 3401#0), everything else is rounded to the increment.
-mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
+/// An axis or arc word in counts of `scale` per unit: a literal without
+/// decimal point already is counts (unless 3401#0), everything else is
+/// rounded to the increment.
+mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, double scale,
+                     Counts* out) {
   const double value = numeric(word.value);
   const double counts =
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
-          : roundToCounts(value, ctx.scale());
+          : roundToCounts(value, scale);
   if (!fitsAddress(counts)) {
     return raise(ctx, AlarmId::TooManyDigits,
                  fmt::format("{}{}", word.letter, value));
@@ -372,16 +376,16 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   if (const int axis = ctx.axisOf(letter); axis >= 0) {
     block.motion.axisMask |= std::uint32_t{1} << axis;
-    return toCounts(ctx, word, &block.motion.axis[axis]);
+    return toCounts(ctx, word, ctx.axisScale(axis), &block.motion.axis[axis]);
   }
   if (letter == 'R') {
     block.motion.hasR = true;
-    return toCounts(ctx, word, &block.motion.r);
+    return toCounts(ctx, word, ctx.scale(), &block.motion.r);
   }
   if (isArcCenterLetter(letter)) {
     const int index = letter - 'I';
     block.motion.centerMask |= std::uint32_t{1} << index;
-    return toCounts(ctx, word, &block.motion.center[index]);
+    return toCounts(ctx, word, ctx.scale(), &block.motion.center[index]);
   }
   if (numeric(word.value) < 0.0 &&
       (letter == 'F' || isWholeNumberAddress(letter))) {
@@ -397,7 +401,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   if (letter == 'Q') {
     block.q.emplace();
-    return toCounts(ctx, word, &*block.q);
+    return toCounts(ctx, word, ctx.scale(), &*block.q);
   }
   const int index = lastWordIndex(letter);
   if (index < 0) {

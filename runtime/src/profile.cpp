@@ -260,6 +260,21 @@ void parseParts(const json& value, Profile& profile) {
   }
 }
 
+/// 1006#0 ROT per axis when the profile gives 1006; otherwise A, B and C
+/// are the rotary axes, as on most machines.
+std::uint32_t rotaryAxes(const Profile& profile) {
+  std::uint32_t mask = 0;
+  const auto rot = profile.axisParameters.find(1006);
+  for (std::size_t axis = 0; axis < profile.axes.size(); ++axis) {
+    const bool rotary = rot != profile.axisParameters.end()
+                            ? (static_cast<long>(rot->second[axis]) & 1) != 0
+                            : std::string_view("ABC").find(
+                                  profile.axes[axis]) != std::string_view::npos;
+    mask |= rotary ? std::uint32_t{1} << axis : 0;
+  }
+  return mask;
+}
+
 Profile parseTopLevel(const json& root) {
   if (!root.is_object()) {
     throw ProfileError("machine profile: the top level must be an object");
@@ -312,6 +327,7 @@ Profile parseTopLevel(const json& root) {
       unknownKey(key);
     }
   }
+  profile.rotaryMask = rotaryAxes(profile);
   return profile;
 }
 

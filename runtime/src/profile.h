@@ -38,6 +38,9 @@ using AxisValues = std::array<double, MBRT_MAX_AXES>;
 
 struct Profile {
   std::string axes = "XYZ";
+  // Bit n: axis n is rotary (1006#0 ROT; by default A, B and C): degrees,
+  // 0.001 degree whatever G20/G21.
+  std::uint32_t rotaryMask = 0;
   bool inch = false;
   double rapidRate = 10000.0; // mm/min
   // The parameters the profile sets (parameters.h has the others' defaults).

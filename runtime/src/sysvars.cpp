@@ -347,7 +347,7 @@ mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
 template <Counts (*Position)(const mbrt_ctx&, int)>
 mbrt_status readPosition(mbrt_ctx& ctx, int axis, Num* out) {
   *out = axis < ctx.axisCount()
-             ? countsToUnits(Position(ctx, axis), ctx.scale())
+             ? countsToUnits(Position(ctx, axis), ctx.axisScale(axis))
              : 0.0;
   return 0;
 }
@@ -377,7 +377,7 @@ Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
 /// written for a machine with more axes still run.
 mbrt_status readOffset(mbrt_ctx& ctx, int offset, int axis, Num* out) {
   *out = axis < ctx.axisCount()
-             ? countsToUnits(ctx.workOffsets[offset][axis], ctx.scale())
+             ? countsToUnits(ctx.workOffsets[offset][axis], ctx.axisScale(axis))
              : 0.0;
   return 0;
 }
@@ -386,7 +386,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
   if (axis >= ctx.axisCount()) {
     return 0;
   }
-  const double counts = roundToCounts(numeric(value), ctx.scale());
+  const double counts = roundToCounts(numeric(value), ctx.axisScale(axis));
   if (!fitsAddress(counts)) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
                  fmt::format("work offset {}", numeric(value)));

@@ -84,11 +84,16 @@ TEST(RuntimeCalls, LiteralsWithoutDecimalPointAreScaled) {
   EXPECT_EQ(m.read(1), 7.0); // A is no axis of this machine
 }
 
+// A literal without decimal point counts the least increment of its
+// address: 0.0001 inch on X, 0.001 degree on the rotary A whatever G20.
 TEST(RuntimeCalls, InchAndFourthAxisScaling) {
   Machine m(R"({"axes": ["X", "Y", "Z", "A"], "units": "inch"})");
   ASSERT_EQ(m.callMacro("O9000", "X10 A7"), 0);
   EXPECT_EQ(m.read(24), 0.001);
-  EXPECT_EQ(m.read(1), 0.0007);
+  EXPECT_EQ(m.read(1), 0.007);
+  mbrt_num value = 0;
+  ASSERT_EQ(mbrt_adp(m.ctx(), 1, &value), 0);
+  EXPECT_EQ(value, 7.0);
 }
 
 TEST(RuntimeCalls, DecimalPointInputKeepsLiterals) {

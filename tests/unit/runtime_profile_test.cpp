@@ -65,7 +65,7 @@ TEST(RuntimeProfile, EveryField) {
   EXPECT_EQ(mbrt_read_var(m.ctx(), 10100, &value),
             status(AlarmId::VariableOutOfRange));
   // 1 inch of rapid at 5000 mm/min.
-  ASSERT_EQ(m.block("G91 G00 B1."), 0);
+  ASSERT_EQ(m.block("G91 G00 X1."), 0);
   EXPECT_EQ(m.read(3001), std::floor(25.4 / 5000.0 * 60000.0));
   for (int level = 1; level <= 4; ++level) {
     ASSERT_EQ(m.callMacro("O9000", ""), 0);
