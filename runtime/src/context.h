@@ -272,6 +272,27 @@ struct mbrt_ctx {
     return isRotary(axis) ? mbc::rt::kCountsPerDegree : scale();
   }
 
+  bool rollsOver(int axis) const {
+    return (profile.rolloverMask >> axis & 1) != 0;
+  }
+
+  /// Counts of one rotation of a rotary axis (1260, 360 degrees unless set).
+  mbc::rt::Counts rotation(int axis) const {
+    const double degrees = profile.axisParameter(1260, axis);
+    return static_cast<mbc::rt::Counts>((degrees > 0.0 ? degrees : 360.0) *
+                                        mbc::rt::kCountsPerDegree);
+  }
+
+  /// A position as the control shows it: within one rotation on an axis
+  /// that rolls over (mbc keeps the turns made, unseen).
+  mbc::rt::Counts shown(int axis, mbc::rt::Counts counts) const {
+    if (!rollsOver(axis)) {
+      return counts;
+    }
+    const mbc::rt::Counts turn = rotation(axis);
+    return (counts % turn + turn) % turn;
+  }
+
   /// Counts per unit of an axis in the summary's box: mm, or degrees.
   double boxScale(int axis) const {
     return isRotary(axis) ? mbc::rt::kCountsPerDegree : countsPerMm();

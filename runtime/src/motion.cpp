@@ -33,13 +33,41 @@ struct Point {
   double y;
 };
 
+/// G90 on an axis that rolls over: the command within one rotation,
+/// reached the shorter way (a half turn goes positive), or with 1008#1 RAB
+/// the way the command's sign says.
+Counts rolloverTarget(const mbrt_ctx& ctx, int axis, Counts start,
+                      Counts command) {
+  const Counts turn = ctx.rotation(axis);
+  Counts delta = ctx.shown(axis, command) - ctx.shown(axis, start);
+  if ((static_cast<long>(ctx.profile.axisParameter(1008, axis)) >> 1 & 1) !=
+      0) {
+    if (command >= 0 && delta < 0) {
+      delta += turn;
+    } else if (command < 0 && delta > 0) {
+      delta -= turn;
+    }
+  } else if (delta > turn / 2) {
+    delta -= turn;
+  } else if (delta <= -turn / 2) {
+    delta += turn;
+  }
+  return start + delta;
+}
+
 AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
                       const AxisCounts& start) {
   AxisCounts target = start;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    if ((words.axisMask >> axis & 1) != 0) {
-      target[axis] = ctx.modal.incremental ? start[axis] + words.axis[axis]
-                                           : words.axis[axis];
+    if ((words.axisMask >> axis & 1) == 0) {
+      continue;
+    }
+    if (ctx.modal.incremental) {
+      target[axis] = start[axis] + words.axis[axis];
+    } else if (ctx.rollsOver(axis)) {
+      target[axis] = rolloverTarget(ctx, axis, start[axis], words.axis[axis]);
+    } else {
+      target[axis] = words.axis[axis];
     }
   }
   return target;
@@ -95,7 +123,8 @@ void widenBox(mbrt_ctx& ctx, int axis, double counts, bool first) {
 
 void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    widenBox(ctx, axis, static_cast<double>(work[axis]), first);
+    widenBox(ctx, axis, static_cast<double>(ctx.shown(axis, work[axis])),
+             first);
   }
 }
 
@@ -119,9 +148,10 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.axis_names = ctx.profile.axes.c_str();
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     const double axisScale = ctx.axisScale(axis);
-    motion.end[axis] = countsToUnits(work[axis], axisScale);
-    motion.machine[axis] = countsToUnits(machine[axis], axisScale);
-    motion.start[axis] = countsToUnits(start[axis], axisScale);
+    motion.end[axis] = countsToUnits(ctx.shown(axis, work[axis]), axisScale);
+    motion.machine[axis] =
+        countsToUnits(ctx.shown(axis, machine[axis]), axisScale);
+    motion.start[axis] = countsToUnits(ctx.shown(axis, start[axis]), axisScale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : ctx.modal.feed;
   motion.plane = ctx.modal.plane;

@@ -12,11 +12,13 @@ constexpr double kMaxCode = 99'999'999.0;
 constexpr std::array kParameters = {
     // 2nd, 3rd and 4th reference positions (G30), machine coordinates, mm.
     ParameterSpec{1241, 1243, -999999, 999999, 0, false, true},
-    ParameterSpec{1006, 1006, 0, 255, 0, true, true}, // #0 ROT: rotary axis
-    ParameterSpec{3401, 3401, 0, 255, 0, true},       // #0 DPI
-    ParameterSpec{3403, 3403, 0, 255, 0, true},       // #5 CIR
-    ParameterSpec{3410, 3410, 0, 1e9, 0.02, false},   // arc radius tolerance
-    ParameterSpec{5001, 5001, 0, 255, 0, true},       // #0 TLC, #1 TLB
+    ParameterSpec{1006, 1006, 0, 255, 0, true, true},     // #0 ROT: rotary axis
+    ParameterSpec{1008, 1008, 0, 255, 0, true, true},     // #0 ROA, #1 RAB
+    ParameterSpec{1260, 1260, 0, 999999, 0, false, true}, // deg per turn
+    ParameterSpec{3401, 3401, 0, 255, 0, true},           // #0 DPI
+    ParameterSpec{3403, 3403, 0, 255, 0, true},           // #5 CIR
+    ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
+    ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift
     ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // G73 retract, G83 gap
     ParameterSpec{5200, 5200, 0, 255, 0, true},     // #0 G84, #5 PCP: rigid

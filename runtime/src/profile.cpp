@@ -328,6 +328,14 @@ Profile parseTopLevel(const json& root) {
     }
   }
   profile.rotaryMask = rotaryAxes(profile);
+  for (std::size_t axis = 0; axis < profile.axes.size(); ++axis) {
+    const bool roa = (static_cast<long>(
+                          profile.axisParameter(1008, static_cast<int>(axis))) &
+                      1) != 0;
+    if (roa && (profile.rotaryMask >> axis & 1) != 0) {
+      profile.rolloverMask |= std::uint32_t{1} << axis;
+    }
+  }
   return profile;
 }
 

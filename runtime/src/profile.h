@@ -41,6 +41,9 @@ struct Profile {
   // Bit n: axis n is rotary (1006#0 ROT; by default A, B and C): degrees,
   // 0.001 degree whatever G20/G21.
   std::uint32_t rotaryMask = 0;
+  // Bit n: rotary axis n rolls over (1008#0 ROA), its positions kept within
+  // one rotation (1260, 360 degrees unless set).
+  std::uint32_t rolloverMask = 0;
   bool inch = false;
   double rapidRate = 10000.0; // mm/min
   // The parameters the profile sets (parameters.h has the others' defaults).

@@ -347,7 +347,8 @@ mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
 template <Counts (*Position)(const mbrt_ctx&, int)>
 mbrt_status readPosition(mbrt_ctx& ctx, int axis, Num* out) {
   *out = axis < ctx.axisCount()
-             ? countsToUnits(Position(ctx, axis), ctx.axisScale(axis))
+             ? countsToUnits(ctx.shown(axis, Position(ctx, axis)),
+                             ctx.axisScale(axis))
              : 0.0;
   return 0;
 }

@@ -212,6 +212,30 @@ TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
   ASSERT_EQ(d.block("G04 X1.5"), 0);
 }
 
+// Rollover (1008#0 ROA): positions within one turn, G90 the shorter way;
+// with 1008#1 RAB the command's sign gives the way. Pure rotary rapids take
+// degrees / rapid rate: the clock tells the way taken.
+TEST(RuntimeNcBlock, RotaryRollover) {
+  Machine shortest(R"({"axes": ["X", "Y", "Z", "A"],
+                       "parameters": {"1008": [0, 0, 0, 1]}})");
+  ASSERT_EQ(shortest.block("G90 G00 A-150."), 0);
+  EXPECT_EQ(shortest.read(5004), 210.0);
+  const double before = shortest.read(3001);
+  ASSERT_EQ(shortest.block("A540."), 0); // 180: 30 degrees back
+  EXPECT_EQ(shortest.read(5004), 180.0);
+  EXPECT_NEAR(shortest.read(3001) - before, 30.0 / 10000.0 * 60000.0, 1.0);
+  Machine bySign(R"({"axes": ["X", "Y", "Z", "A"],
+                     "parameters": {"1008": [0, 0, 0, 3]}})");
+  ASSERT_EQ(bySign.block("G90 G00 A-150."), 0);
+  const double start = bySign.read(3001);
+  ASSERT_EQ(bySign.block("A540."), 0); // 180, the positive way: 330
+  EXPECT_EQ(bySign.read(5004), 180.0);
+  EXPECT_NEAR(bySign.read(3001) - start, 330.0 / 10000.0 * 60000.0, 1.0);
+  Machine none(R"({"axes": ["X", "Y", "Z", "A"]})"); // no rollover
+  ASSERT_EQ(none.block("G90 G00 A540."), 0);
+  EXPECT_EQ(none.read(5004), 540.0);
+}
+
 TEST(RuntimeNcBlock, ReferencePositionNumber) {
   Machine m;
   EXPECT_EQ(m.block("G30 P5 Z0", 6), status(AlarmId::IllegalReferenceReturn));
