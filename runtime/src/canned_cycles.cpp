@@ -72,8 +72,7 @@ public:
   /// Which way the hole goes from R to Z: -1 down, 1 up (G87 goes up).
   int down() const { return data().z < rLevel() ? -1 : 1; }
 
-  mbrt_status peck(bool toR);
-  mbrt_status rigidPeck(bool toR);
+  mbrt_status peck(bool toR, Counts d, bool rapidRetract);
   mbrt_status backBore();
   mbrt_status drill();
 
@@ -86,12 +85,12 @@ private:
   int axis_;
 };
 
-/// G73 (toR false): feed Q, back d (5114) at rapid, feed on. G83 (toR):
-/// feed Q, rapid to R, rapid down to d (5115) short of the depth reached,
-/// feed on.
-mbrt_status Hole::peck(bool toR) {
+/// Cuts Q at a time to Z. Between pecks the tool backs out d (toR false)
+/// or out to R and in again to d short of the depth reached (toR); G73 and
+/// G83 (d: 5114, 5115) at rapid, peck rigid tapping (M29, G84/G74 with Q;
+/// d: 5213, toR by 5200#5 PCP) at the feed, every move being the spindle's.
+mbrt_status Hole::peck(bool toR, Counts d, bool rapidRetract) {
   const Counts q = data().q; // > 0: executeCycleBlock checked
-  const Counts d = parameterCounts(ctx_, toR ? 5115 : 5114);
   const int dir = down();
   Counts depth = rLevel();
   while (depth != data().z) {
@@ -101,45 +100,11 @@ mbrt_status Hole::peck(bool toR) {
     }
     if (depth != rLevel()) {
       if (toR) {
-        if (mbrt_status st = rapid(rLevel())) {
-          return st;
-        }
-        if (mbrt_status st = rapid(depth - dir * d)) {
-          return st;
-        }
-      } else if (mbrt_status st = rapid(depth - dir * d)) {
-        return st;
-      }
-    }
-    if (mbrt_status st = feed(next)) {
-      return st;
-    }
-    depth = next;
-  }
-  return 0;
-}
-
-/// Peck rigid tapping (M29, G84/G74 with Q): every move is the spindle's,
-/// at the feed. High-speed (5200#5 PCP = 0): tap Q, back out d (5213), tap
-/// on. Standard (PCP = 1, toR): tap Q, back out to R, in again to d short of
-/// the depth reached, tap on.
-mbrt_status Hole::rigidPeck(bool toR) {
-  const Counts q = data().q;
-  const Counts d = parameterCounts(ctx_, 5213);
-  const int dir = down();
-  Counts depth = rLevel();
-  while (depth != data().z) {
-    Counts next = depth + dir * q;
-    if ((data().z - next) * dir < 0) {
-      next = data().z;
-    }
-    if (depth != rLevel()) {
-      if (toR) {
-        if (mbrt_status st = feed(rLevel())) {
+        if (mbrt_status st = to(rLevel(), rapidRetract)) {
           return st;
         }
       }
-      if (mbrt_status st = feed(depth - dir * d)) {
+      if (mbrt_status st = to(depth - dir * d, rapidRetract)) {
         return st;
       }
     }
@@ -178,13 +143,14 @@ mbrt_status Hole::drill() {
   switch (cycle) {
     case 73:
     case 83:
-      st = peck(cycle == 83);
+      st = peck(cycle == 83, parameterCounts(ctx_, cycle == 83 ? 5115 : 5114),
+                true);
       break;
     case 74: // tapping: feed out with the spindle reversed
     case 84:
-      st = rigid() && data().q > 0
-               ? rigidPeck(ctx_.profile.parameterBit(5200, 5))
-               : feed(data().z);
+      st = rigid() && data().q > 0 ? peck(ctx_.profile.parameterBit(5200, 5),
+                                          parameterCounts(ctx_, 5213), false)
+                                   : feed(data().z);
       if (st == 0) {
         dwellAtBottom();
         st = feed(rLevel());

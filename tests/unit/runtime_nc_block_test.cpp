@@ -12,6 +12,17 @@
 namespace mbc::test {
 namespace {
 
+/// The block asks for a call of subprogram `program` (M98, M198), `repeat`
+/// times.
+void expectSubprogramCall(Machine& m, const char* block, int program,
+                          long repeat) {
+  ASSERT_EQ(m.block(block), 0) << block;
+  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL) << block;
+  EXPECT_EQ(m.flow().call_kind, MBRT_CALL_SUB) << block;
+  EXPECT_EQ(m.flow().program, program) << block;
+  EXPECT_EQ(m.flow().repeat, repeat) << block;
+}
+
 TEST(RuntimeNcBlock, AbsoluteAndIncrementalMoves) {
   Machine m;
   ASSERT_EQ(m.block("G90 G00 X10. Y-1.25", 7), 0);
@@ -197,11 +208,7 @@ TEST(RuntimeNcBlock, LatheFormsOnAMill) {
 // milliseconds and takes no decimal point.
 TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
   Machine m;
-  ASSERT_EQ(m.block("M198 P2002 L2"), 0);
-  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL);
-  EXPECT_EQ(m.flow().call_kind, MBRT_CALL_SUB);
-  EXPECT_EQ(m.flow().program, 2002);
-  EXPECT_EQ(m.flow().repeat, 2);
+  expectSubprogramCall(m, "M198 P2002 L2", 2002, 2);
   EXPECT_EQ(m.block("M98 P2002 Q30", 4), status(AlarmId::Unsupported));
   EXPECT_EQ(m.report(), "test.nc:4: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
                         "M98 P2002 Q30 (starting a subprogram at a sequence "
@@ -401,20 +408,11 @@ TEST(RuntimeNcBlock, NewRunForgetsTheLastWords) {
 
 TEST(RuntimeNcBlock, SubprogramCallFlow) {
   Machine m;
-  ASSERT_EQ(m.block("M98 P1234 L3"), 0);
-  EXPECT_EQ(m.flow().kind, MBRT_FLOW_CALL);
-  EXPECT_EQ(m.flow().program, 1234);
-  EXPECT_EQ(m.flow().repeat, 3);
+  expectSubprogramCall(m, "M98 P1234 L3", 1234, 3);
   // 8-digit program numbers (the default): P is the program alone.
-  ASSERT_EQ(m.block("M98 P50010"), 0);
-  EXPECT_EQ(m.flow().program, 50010);
-  EXPECT_EQ(m.flow().repeat, 1);
-  ASSERT_EQ(m.block("M98 P2000"), 0);
-  EXPECT_EQ(m.flow().program, 2000);
-  EXPECT_EQ(m.flow().repeat, 1);
-  ASSERT_EQ(m.block("M98 P50010 L2"), 0);
-  EXPECT_EQ(m.flow().program, 50010);
-  EXPECT_EQ(m.flow().repeat, 2);
+  expectSubprogramCall(m, "M98 P50010", 50010, 1);
+  expectSubprogramCall(m, "M98 P2000", 2000, 1);
+  expectSubprogramCall(m, "M98 P50010 L2", 50010, 2);
   ASSERT_EQ(m.block("M98 P2000 L0"), 0);
   EXPECT_EQ(m.flow().kind, MBRT_FLOW_NEXT);
   EXPECT_EQ(m.block("M98", 6), status(AlarmId::ProgramNotFound));
@@ -426,12 +424,8 @@ TEST(RuntimeNcBlock, SubprogramCallFlow) {
 // repeat count when there is no L (spec §5.8); with L, PS0074.
 TEST(RuntimeNcBlock, FourDigitSubprogramCall) {
   Machine m(R"({"program_number_digits": 4})");
-  ASSERT_EQ(m.block("M98 P50010"), 0);
-  EXPECT_EQ(m.flow().program, 10);
-  EXPECT_EQ(m.flow().repeat, 5);
-  ASSERT_EQ(m.block("M98 P10001000"), 0);
-  EXPECT_EQ(m.flow().program, 1000);
-  EXPECT_EQ(m.flow().repeat, 1000);
+  expectSubprogramCall(m, "M98 P50010", 10, 5);
+  expectSubprogramCall(m, "M98 P10001000", 1000, 1000);
   EXPECT_EQ(m.block("M98 P50010 L2", 7), status(AlarmId::IllegalProgramNumber));
   EXPECT_EQ(m.report(), "test.nc:7: alarm PS0074: ILLEGAL PROGRAM NUMBER: "
                         "O50010: this machine has program numbers O1 to O9999 "
