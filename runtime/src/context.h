@@ -279,8 +279,12 @@ struct mbrt_ctx {
   /// Counts of one rotation of a rotary axis (1260, 360 degrees unless set).
   mbc::rt::Counts rotation(int axis) const {
     const double degrees = profile.axisParameter(1260, axis);
-    return static_cast<mbc::rt::Counts>((degrees > 0.0 ? degrees : 360.0) *
-                                        mbc::rt::kCountsPerDegree);
+    const auto turn = static_cast<mbc::rt::Counts>(
+        std::round(degrees * mbc::rt::kCountsPerDegree));
+    // 0 (or less than an increment): a full circle.
+    return turn > 0 ? turn
+                    : static_cast<mbc::rt::Counts>(360.0 *
+                                                   mbc::rt::kCountsPerDegree);
   }
 
   /// A position as the control shows it: within one rotation on an axis
