@@ -194,6 +194,7 @@ void Parser::parseBlock() {
     return;
   }
   b.range.length = tok_.range.begin.offset - b.range.begin.offset;
+  takeAlarm(b); // before the split: a block with an error alarms whole
   splitLeadCodes(b, seqRange);
   pushBlock(b);
   advance();
