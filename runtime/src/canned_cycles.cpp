@@ -212,6 +212,7 @@ void changeCycle(mbrt_ctx& ctx, int cycle) {
   }
   if (cycle == 0) {
     ctx.modal.rigidTapping = false; // G80 ends rigid tapping
+    ctx.modal.seriesFifteenTap = 0;
   }
   if (cycle == 0 || ctx.modal.cycle == 0) {
     ctx.modal.cycleData = CycleData{};

@@ -94,6 +94,7 @@ struct ModalState {
   int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80
   CycleData cycleData;
   bool rigidTapping = false;        // M29 given: G84/G74 tap rigidly, until G80
+  int seriesFifteenTap = 0;         // 842, 843: the cycle is G84.2 / G84.3
   int cuttingMode = 64;             // G61 G62 G63 G64 (no effect here)
   int feedMode = 94;                // G93 G94 G95
   int workOffset = kFirstG54Offset; // index into workOffsets

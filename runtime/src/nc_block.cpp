@@ -264,6 +264,14 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
   }
   if (isCycleCode(tenths)) {
     next.cycle = tenths / 10;
+    next.seriesFifteenTap = 0;
+    return 0;
+  }
+  if (tenths == 842 || tenths == 843) {
+    // The Series 15 format of rigid tapping: G84 and G74 with M29 given.
+    next.cycle = tenths == 842 ? 84 : 74;
+    next.seriesFifteenTap = tenths;
+    next.rigidTapping = true;
     return 0;
   }
   if (isLookAheadCode(tenths)) {

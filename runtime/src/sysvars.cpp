@@ -307,6 +307,9 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 8:
       return ctx.frames.lengthMode;
     case 9:
+      if (modal.seriesFifteenTap != 0) {
+        return modal.seriesFifteenTap / 10.0; // 84.2, 84.3
+      }
       return modal.cycle != 0 ? modal.cycle : 80;
     case 10:
       return modal.returnToR ? 99 : 98;

@@ -96,4 +96,22 @@ TEST(RuntimeCannedCycles, DwellXFollowsDecimalPointInput) {
   EXPECT_EQ(m.read(3001), 2000.0);
 }
 
+// G84.2 / G84.3, the Series 15 format of rigid tapping: G84 / G74 with
+// M29 given, so Q pecks (high-speed, d = 0.1 mm); #4009 reads the code.
+TEST(RuntimeCannedCycles, SeriesFifteenRigidTapping) {
+  Machine m;
+  ASSERT_EQ(m.block("G90 G00 X0 Y0 Z10."), 0);
+  ASSERT_EQ(m.block("G99 G84.2 X10. Z-8. R2. Q5. F500."), 0);
+  EXPECT_EQ(m.read(4009), 84.2);
+  std::vector<double> depths;
+  for (const mbrt_motion& motion : m.motions()) {
+    depths.push_back(motion.end[2]);
+  }
+  EXPECT_EQ(depths, (std::vector<double>{10, 10, 2, -3, -2.9, -8, 2}));
+  ASSERT_EQ(m.block("G80"), 0);
+  EXPECT_EQ(m.read(4009), 80.0);
+  ASSERT_EQ(m.block("G84.3 X20. Z-8. R2. F500."), 0);
+  EXPECT_EQ(m.read(4009), 84.3);
+}
+
 } // namespace mbc::test
