@@ -401,11 +401,7 @@ void Parser::reportUnmodelledCodes(const std::vector<Word>& words) {
     }
     const int code = static_cast<int>(tenths);
     if (const char* name = unmodelledGCode(code)) {
-      diags_.report(DiagKind::UnsupportedGCode, w.range,
-                    code % 10 == 0
-                        ? fmt::format("G{}", code / 10)
-                        : fmt::format("G{}.{}", code / 10, code % 10),
-                    name);
+      diags_.report(DiagKind::UnsupportedGCode, w.range, gCodeText(code), name);
     }
   }
 }

@@ -153,12 +153,12 @@ const GCodeInfo* findGCode(int tenths) {
   return it != kGCodes.end() && it->tenths == tenths ? &*it : nullptr;
 }
 
-std::string gCodeText(int tenths) {
+} // namespace mbc::rt
+
+std::string mbc::gCodeText(int tenths) {
   return tenths % 10 == 0 ? fmt::format("G{}", tenths / 10)
                           : fmt::format("G{}.{}", tenths / 10, tenths % 10);
 }
-
-} // namespace mbc::rt
 
 bool mbc::isFanucGCode(int tenths) {
   return mbc::rt::findGCode(tenths) != nullptr;

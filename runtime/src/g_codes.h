@@ -2,7 +2,7 @@
 // mbc does not execute yet is told apart from one FANUC does not have.
 #pragma once
 
-#include <string>
+#include <mbc/g_codes.h>
 
 namespace mbc::rt {
 
@@ -14,8 +14,5 @@ struct GCodeInfo {
 
 /// The FANUC G code with this number in tenths, or nullptr if there is none.
 const GCodeInfo* findGCode(int tenths);
-
-/// "G28", "G54.1", "G7.5": the code as a program writes it.
-std::string gCodeText(int tenths);
 
 } // namespace mbc::rt

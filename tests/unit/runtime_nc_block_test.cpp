@@ -3,8 +3,6 @@
 // for by M codes.
 #include <mbc/g_codes.h>
 
-#include <fmt/format.h>
-
 #include <map>
 
 #include "runtime_test_support.h"
@@ -151,12 +149,9 @@ TEST(RuntimeNcBlock, TheGCodeTableSaysWhatRuns) {
     if (!isFanucGCode(tenths) || tenths == 650) {
       continue;
     }
-    const std::string code =
-        tenths % 10 == 0 ? fmt::format("G{}", tenths / 10)
-                         : fmt::format("G{}.{}", tenths / 10, tenths % 10);
     const auto extra = words.find(tenths);
     const std::string block =
-        code + (extra != words.end() ? extra->second : "");
+        gCodeText(tenths) + (extra != words.end() ? extra->second : "");
     Machine m;
     const bool stopped = m.block(block) == status(AlarmId::Unsupported);
     EXPECT_EQ(stopped, unmodelledGCode(tenths) != nullptr) << block;

@@ -2,10 +2,15 @@
 // table (a G word that is not one may be a custom G code's macro call).
 #pragma once
 
+#include <string>
+
 namespace mbc {
 
 /// Whether G<tenths / 10>.<tenths % 10> is a G code of a FANUC 0i-MF.
 bool isFanucGCode(int tenths);
+
+/// "G28", "G54.1", "G7.5": the code as a program writes it.
+std::string gCodeText(int tenths);
 
 /// The name of a FANUC G code that mbc does not execute yet (the run stops
 /// with MBC0001 at it), or nullptr for codes it executes and codes FANUC
