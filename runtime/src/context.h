@@ -277,12 +277,11 @@ struct mbrt_ctx {
     return (profile.rolloverMask >> axis & 1) != 0;
   }
 
-  /// Counts of one rotation of a rotary axis (1260, 360 degrees unless set).
+  /// Counts of one rotation of an axis that rolls over (1260).
   mbc::rt::Counts rotation(int axis) const {
-    const double degrees = profile.axisParameter(1260, axis);
     const auto turn = static_cast<mbc::rt::Counts>(
-        std::round(degrees * mbc::rt::kCountsPerDegree));
-    // 0 (or less than an increment): a full circle.
+        std::round(profile.rotationDegrees[axis] * mbc::rt::kCountsPerDegree));
+    // Less than an increment: a full circle, as 0 is.
     return turn > 0 ? turn
                     : static_cast<mbc::rt::Counts>(360.0 *
                                                    mbc::rt::kCountsPerDegree);

@@ -40,8 +40,7 @@ Counts rolloverTarget(const mbrt_ctx& ctx, int axis, Counts start,
                       Counts command) {
   const Counts turn = ctx.rotation(axis);
   Counts delta = ctx.shown(axis, command) - ctx.shown(axis, start);
-  if ((static_cast<long>(ctx.profile.axisParameter(1008, axis)) >> 1 & 1) !=
-      0) {
+  if ((ctx.profile.bySignMask >> axis & 1) != 0) {
     if (command >= 0 && delta < 0) {
       delta += turn;
     } else if (command < 0 && delta > 0) {

@@ -360,7 +360,7 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
   }
   codes.m[codes.mCount++] = static_cast<int>(value);
   // The rigid tapping M code (5210, M29) makes the next G84/G74 rigid.
-  if (value == ctx.profile.parameter(5210)) {
+  if (value == ctx.profile.rigidTappingCode) {
     ctx.modal.rigidTapping = true;
   }
   return 0;
@@ -536,7 +536,8 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
 /// setting) or G50 S (spindle speed limit) would be a scaling cancel and a
 /// move, G99 F0.25 (feed per revolution) the canned cycle's R level and a
 /// crawl of a feed per minute. Until there is a lathe profile they stop the
-/// run. A G99 block with a mill's feed (F150.) is no lathe block.
+/// run. A G99 block with a mill's feed (F150.) is no lathe block. Only
+/// blocks with G codes can be these.
 mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
                              const mbrt_word* words, size_t count) {
   if (block.frames.cancelScaling &&
@@ -552,7 +553,6 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
   constexpr double kLatheFeed[2] = {10.0, 0.4}; // mm, inch per revolution
   if (ctx.modal.returnToR && ctx.modal.cycle == 0 && ctx.feedInBlock &&
       ctx.modal.feed < kLatheFeed[ctx.modal.inch] &&
-      block.gCodes != GCodes::None &&
       std::any_of(words, words + count, isG99)) {
     return raise(ctx, AlarmId::Unsupported,
                  fmt::format("G99 F{}: a lathe's feed per revolution (on a "
@@ -682,7 +682,11 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  if (const mbrt_status status = refuseLatheForms(ctx, block, words, count)) {
+  // Lathe forms need a G code (G50, G99): most blocks have none.
+  if (const mbrt_status status =
+          block.gCodes != GCodes::None
+              ? refuseLatheForms(ctx, block, words, count)
+              : 0) {
     return status;
   }
   bool lengthChanged = false;

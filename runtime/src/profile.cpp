@@ -104,6 +104,8 @@ void parseParameters(const json& value, Profile& profile) {
   profile.decimalPointInput = profile.parameterBit(3401, 0);
   profile.prt = profile.parameterBit(6001, 1);
   profile.nat = profile.parameterBit(6004, 0);
+  profile.v15 = profile.parameterBit(6000, 3);
+  profile.rigidTappingCode = profile.parameter(5210);
   profile.codeCalls = profile.parameterBit(6001, 5) ||
                       profile.parameterBit(6007, 4) ||
                       profile.parameterBit(6007, 5) ||
@@ -328,12 +330,14 @@ Profile parseTopLevel(const json& root) {
     }
   }
   profile.rotaryMask = rotaryAxes(profile);
-  for (std::size_t axis = 0; axis < profile.axes.size(); ++axis) {
-    const bool roa = (static_cast<long>(
-                          profile.axisParameter(1008, static_cast<int>(axis))) &
-                      1) != 0;
-    if (roa && (profile.rotaryMask >> axis & 1) != 0) {
-      profile.rolloverMask |= std::uint32_t{1} << axis;
+  for (int axis = 0; axis < static_cast<int>(profile.axes.size()); ++axis) {
+    const auto bits = static_cast<long>(profile.axisParameter(1008, axis));
+    const std::uint32_t bit = std::uint32_t{1} << axis;
+    if ((bits & 1) != 0 && (profile.rotaryMask & bit) != 0) {
+      profile.rolloverMask |= bit;
+      profile.bySignMask |= (bits & 2) != 0 ? bit : 0;
+      const double degrees = profile.axisParameter(1260, axis);
+      profile.rotationDegrees[axis] = degrees > 0.0 ? degrees : 360.0;
     }
   }
   return profile;

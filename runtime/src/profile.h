@@ -42,8 +42,11 @@ struct Profile {
   // 0.001 degree whatever G20/G21.
   std::uint32_t rotaryMask = 0;
   // Bit n: rotary axis n rolls over (1008#0 ROA), its positions kept within
-  // one rotation (1260, 360 degrees unless set).
+  // one rotation (1260, 360 degrees unless set), and goes the way of the
+  // command's sign rather than the shorter way (1008#1 RAB, bySignMask).
   std::uint32_t rolloverMask = 0;
+  std::uint32_t bySignMask = 0;
+  AxisValues rotationDegrees{}; // one rotation of each axis that rolls over
   bool inch = false;
   double rapidRate = 10000.0; // mm/min
   // The parameters the profile sets (parameters.h has the others' defaults).
@@ -72,6 +75,8 @@ struct Profile {
   bool decimalPointInput = false; // 3401#0 DPI: X10 is 10 mm, not 0.010
   bool prt = false; // 6001#1 PRT: DPRNT drops leading zeros and the sign
   bool nat = false; // 6004#0 NAT: ASIN/ATAN in -90..90 / -180..180
+  bool v15 = false; // 6000#3 V15: tool offset variables as on a Series 15
+  double rigidTappingCode = 29; // 5210: the M code of rigid tapping
   // Some G, M, T, S or B code calls a program (6001#5, 6007#4/#5,
   // 6050-6089): without, NC blocks skip looking for code calls.
   bool codeCalls = false;

@@ -110,7 +110,7 @@ OffsetField offsetSeries(const Profile& profile, int series, bool shortForm) {
   static constexpr OffsetField kSeries15[4] = {
       &ToolOffset::hGeometry, &ToolOffset::hWear, &ToolOffset::dGeometry,
       &ToolOffset::dWear};
-  const bool v15 = profile.parameterBit(6000, 3);
+  const bool v15 = profile.v15;
   const OffsetField* layout = v15 ? kSeries15 : kStandard;
   switch (profile.toolOffsetMemory) {
     case 'A': // one value per offset, for H and D
