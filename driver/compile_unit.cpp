@@ -5,9 +5,8 @@
 #include "driver/program_search.h"
 #include "frontend/parser.h"
 #include "frontend/sema.h"
+#include <mbc/addresses.h>
 #include <mbc/read_file.h>
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -55,7 +54,7 @@ void nameAnonymousProgram(Unit& unit, std::size_t first, int number) {
     Program& p = unit.programs[i];
     if (p.number < 0 && p.name == "MAIN") {
       p.number = number;
-      p.name = fmt::format("O{:04d}", number);
+      p.name = programName(number);
       p.duplicate = false;
     }
   }

@@ -112,7 +112,7 @@ bool Parser::parseProgramHeader() {
       fail();
     }
     p.number = static_cast<int>(tok_.number);
-    p.name = fmt::format("O{:04d}", p.number);
+    p.name = programName(p.number);
     advance();
   }
   p.range = {start.range.begin,

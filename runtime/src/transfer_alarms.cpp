@@ -23,8 +23,7 @@ mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number) {
   if (const mbrt_status status = rt::checkProgramNumber(*ctx, n)) {
     return status;
   }
-  std::string detail = n >= 0 && n < 1e9
-                           ? fmt::format("O{:04d}", static_cast<long>(n))
-                           : fmt::format("O{}", number);
+  std::string detail = n >= 0 && n < 1e9 ? programName(static_cast<int>(n))
+                                         : fmt::format("O{}", number);
   return rt::raise(*ctx, AlarmId::ProgramNotFound, detail);
 }

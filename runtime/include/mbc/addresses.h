@@ -2,6 +2,7 @@
 // runtime alike.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 namespace mbc {
@@ -15,5 +16,12 @@ inline bool isWholeNumberAddress(char letter) {
 /// on 0i-F and 30i-B; a machine profile can keep the standard O1-O9999.
 inline constexpr int kMaxProgramNumber = 99'999'999;
 inline constexpr int kMaxProgramNumber4Digits = 9'999;
+
+/// "O0012", "O80000003": a numbered program's name, at least four digits.
+inline std::string programName(int number) {
+  const std::string digits = std::to_string(number);
+  return "O" + std::string(digits.size() < 4 ? 4 - digits.size() : 0, '0') +
+         digits;
+}
 
 } // namespace mbc
