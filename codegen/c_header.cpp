@@ -17,7 +17,7 @@ std::string cHeader(const ir::Module& module, const std::string& tableName,
       "extern const mbrt_program_table {1};\n",
       guard, tableName);
   for (const ir::Function& f : module.functions) {
-    if (f.number < 0) {
+    if (!hasEntryPoint(f)) {
       continue;
     }
     h += fmt::format(

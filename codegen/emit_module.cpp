@@ -4,6 +4,7 @@
 #include "codegen/emit_module.h"
 
 #include "codegen/emitter.h"
+#include <mbc/addresses.h>
 #include <mbc/runtime.h>
 
 #include <fmt/format.h>
@@ -83,9 +84,9 @@ llvm::Function* emitDispatch(ModuleState& m) {
   llvm::IRBuilder<> b(entry);
   attribute(m, fn, b, nullptr);
   llvm::Value* n = b.CreateUnaryIntrinsic(llvm::Intrinsic::round, p);
-  llvm::Value* valid =
-      b.CreateAnd(b.CreateFCmpOGE(n, llvm::ConstantFP::get(abi.f64, 0)),
-                  b.CreateFCmpOLE(n, llvm::ConstantFP::get(abi.f64, 1e8)));
+  llvm::Value* valid = b.CreateAnd(
+      b.CreateFCmpOGE(n, llvm::ConstantFP::get(abi.f64, 0)),
+      b.CreateFCmpOLE(n, llvm::ConstantFP::get(abi.f64, kMaxCallNumber)));
   b.CreateCondBr(valid, lookup, missing);
   b.SetInsertPoint(lookup);
   llvm::SwitchInst* sw = b.CreateSwitch(b.CreateFPToSI(n, abi.i32), missing);
@@ -213,7 +214,12 @@ llvm::Function* emitResume(ModuleState& m) {
   return fn;
 }
 
-llvm::GlobalVariable* emitTable(ModuleState& m) {
+struct Table {
+  llvm::GlobalVariable* programs; // the rows
+  llvm::GlobalVariable* table;    // the mbrt_program_table of the rows
+};
+
+Table emitTable(ModuleState& m) {
   const Abi& abi = m.abi;
   std::vector<llvm::Constant*> rows;
   for (std::size_t i = 0; i < m.ir.functions.size(); ++i) {
@@ -234,17 +240,17 @@ llvm::GlobalVariable* emitTable(ModuleState& m) {
   if (m.options.aotMain) {
     emitAotMain(m, table);
   }
-  return programs;
+  return {programs, table};
 }
 
 // mbrt_status mbc_O1000(mbrt_ctx*, const mbrt_word*, size_t).
-void emitEntryPoints(ModuleState& m, llvm::GlobalVariable* programs) {
+void emitEntryPoints(ModuleState& m, const Table& table) {
   const Abi& abi = m.abi;
   auto* type =
       llvm::FunctionType::get(abi.i32, {abi.ptr, abi.ptr, abi.i64}, false);
   for (std::size_t i = 0; i < m.ir.functions.size(); ++i) {
     const ir::Function& f = m.ir.functions[i];
-    if (f.number < 0) {
+    if (!hasEntryPoint(f)) {
       continue;
     }
     auto* fn = llvm::Function::Create(type, llvm::GlobalValue::ExternalLinkage,
@@ -252,8 +258,9 @@ void emitEntryPoints(ModuleState& m, llvm::GlobalVariable* programs) {
     fn->addFnAttr(llvm::Attribute::NoUnwind);
     llvm::IRBuilder<> b(llvm::BasicBlock::Create(abi.context, "entry", fn));
     attribute(m, fn, b, &f);
-    llvm::Value* row =
-        b.CreateConstInBoundsGEP2_64(programs->getValueType(), programs, 0, i);
+    b.CreateCall(abi.fn(Rt::mbrt_name_programs), {fn->getArg(0), table.table});
+    llvm::Value* row = b.CreateConstInBoundsGEP2_64(
+        table.programs->getValueType(), table.programs, 0, i);
     b.CreateRet(
         b.CreateCall(abi.fn(Rt::mbrt_run_main),
                      {fn->getArg(0), row, fn->getArg(1), fn->getArg(2)}));
@@ -271,6 +278,10 @@ bool hasUnoptimizedBody(const ir::Module& module) {
     }
   }
   return false;
+}
+
+bool hasEntryPoint(const ir::Function& f) {
+  return f.number >= 0 && !isNamedProgramNumber(f.number);
 }
 
 std::string entryPointName(int number) {
@@ -315,9 +326,9 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
     }
   }
   if (options.home) {
-    llvm::GlobalVariable* programs = detail::emitTable(m);
+    const detail::Table table = detail::emitTable(m);
     if (options.entryPoints) {
-      detail::emitEntryPoints(m, programs);
+      detail::emitEntryPoints(m, table);
     }
   }
   if (m.debug) {

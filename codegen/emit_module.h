@@ -43,6 +43,10 @@ std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,
 /// generator level must be None (optimize.h).
 bool hasUnoptimizedBody(const ir::Module& module);
 
+/// Whether a program gets a C entry point: O-numbered ones do; a program
+/// known by name only is found with mbrt_find_program.
+bool hasEntryPoint(const ir::Function& f);
+
 /// The C name of a numbered program's entry point ("mbc_O1000").
 std::string entryPointName(int number);
 

@@ -51,6 +51,8 @@ extern "C" int mbc_aot_main(int argc, char** argv,
                  o.mainProgram.c_str());
     return 2;
   }
-  return runOnce(o, main->name,
-                 [main](mbrt_ctx* ctx) { return mbrt_run_body(ctx, main); });
+  return runOnce(o, main->name, [main, table](mbrt_ctx* ctx) {
+    mbrt_name_programs(ctx, table);
+    return mbrt_run_body(ctx, main);
+  });
 }

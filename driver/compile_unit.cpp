@@ -5,7 +5,6 @@
 #include "driver/program_search.h"
 #include "frontend/parser.h"
 #include "frontend/sema.h"
-#include <mbc/addresses.h>
 #include <mbc/read_file.h>
 
 #include <algorithm>
@@ -47,14 +46,15 @@ std::vector<std::string> searchDirs(const std::vector<std::string>& files,
   return dirs;
 }
 
-/// A found file without an O number holds the program it is named for, as
-/// a data server's file does.
-void nameAnonymousProgram(Unit& unit, std::size_t first, int number) {
+/// A found file without an O number or name holds the program it is named
+/// for, as a data server's file does.
+void nameAnonymousProgram(Unit& unit, std::size_t first,
+                          const CalledProgram& called) {
   for (std::size_t i = first; i < unit.programs.size(); ++i) {
     Program& p = unit.programs[i];
     if (p.number < 0 && p.name == "MAIN") {
-      p.number = number;
-      p.name = programName(number);
+      p.number = called.number;
+      p.name = called.name;
       p.duplicate = false;
     }
   }
@@ -69,8 +69,8 @@ bool loadCalledPrograms(const std::vector<std::string>& files,
   std::set<std::string> read(files.begin(), files.end());
   for (bool added = true; added;) {
     added = false;
-    for (int number : missingCalledPrograms(out.unit)) {
-      const std::optional<std::string> path = findProgramFile(number, dirs);
+    for (const CalledProgram& called : missingCalledPrograms(out.unit)) {
+      const std::optional<std::string> path = findProgramFile(called, dirs);
       if (!path || !read.insert(*path).second) {
         continue;
       }
@@ -78,7 +78,7 @@ bool loadCalledPrograms(const std::vector<std::string>& files,
       if (!readInto(*path, diags, options, out)) {
         return false;
       }
-      nameAnonymousProgram(out.unit, first, number);
+      nameAnonymousProgram(out.unit, first, called);
       added = true;
     }
   }

@@ -4,9 +4,9 @@
 #include "driver/ir_pipeline.h"
 #include "interp/interpreter.h"
 #include "ir/evaluator.h"
+#include <mbc/addresses.h>
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace mbc::driver {
 
@@ -21,10 +21,7 @@ int findMain(const Unit& unit, const std::string& wanted) {
   }
   for (int i = 0; i < static_cast<int>(unit.programs.size()); ++i) {
     const Program& p = unit.programs[i];
-    bool numberMatch = (wanted[0] == 'O' || wanted[0] == 'o') &&
-                       p.number >= 0 &&
-                       std::atoi(wanted.c_str() + 1) == p.number;
-    if (numberMatch || p.name == wanted) {
+    if (namesProgram(p.name, p.number, wanted)) {
       return i;
     }
   }
@@ -50,6 +47,9 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
                  o.run.mainProgram.c_str());
     return 2;
   }
+  for (const Program& p : cu_.unit.programs) {
+    names_.push_back({p.name.c_str(), p.number, nullptr});
+  }
   start = std::chrono::steady_clock::now();
   if (engine_ != "interp") {
     if (!buildModule(cu_, o, module_) || !optimizeModule(module_, o)) {
@@ -74,6 +74,8 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
 }
 
 mbrt_status PreparedProgram::run(mbrt_ctx* ctx) const {
+  const mbrt_program_table names{names_.data(), names_.size()};
+  mbrt_name_programs(ctx, &names);
   if (jit_) {
     return mbrt_run_body(ctx, &jit_->programs()->programs[mainIndex_]);
   }

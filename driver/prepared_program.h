@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mbc::driver {
 
@@ -38,6 +39,7 @@ private:
   CompiledUnit cu_;
   ir::Module module_;
   std::unique_ptr<codegen::Jit> jit_;
+  std::vector<mbrt_program> names_; // the unit's programs, for traces
   int mainIndex_ = -1;
 };
 

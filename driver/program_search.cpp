@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace mbc::driver {
@@ -45,54 +46,79 @@ bool hasCode(const std::vector<Word>& words, char letter, double value) {
   return false;
 }
 
-/// The programs an NC block calls by P: M98/M198 P (and a 4-digit
+CalledProgram numbered(int number) {
+  return {number, programName(number)};
+}
+
+/// The programs an NC block calls by P or name: M98/M198 P (and a 4-digit
 /// control's reading), G66/G66.1 P.
-void calledByWords(const std::vector<Word>& words, std::set<int>& out) {
+void calledByWords(const std::vector<Word>& words,
+                   std::set<CalledProgram>& out) {
   const Word* p = findWord(words, 'P');
+  if (p != nullptr && !p->calledName.empty()) {
+    out.insert({-1, p->calledName});
+    return;
+  }
   const std::optional<int> number = p ? literal(*p) : std::nullopt;
   if (!number) {
     return;
   }
   if (hasCode(words, 'M', 98) || hasCode(words, 'M', 198)) {
-    out.insert(*number);
+    out.insert(numbered(*number));
     if (*number > kMaxProgramNumber4Digits && !findWord(words, 'L')) {
-      out.insert(*number % (kMaxProgramNumber4Digits + 1));
+      out.insert(numbered(*number % (kMaxProgramNumber4Digits + 1)));
     }
   } else if (hasCode(words, 'G', 66) || hasCode(words, 'G', 66.1)) {
-    out.insert(*number);
+    out.insert(numbered(*number));
   }
 }
 
 } // namespace
 
-std::set<int> missingCalledPrograms(const Unit& unit) {
-  std::set<int> called;
+std::set<CalledProgram> missingCalledPrograms(const Unit& unit) {
+  std::set<CalledProgram> called;
   for (const Program& program : unit.programs) {
     for (const Block& b : program.blocks) {
       const Stmt& s = b.stmt;
-      if (s.kind == StmtKind::MacroCall && s.program &&
-          s.program->kind == ExprKind::Number) {
+      if (s.kind == StmtKind::MacroCall && !s.calledName.empty()) {
+        called.insert({-1, s.calledName});
+      } else if (s.kind == StmtKind::MacroCall && s.program &&
+                 s.program->kind == ExprKind::Number) {
         if (const std::optional<int> number =
                 programNumber(s.program->number)) {
-          called.insert(*number);
+          called.insert(numbered(*number));
         }
       } else if (s.kind == StmtKind::Nc) {
         calledByWords(s.words, called);
       }
     }
   }
-  for (const Program& program : unit.programs) {
-    called.erase(program.number);
-  }
+  std::erase_if(called, [&unit](const CalledProgram& c) {
+    return std::any_of(
+        unit.programs.begin(), unit.programs.end(), [&c](const Program& p) {
+          return c.number >= 0 ? p.number == c.number : p.name == c.name;
+        });
+  });
   return called;
 }
 
 std::optional<std::string>
-findProgramFile(int number, const std::vector<std::string>& dirs) {
-  const std::vector<std::string> stems = {
-      fmt::format("O{}", number),     fmt::format("O{:04d}", number),
-      fmt::format("O{:08d}", number), fmt::format("o{}", number),
-      fmt::format("{}", number),      fmt::format("{:04d}", number)};
+findProgramFile(const CalledProgram& program,
+                const std::vector<std::string>& dirs) {
+  std::vector<std::string> stems;
+  if (program.number >= 0) {
+    const int n = program.number;
+    stems = {fmt::format("O{}", n),     fmt::format("O{:04d}", n),
+             fmt::format("O{:08d}", n), fmt::format("o{}", n),
+             fmt::format("{}", n),      fmt::format("{:04d}", n)};
+  } else {
+    const std::string name = program.name.substr(1, program.name.size() - 2);
+    std::string lower = name;
+    for (char& c : lower) {
+      c = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+    }
+    stems = {name, lower};
+  }
   for (const std::string& dir : dirs) {
     for (const std::string& stem : stems) {
       for (const char* extension : {".nc", ".NC", ""}) {

@@ -1,5 +1,6 @@
 // The program search path: a main program finds the subprograms and macros
-// it calls in files beside it or in -I directories (O1234.nc, 1234.nc...),
+// it calls in files beside it or in -I directories (O1234.nc, 1234.nc,
+// DRILL.nc...),
 // as a control finds them in its memory or on a data server.
 #pragma once
 
@@ -12,15 +13,25 @@
 
 namespace mbc::driver {
 
-/// The numbers of the programs the unit calls with a constant P (G65, G66,
+/// A program a call names: by O number, or by name (`number` -1).
+struct CalledProgram {
+  int number = -1;
+  std::string name; // "O1234" or "<DRILL>"
+
+  auto operator<=>(const CalledProgram&) const = default;
+};
+
+/// The programs the unit calls with a constant P or a name (G65, G66,
 /// G66.1, M98, M198) and does not define. An M98 P of more than four digits
 /// without L also names its low four digits, the program a 4-digit control
 /// calls.
-std::set<int> missingCalledPrograms(const Unit& unit);
+std::set<CalledProgram> missingCalledPrograms(const Unit& unit);
 
-/// The first file in `dirs` named for program `number` (O1234.nc, o1234.nc,
-/// 1234.nc, O00001234.nc, with or without .nc), if any.
+/// The first file in `dirs` named for the program: O1234.nc, o1234.nc,
+/// 1234.nc, O00001234.nc for a number, DRILL.nc or drill.nc for <DRILL>,
+/// with or without .nc.
 std::optional<std::string>
-findProgramFile(int number, const std::vector<std::string>& dirs);
+findProgramFile(const CalledProgram& program,
+                const std::vector<std::string>& dirs);
 
 } // namespace mbc::driver

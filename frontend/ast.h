@@ -59,6 +59,9 @@ struct Word {
   bool bareVariable = false;
   ExprPtr value;
   SourceRange range;
+  // M98 <DRILL>: the P of a call by name; the semantic checks write the
+  // program's number (kFirstNamedProgram...) into `value`.
+  std::string calledName;
 };
 
 struct VarTarget {
@@ -106,6 +109,7 @@ struct Stmt {
   // parser turns into an NC block of their own ahead of the call.
   std::vector<Word> leadCodes;
   ExprPtr program;              // MacroCall P
+  std::string calledName;       // MacroCall by name: G65 <BOLT>
   ExprPtr repeat;               // MacroCall L (may be null)
   std::vector<PrintItem> items; // Dprnt/Bprnt
 };
@@ -125,7 +129,9 @@ struct Block {
 
 struct Program {
   std::string name; // "O1000", "<NAME>" or "MAIN" for an anonymous main
-  int number = -1;  // O number; -1 for named/anonymous programs
+  // O number; a named program's number for calls (kFirstNamedProgram...,
+  // given by the semantic checks); -1 for an anonymous main.
+  int number = -1;
   // A second program of the same name: the control keeps the first (the
   // semantic checks drop this one after reporting it).
   bool duplicate = false;

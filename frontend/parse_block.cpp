@@ -95,6 +95,9 @@ bool Parser::parseProgramHeader() {
   Program p;
   p.file = file_;
   if (tok_.kind == Tok::ProgramName) {
+    if (tok_.text == "<>") {
+      diags_.report(DiagKind::EmptyProgramName, tok_.range);
+    }
     p.name = tok_.text;
     advance();
   } else {

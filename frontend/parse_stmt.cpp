@@ -5,6 +5,7 @@
 #include <mbc/alarm.h>
 #include <mbc/g_codes.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mbc::detail {
@@ -343,9 +344,8 @@ void Parser::parseWords(Stmt& s) {
       misplacedHeader();
     }
     s.words.push_back(parseWord());
-    if (tok_.kind == Tok::ProgramName) { // M98 <NAME>, G65 <NAME>
-      diags_.report(DiagKind::CallByName, tok_.range, tok_.text);
-      fail();
+    if (tok_.kind == Tok::ProgramName) {
+      s.words.push_back(parseCalledName(s));
     }
   }
   reportUnmodelledCodes(s.words);
@@ -406,6 +406,40 @@ void Parser::reportUnmodelledCodes(const std::vector<Word>& words) {
   }
 }
 
+// M98 <DRILL>, M198 <DRILL>, G65 <BOLT> A6., G66 <PECK>: the name in place
+// of P, right after the calling code.
+Word Parser::parseCalledName(const Stmt& s) {
+  const Word& code = s.words.back();
+  const double n =
+      code.value->kind == ExprKind::Number ? code.value->number : -1.0;
+  const bool calls = (code.letter == 'M' && (n == 98 || n == 198)) ||
+                     (code.letter == 'G' && (n == 65 || n == 66 || n == 66.1));
+  const bool hasP = std::any_of(s.words.begin(), s.words.end(),
+                                [](const Word& w) { return w.letter == 'P'; });
+  if (!calls || hasP) {
+    diags_.report(DiagKind::MisplacedProgramName, tok_.range);
+    fail();
+  }
+  if (tok_.text == "<>") {
+    diags_.report(DiagKind::EmptyProgramName, tok_.range);
+    fail();
+  }
+  if (tok_.text.find('/') != std::string::npos) {
+    diags_.report(DiagKind::CallByPath, tok_.range, tok_.text);
+    fail();
+  }
+  Word w;
+  w.letter = 'P';
+  w.kind = WordKind::IntLiteral;
+  w.range = tok_.range;
+  w.value = std::make_unique<Expr>();
+  w.value->kind = ExprKind::Number;
+  w.value->range = tok_.range;
+  w.calledName = tok_.text;
+  advance();
+  return w;
+}
+
 void Parser::finishMacroCall(Stmt& s) {
   s.kind = StmtKind::MacroCall;
   std::vector<Word> args;
@@ -418,6 +452,7 @@ void Parser::finishMacroCall(Stmt& s) {
       s.leadCodes.push_back(std::move(w));
     } else if (w.letter == 'P') {
       s.program = std::move(w.value);
+      s.calledName = std::move(w.calledName);
     } else if (w.letter == 'L') {
       s.repeat = std::move(w.value);
     } else if (w.letter == 'G') {

@@ -54,6 +54,7 @@ private:
   ExprPtr parseBracketCondition(const Token& keyword);
   void parseWords(Stmt& s);
   Word parseWord();
+  Word parseCalledName(const Stmt& s);
   void finishMacroCall(Stmt& s);
   void reportUnmodelledCodes(const std::vector<Word>& words);
 

@@ -1,6 +1,7 @@
 // Semantic checks (see sema.h).
 #include "frontend/sema.h"
 
+#include <mbc/addresses.h>
 #include <mbc/sysvars.h>
 
 #include <cmath>
@@ -208,6 +209,43 @@ void checkWrite(const Stmt& s, DiagnosticEngine& diags) {
   }
 }
 
+/// Programs known by name get numbers above the O numbers, in the order
+/// they are defined, and each call by name its program's number. A name
+/// that nothing defines raises PS0310 when its block runs, as a control
+/// finds no such file.
+void resolveProgramNames(Unit& unit, DiagnosticEngine& diags) {
+  std::map<std::string, int, std::less<>> numbers;
+  for (Program& p : unit.programs) {
+    if (p.name.starts_with('<')) {
+      p.number = kFirstNamedProgram + static_cast<int>(numbers.size());
+      numbers.emplace(p.name, p.number);
+    }
+  }
+  const auto resolve = [&](Block& b, const std::string& name, Expr& p) {
+    if (name.empty()) {
+      return;
+    }
+    const auto it = numbers.find(name);
+    if (it == numbers.end()) {
+      diags.report(DiagKind::ProgramNameNotFound, p.range, name);
+      setAlarm(b, AlarmId::FileNotFound, name);
+      return;
+    }
+    p.number = it->second;
+  };
+  for (Program& p : unit.programs) {
+    for (Block& b : p.blocks) {
+      Stmt& s = b.stmt;
+      if (s.kind == StmtKind::MacroCall && s.program) {
+        resolve(b, s.calledName, *s.program);
+      }
+      for (Word& w : s.words) {
+        resolve(b, w.calledName, *w.value);
+      }
+    }
+  }
+}
+
 } // namespace
 
 int findSequence(const Program& program, int seq, int from) {
@@ -226,6 +264,7 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
   // The parser reported them; the control keeps the first program of a
   // number, and so do the calls.
   std::erase_if(unit.programs, [](const Program& p) { return p.duplicate; });
+  resolveProgramNames(unit, diags);
   for (Program& p : unit.programs) {
     matchLoops(p, diags);
     checkSequences(p, diags);

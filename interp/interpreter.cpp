@@ -3,6 +3,7 @@
 #include "interp/interpreter.h"
 
 #include "frontend/sema.h"
+#include <mbc/addresses.h>
 
 #include <cmath>
 
@@ -20,7 +21,7 @@ Interpreter::Interpreter(const Unit& unit, const SourceManager& sources,
 
 int Interpreter::findProgram(double number) const {
   double n = roundHalfAway(number);
-  if (n < 0 || n > 1e8) {
+  if (n < 0 || n > kMaxCallNumber) {
     return -1;
   }
   auto it = byNumber_.find(static_cast<int>(n));

@@ -4,6 +4,7 @@
 #include "ir/evaluator.h"
 
 #include "ir/evaluator_impl.h"
+#include <mbc/addresses.h>
 
 #include <fmt/format.h>
 
@@ -31,7 +32,7 @@ mbrt_status Evaluator::run(int mainIndex) {
 
 int Evaluator::findProgram(double number) const {
   double n = roundHalfAway(number);
-  if (n < 0 || n > 1e8) {
+  if (n < 0 || n > kMaxCallNumber) {
     return -1;
   }
   auto it = byNumber_.find(static_cast<int>(n));

@@ -4,6 +4,7 @@
 #include "ir/ir_parser.h"
 
 #include "ir/ir_parse_internal.h"
+#include <mbc/addresses.h>
 
 #include <fmt/format.h>
 
@@ -265,9 +266,9 @@ void FunctionParser::header() {
     f_.name = c_.word("a function name");
   }
   if (c_.accept('#')) {
-    std::int64_t n = c_.integer("an O number");
-    if (n < 0 || n > 99999999) {
-      c_.fail("O number out of range");
+    std::int64_t n = c_.integer("a program number");
+    if (n < 0 || n > kMaxCallNumber) {
+      c_.fail("program number out of range");
     }
     f_.number = static_cast<int>(n);
   }

@@ -183,7 +183,7 @@ double argumentScale(const mbrt_ctx& ctx, int local) {
 
 mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number) {
   if (ctx.profile.programNumberDigits == 4 &&
-      number > kMaxProgramNumber4Digits) {
+      number > kMaxProgramNumber4Digits && !isNamedProgramNumber(number)) {
     return raise(ctx, AlarmId::IllegalProgramNumber,
                  fmt::format("O{}: this machine has program numbers O1 to "
                              "O{} (profile program_number_digits)",

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -210,6 +211,8 @@ struct mbrt_ctx {
   int subDepth = 0;
   std::string mainProgram;
   int mainProgramNumber = 0;
+  /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
+  std::map<int, std::string> programNames;
 
   // Machine state.
   mbc::rt::ModalState modal;

@@ -470,7 +470,7 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   double repeat = block.hasL ? block.l : 1.0;
   constexpr double kRepeatUnit = kMaxProgramNumber4Digits + 1.0;
   if (ctx.profile.programNumberDigits == 4 && !block.hasL &&
-      program > kMaxProgramNumber4Digits) {
+      program > kMaxProgramNumber4Digits && !isNamedProgramNumber(program)) {
     repeat = std::floor(program / kRepeatUnit);
     program = std::fmod(program, kRepeatUnit);
   }

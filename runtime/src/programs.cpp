@@ -2,7 +2,7 @@
 // M98, with L repetitions) and running one as the main program. The IR
 // evaluator runs its calls through mbrt_run_call too, so every engine
 // repeats, nests and returns alike.
-#include <cstring>
+#include <mbc/addresses.h>
 
 #include "context.h"
 
@@ -11,18 +11,24 @@ const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
   if (table == nullptr) {
     return nullptr;
   }
-  if (number < 0 && name != nullptr) {
-    const int named = mbc::rt::parseProgramNumber(name); // "O12" -> 12
-    number = named > 0 ? named : -1;
-  }
   for (size_t i = 0; i < table->count; ++i) {
     const mbrt_program& p = table->programs[i];
-    if ((number >= 0 && p.number == number) ||
-        (number < 0 && name != nullptr && std::strcmp(p.name, name) == 0)) {
+    if (number >= 0
+            ? p.number == number
+            : name != nullptr && mbc::namesProgram(p.name, p.number, name)) {
       return &p;
     }
   }
   return nullptr;
+}
+
+void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table) {
+  for (size_t i = 0; table != nullptr && i < table->count; ++i) {
+    const mbrt_program& p = table->programs[i];
+    if (mbc::isNamedProgramNumber(p.number)) {
+      ctx->programNames[p.number] = p.name;
+    }
+  }
 }
 
 mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,

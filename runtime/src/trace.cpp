@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <climits>
+
 #include "context.h"
 
 using namespace mbc;
@@ -15,10 +17,39 @@ using namespace mbc::rt;
 
 namespace {
 
-void appendWords(std::string& out, const mbrt_word* words, size_t count) {
+/// The name a call by name was written with, for the number it carries.
+const std::string* calledName(const mbrt_ctx& ctx, mbrt_num value) {
+  const double v = numeric(value);
+  if (!isNamedProgramNumber(v) || v > INT_MAX) {
+    return nullptr;
+  }
+  const auto it = ctx.programNames.find(static_cast<int>(v));
+  return it == ctx.programNames.end() ? nullptr : &it->second;
+}
+
+/// Whether the block's P names a program: M98, M198, G66, G66.1.
+bool callsByP(const mbrt_word* words, size_t count) {
   for (size_t i = 0; i < count; ++i) {
-    out += fmt::format("{}{}{}", out.empty() ? "" : " ", words[i].letter,
-                       words[i].value);
+    const double v = numeric(words[i].value);
+    if ((words[i].letter == 'M' && (v == 98 || v == 198)) ||
+        (words[i].letter == 'G' && (v == 66 || v == 66.1))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void appendWords(const mbrt_ctx& ctx, std::string& out, const mbrt_word* words,
+                 size_t count) {
+  const bool call = callsByP(words, count);
+  for (size_t i = 0; i < count; ++i) {
+    out += out.empty() ? "" : " ";
+    const std::string* name = call && words[i].letter == 'P'
+                                  ? calledName(ctx, words[i].value)
+                                  : nullptr;
+    out += name != nullptr
+               ? *name
+               : fmt::format("{}{}", words[i].letter, words[i].value);
   }
 }
 
@@ -60,7 +91,7 @@ void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
     return;
   }
   std::string text = head != nullptr ? head : "";
-  appendWords(text, words, count);
+  appendWords(*ctx, text, words, count);
   mbrt_trace(ctx, text.c_str());
 }
 
@@ -69,7 +100,10 @@ void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
   if (ctx->traceSink.fn == nullptr) {
     return;
   }
-  const std::string head =
-      fmt::format("G65 P{} L{}", numeric(program), numeric(repeat));
+  const std::string* name = calledName(*ctx, program);
+  const std::string head = fmt::format(
+      "G65 {} L{}",
+      name != nullptr ? *name : fmt::format("P{}", numeric(program)),
+      numeric(repeat));
   mbrt_trace_words(ctx, head.c_str(), words, count);
 }

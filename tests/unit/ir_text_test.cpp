@@ -60,7 +60,7 @@ b5:
   unreachable
 }
 
-func @<DRILL_CYCLE> "lib.nc" {
+func @<DRILL_CYCLE> #100000000 "lib.nc" {
 b0:
   begin 2
   %0 = ldvar #26

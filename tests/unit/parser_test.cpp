@@ -2,6 +2,7 @@
 // the diagnostics of classic mistakes.
 #include "frontend/parser.h"
 #include "frontend/sema.h"
+#include <mbc/addresses.h>
 
 #include <gtest/gtest.h>
 
@@ -192,6 +193,31 @@ TEST(Sema, NestedLoopErrorsStopAtTheLimitWithoutStrayNotes) {
       EXPECT_EQ(d.notes.size(), 1u) << p->text;
     }
   }
+}
+
+// Named programs get numbers above the O numbers, in definition order, and
+// each call by name its program's number; a name nothing defines makes its
+// block raise PS0310.
+TEST(Sema, CallsByNameGetTheirProgramsNumbers) {
+  auto p = parse("O80000001\nM98<FACE>L2\nG65<BORE>D30.\nG66<PECK>Z-5.\n"
+                 "M98<GONE>\nM30\n<BORE>\nM99\n<FACE>\nM99\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  const auto& programs = p->unit.programs;
+  ASSERT_EQ(programs.size(), 3u);
+  EXPECT_EQ(programs[1].number, kFirstNamedProgram);
+  EXPECT_EQ(programs[2].number, kFirstNamedProgram + 1);
+  const auto& b = programs[0].blocks;
+  const Word& face = b[0].stmt.words.at(1);
+  EXPECT_EQ(face.letter, 'P');
+  EXPECT_EQ(face.calledName, "<FACE>");
+  EXPECT_EQ(face.value->number, kFirstNamedProgram + 1);
+  ASSERT_EQ(b[1].stmt.kind, StmtKind::MacroCall);
+  EXPECT_EQ(b[1].stmt.program->number, kFirstNamedProgram);
+  EXPECT_EQ(b[1].alarm, AlarmId::None);
+  EXPECT_EQ(b[2].alarm, AlarmId::FileNotFound); // <PECK>
+  EXPECT_EQ(b[3].alarm, AlarmId::FileNotFound); // <GONE>
+  EXPECT_EQ(b[3].alarmDetail, "<GONE>");
+  EXPECT_EQ(p->diags.warningCount(), 2) << p->text;
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // Compiled programs through the C ABI: program tables, calls with repeats
 // and M99 P, running a program as the main one, reset, block skip switches
 // and the storage compiled code addresses directly.
+#include <mbc/addresses.h>
 #include <mbc/arith.h>
 
 #include <cmath>
@@ -31,16 +32,55 @@ mbrt_status stoppingBody(mbrt_ctx* ctx, void*, mbrt_flow*) {
   return MBRT_STOP;
 }
 
-const mbrt_program kPrograms[] = {{"O0012", 12, countingBody},
-                                  {"<CYCLE>", -1, stoppingBody}};
+const mbrt_program kPrograms[] = {
+    {"O0012", 12, countingBody}, {"<CYCLE>", kFirstNamedProgram, stoppingBody}};
 const mbrt_program_table kTable = {kPrograms, 2};
 
 TEST(RuntimePrograms, FindsByNumberAndName) {
   EXPECT_EQ(mbrt_find_program(&kTable, 12, nullptr), &kPrograms[0]);
   EXPECT_EQ(mbrt_find_program(&kTable, -1, "O12"), &kPrograms[0]);
+  EXPECT_EQ(mbrt_find_program(&kTable, -1, "o0012"), &kPrograms[0]);
   EXPECT_EQ(mbrt_find_program(&kTable, -1, "<CYCLE>"), &kPrograms[1]);
+  EXPECT_EQ(mbrt_find_program(&kTable, -1, "cycle"), &kPrograms[1]);
+  EXPECT_EQ(mbrt_find_program(&kTable, kFirstNamedProgram, nullptr),
+            &kPrograms[1]);
   EXPECT_EQ(mbrt_find_program(&kTable, 13, nullptr), nullptr);
+  EXPECT_EQ(mbrt_find_program(&kTable, -1, "O12X"), nullptr);
+  EXPECT_EQ(mbrt_find_program(&kTable, -1, "O99999999999"), nullptr);
   EXPECT_EQ(mbrt_find_program(&kTable, -1, "MAIN"), nullptr);
+}
+
+// A call by name carries its program's number; the trace shows the name.
+TEST(RuntimePrograms, TracesCallsByTheirNames) {
+  Machine m;
+  std::string trace;
+  mbrt_set_trace_sink(
+      m.ctx(),
+      [](void* user, const char* data, size_t size) {
+        static_cast<std::string*>(user)->append(data, size);
+      },
+      &trace);
+  mbrt_name_programs(m.ctx(), &kTable);
+  ASSERT_EQ(m.block("M98 P100000000 L2", 7), 0);
+  EXPECT_EQ(m.flow().program, kFirstNamedProgram);
+  EXPECT_EQ(m.flow().repeat, 2);
+  ASSERT_EQ(m.block("G4 P100000000", 8), 0); // no call: a time
+  mbrt_trace_call(m.ctx(), kFirstNamedProgram, 1, nullptr, 0);
+  EXPECT_EQ(trace, "test.nc:7: M98 <CYCLE> L2\n"
+                   "test.nc:8: G4 P100000000\n"
+                   "test.nc:8: G65 <CYCLE> L1\n");
+}
+
+// A 4-digit control reads a long M98 P as repeats and program, but no
+// packed P reaches a named program's number.
+TEST(RuntimePrograms, NamedProgramsPassThe4DigitRules) {
+  Machine m(R"({"program_number_digits": 4})");
+  ASSERT_EQ(m.block("M98 P100000000"), 0);
+  EXPECT_EQ(m.flow().program, kFirstNamedProgram);
+  EXPECT_EQ(m.flow().repeat, 1);
+  ASSERT_EQ(m.block("M98 P20012"), 0);
+  EXPECT_EQ(m.flow().program, 12);
+  EXPECT_EQ(m.flow().repeat, 2);
 }
 
 TEST(RuntimePrograms, CallRepeatsWithArgumentsAndLevels) {

@@ -288,7 +288,8 @@ typedef mbrt_status (*mbrt_body_fn)(mbrt_ctx* ctx, void* user,
 
 typedef struct mbrt_program {
   const char* name; /* "O1000", "<NAME>" or "MAIN" */
-  int number;       /* O number, -1 for named and anonymous programs */
+  int number;       /* O number; from 100000000 up for named programs (calls by
+                     * name carry it); -1 for an anonymous main program */
   mbrt_body_fn body;
 } mbrt_program;
 
@@ -298,10 +299,15 @@ typedef struct mbrt_program_table {
   size_t count;
 } mbrt_program_table;
 
-/* The program with this number or name ("O1000" also finds number 1000);
- * NULL when there is none. */
+/* The program with this number or name ("O1000" also finds number 1000,
+ * "DRILL" finds <DRILL>); NULL when there is none. */
 const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
                                       int number, const char* name);
+
+/* Tells the context the names of the table's programs called by name, so
+ * that traces show `M98 <DRILL>` rather than the number the call carries.
+ * Entry points and `mbc` call it before a run; the names are copied. */
+void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table);
 
 /* A call of `body` (kind: mbrt_call_kind), `repeat` times (none when <= 0):
  * each time mbrt_call, the body, the return; an M99 P stops the repetitions
