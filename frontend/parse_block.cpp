@@ -164,9 +164,6 @@ void Parser::parseBlock() {
             tok_.number <= 9) {
           b.skipLevel = static_cast<int>(tok_.number);
           advance();
-        } else if (tok_.kind == Tok::Hash) {
-          diags_.report(DiagKind::VariableNotAllowedHere, tok_.range, "/");
-          fail();
         }
       }
       if (tok_.kind == Tok::Letter && tok_.text == "N" && b.seq < 0) {
