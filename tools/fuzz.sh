@@ -17,20 +17,22 @@ status=0
 for target in frontend pipeline profile; do
   corpus=$build/fuzz-corpus/$target
   mkdir -p "$corpus"
+  # The seeds are copied: libFuzzer writes into the corpus folders it is
+  # given, and the source tree must never receive its inputs.
   if [ "$target" = profile ]; then
     cp -n "$root"/tests/programs/*.machine.json "$root"/tests/fuzz/profiles/* \
       "$corpus"/ 2>/dev/null
-    seeds=()
     dict=()
   else
-    seeds=("$root/tests/programs" "$root/tests/diag" "$root/tests/seeds")
+    cp -n "$root"/tests/programs/*.nc "$root"/tests/diag/*.nc \
+      "$root"/tests/seeds/*.nc "$corpus"/ 2>/dev/null
     dict=(-dict="$root/tests/fuzz/macro_b.dict")
   fi
   echo "== fuzz_$target: $seconds s =="
   if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" \
       -timeout=10 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 \
       -artifact_prefix="$crashes/$target-" "${dict[@]}" "$corpus" \
-      "${seeds[@]}" 2>"$build/fuzz-$target.log"; then
+      2>"$build/fuzz-$target.log"; then
     tail -40 "$build/fuzz-$target.log"
     echo "fuzz_$target: FAILED, inputs in $crashes"
     status=1
