@@ -1,6 +1,8 @@
 // LLVM types and declarations of the runtime's C ABI (see abi.h).
 #include "codegen/abi.h"
 
+#include <mbc/limits.h>
+
 #include <llvm/Config/llvm-config.h>
 #include <llvm/IR/LLVMContext.h>
 
@@ -59,7 +61,7 @@ Abi::Abi(llvm::Module& m)
   flow = llvm::StructType::create(
       context, {i32, i32, i64, i32, f64, i32, i32, ptr, i64}, "mbrt_flow");
   level = llvm::StructType::create(
-      context, {llvm::ArrayType::get(f64, 33), i64}, "mbrt_level");
+      context, {llvm::ArrayType::get(f64, kLocalCount), i64}, "mbrt_level");
   blockState = llvm::StructType::create(context, {ptr, i32, i32, i64, i64},
                                         "mbrt_block_state");
   program = llvm::StructType::create(context, {ptr, i32, ptr}, "mbrt_program");

@@ -4,25 +4,12 @@
 // runtime calls (ir/evaluator_ops.cpp does the same one by one).
 #include "codegen/emitter.h"
 #include <mbc/alarm.h>
+#include <mbc/limits.h>
 #include <mbc/runtime.h>
 
 namespace mbc::codegen::detail {
 
-namespace {
-
-constexpr int kLocalCount = 33;
-
-bool isLocal(std::int64_t n) {
-  return n >= 1 && n <= kLocalCount;
-}
-
-// Commons every machine has; #200..#499 depend on the profile and go
-// through the runtime.
-bool isFixedCommon(std::int64_t n) {
-  return (n >= 100 && n <= 199) || (n >= 500 && n <= 999);
-}
-
-} // namespace
+namespace {} // namespace
 
 bool isDirectVariable(std::int64_t n) {
   return isLocal(n) || isFixedCommon(n);
@@ -175,15 +162,18 @@ IndirectCases classify(llvm::IRBuilder<>& b, const Abi& abi, llvm::Value* x) {
   llvm::Value* r = b.CreateUnaryIntrinsic(llvm::Intrinsic::round, x);
   llvm::Value* small =
       b.CreateFCmpOLT(b.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, r),
-                      llvm::ConstantFP::get(abi.f64, 1e9));
+                      llvm::ConstantFP::get(abi.f64, kBeyondAnyVariable));
   llvm::Value* n = b.CreateSelect(small, b.CreateFPToSI(r, abi.i64),
                                   llvm::ConstantInt::get(abi.i64, -1));
   auto within = [&](std::int64_t lo, std::int64_t count) {
     return b.CreateICmpULT(b.CreateSub(n, llvm::ConstantInt::get(abi.i64, lo)),
                            llvm::ConstantInt::get(abi.i64, count));
   };
-  return {n, within(1, kLocalCount),
-          b.CreateOr(within(100, 100), within(500, 500))};
+  // #200..#499 depend on the profile and go through the runtime.
+  return {n, within(kFirstLocal, kLocalCount),
+          b.CreateOr(within(kFirstCommon, kLastCommon - kFirstCommon + 1),
+                     within(kFirstNonvolatile,
+                            kLastNonvolatile - kFirstNonvolatile + 1))};
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 // into this program through the IR's landing); ir/evaluator.cpp's resume
 // and jumpToSeq are the reference.
 #include "codegen/emitter.h"
+#include <mbc/limits.h>
 #include <mbc/runtime.h>
 
 #include <set>
@@ -24,8 +25,9 @@ llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
                                                     llvm::Value* number,
                                                     std::size_t offset) {
   llvm::Value* n = roundHalfAway(number);
-  llvm::Value* inRange = b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
-                                      b_.CreateFCmpOLE(n, constant(99999)));
+  llvm::Value* inRange =
+      b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
+                   b_.CreateFCmpOLE(n, constant(kMaxSequenceNumber)));
   llvm::Value* seq = b_.CreateSelect(inRange, b_.CreateFPToSI(n, abi_.i32),
                                      llvm::ConstantInt::get(abi_.i32, 0));
   llvm::BasicBlock* missing = newBlock("noseq");

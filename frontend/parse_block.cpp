@@ -174,7 +174,7 @@ void Parser::parseBlock() {
           fail();
         }
         if (tok_.kind != Tok::Number || tok_.hasDecimal || tok_.number < 1 ||
-            tok_.number > 99999) {
+            tok_.number > kMaxSequenceNumber) {
           diags_.report(DiagKind::ExpectedSequenceNumber, n.range);
           fail();
         }

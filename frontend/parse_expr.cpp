@@ -2,6 +2,7 @@
 // then * / AND MOD, then + - OR XOR, then one comparison. AND/OR/XOR are
 // bitwise on numbers and logical on conditions.
 #include "frontend/parser.h"
+#include <mbc/limits.h>
 
 #include <cmath>
 
@@ -277,7 +278,8 @@ ExprPtr Parser::parseVariable(int depth) {
     e->kind = ExprKind::Var;
     // A fractional number is rounded: #0.5 is #1 (spec §2.2).
     double n = std::round(tok_.number);
-    e->var = n > 1e9 ? 1000000000 : static_cast<int>(n);
+    e->var = n >= kBeyondAnyVariable ? static_cast<int>(kBeyondAnyVariable)
+                                     : static_cast<int>(n);
     e->range = {hash.range.begin, tok_.range.begin.offset + tok_.range.length -
                                       hash.range.begin.offset};
     advance();

@@ -235,7 +235,7 @@ int Parser::parseLoopNumber(const Token& keyword) {
     fail();
   }
   int id = tok_.number > 99 ? 99 : static_cast<int>(tok_.number);
-  if (id < 1 || id > 3) {
+  if (id < 1 || id > kMaxLoopNumber) {
     diags_.report(DiagKind::LoopNumberRange, tok_.range, tok_.text);
   }
   advance();

@@ -37,8 +37,9 @@ void matchLoops(Program& p, DiagnosticEngine& diags) {
     Block& b = p.blocks[i];
     Stmt& s = b.stmt;
     if (s.kind == StmtKind::While) {
-      if (open.size() == 3) {
-        setAlarm(b, diags.report(DiagKind::LoopNesting, s.range, 4));
+      if (open.size() == static_cast<std::size_t>(kMaxLoopNesting)) {
+        setAlarm(b, diags.report(DiagKind::LoopNesting, s.range,
+                                 kMaxLoopNesting + 1));
       }
       // The innermost open loop of that number is the one to name, and
       // stopping there keeps thousands of nested WHILEs linear.
@@ -126,7 +127,7 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
   }
   const double written = negative ? -v->number : v->number;
   double n = std::round(written);
-  if (n < 1 || n > 99999) {
+  if (!isSequenceNumber(n)) {
     diags.report(DiagKind::GotoRange, s.value->range,
                  fmt::format("{}", written));
     return;

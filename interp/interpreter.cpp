@@ -20,11 +20,8 @@ Interpreter::Interpreter(const Unit& unit, const SourceManager& sources,
 }
 
 int Interpreter::findProgram(double number) const {
-  double n = roundHalfAway(number);
-  if (n < 0 || n > kMaxCallNumber) {
-    return -1;
-  }
-  auto it = byNumber_.find(static_cast<int>(n));
+  const std::optional<int> n = calledProgramNumber(number);
+  const auto it = n ? byNumber_.find(*n) : byNumber_.end();
   return it == byNumber_.end() ? -1 : it->second;
 }
 
@@ -190,7 +187,7 @@ mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
 
 mbrt_status Interpreter::jumpToSeq(double seq, int from) {
   double n = roundHalfAway(seq);
-  if (n < 1 || n > 99999) {
+  if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, "M99 P", seq,
                                unit_.programs[prog_].name.c_str());
   }

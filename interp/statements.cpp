@@ -1,6 +1,7 @@
 // Statement execution: assignments, GOTO, NC blocks (with the control flow
 // the runtime asks for: calls, M99, M02/M30), G65 calls and DPRNT/BPRNT.
 #include "interp/interpreter.h"
+#include <mbc/limits.h>
 
 namespace mbc {
 
@@ -61,7 +62,7 @@ mbrt_status Interpreter::execGoto(const Stmt& s) {
   if (mbrt_tracing(ctx_) && s.kind == StmtKind::Goto) {
     trace(s, {n});
   }
-  if (n < 1 || n > 99999) {
+  if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, "GOTO ", numeric(target),
                                unit_.programs[prog_].name.c_str());
   }

@@ -31,11 +31,8 @@ mbrt_status Evaluator::run(int mainIndex) {
 }
 
 int Evaluator::findProgram(double number) const {
-  double n = roundHalfAway(number);
-  if (n < 0 || n > kMaxCallNumber) {
-    return -1;
-  }
-  auto it = byNumber_.find(static_cast<int>(n));
+  const std::optional<int> n = calledProgramNumber(number);
+  const auto it = n ? byNumber_.find(*n) : byNumber_.end();
   return it == byNumber_.end() ? -1 : it->second;
 }
 
@@ -174,7 +171,7 @@ mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
                                 double value, const char* jump, BlockId& next) {
   double target = numeric(value);
   double n = roundHalfAway(target);
-  if (n < 1 || n > 99999) {
+  if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, jump, target, fn.name.c_str());
   }
   return caseTarget(fn, inst, static_cast<int>(n), 0, next);
@@ -196,7 +193,7 @@ mbrt_status Evaluator::resumeAt(const Function& fn, Frame& frame,
 mbrt_status Evaluator::jumpToSeq(const Function& fn, const Inst& inst,
                                  double seq, BlockId& next) {
   double n = roundHalfAway(seq);
-  if (n < 1 || n > 99999) {
+  if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, "M99 P", seq, fn.name.c_str());
   }
   return caseTarget(fn, inst, static_cast<int>(n), 1, next);

@@ -6,6 +6,7 @@
 #include "ir/cfg.h"
 #include "ir/printer.h"
 #include <mbc/arith.h>
+#include <mbc/limits.h>
 
 #include <fmt/format.h>
 
@@ -16,9 +17,6 @@
 namespace mbc::ir {
 
 namespace {
-
-// FANUC sequence numbers are N1..N99999 (spec §1.4).
-constexpr std::int64_t kMaxSequence = 99999;
 
 std::string_view typeName(Type t) {
   constexpr std::array<std::string_view, 5> kNames = {"no value", "num", "vnum",
@@ -355,11 +353,11 @@ void FunctionVerifier::checkCases(BlockId b, ValueId id, const Inst& inst) {
     case Op::Resume: {
       std::set<std::int64_t> seen;
       for (std::int64_t n : inst.cases) {
-        if (n < 1 || n > kMaxSequence) {
+        if (n < 1 || n > kMaxSequenceNumber) {
           fail(b, id,
                fmt::format("case {} is not a sequence number "
                            "(1..{})",
-                           n, kMaxSequence));
+                           n, kMaxSequenceNumber));
         } else if (!seen.insert(n).second) {
           fail(b, id, fmt::format("case {} appears twice", n));
         }

@@ -9,6 +9,7 @@
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
 #include <mbc/arith.h>
+#include <mbc/limits.h>
 
 #include <bit>
 #include <optional>
@@ -242,7 +243,7 @@ void Folder::foldTerminator(ValueId id) {
   }
   double n = roundHalfAway(numeric(*v));
   for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    if (n >= 1 && n <= 99999 && static_cast<double>(inst.cases[i]) == n) {
+    if (isSequenceNumber(n) && static_cast<double>(inst.cases[i]) == n) {
       replaceByBr(f_, b, inst.targets[i]);
       return;
     }

@@ -10,6 +10,7 @@
 #include "ir/cfg.h"
 #include "ir/pass_manager.h"
 #include "ir/passes/pass_util.h"
+#include <mbc/limits.h>
 
 #include <map>
 #include <optional>
@@ -19,7 +20,7 @@ namespace mbc::ir {
 namespace {
 
 bool isMemoryVariable(std::int64_t n) {
-  return (n >= 1 && n <= 33) || (n >= 100 && n <= 999);
+  return isLocal(n) || (n >= kFirstCommon && n <= kLastNonvolatile);
 }
 
 using Known = std::map<std::int64_t, ValueId>;

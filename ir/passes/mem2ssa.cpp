@@ -65,8 +65,8 @@ Mask localsIn(const Range& r) {
   if (!(lo <= hi)) {
     return 0; // never computed, or entirely outside 0..40
   }
-  double first = std::max(roundHalfAway(lo), 1.0);
-  double last = std::min(roundHalfAway(hi), 33.0);
+  double first = std::max(roundHalfAway(lo), double{kFirstLocal});
+  double last = std::min(roundHalfAway(hi), double{kLastLocal});
   Mask m = 0;
   for (double k = first; k <= last; ++k) {
     m |= localBit(static_cast<std::int64_t>(k));

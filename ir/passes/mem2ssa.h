@@ -5,6 +5,7 @@
 
 #include "ir/cfg.h"
 #include "ir/ir.h"
+#include <mbc/limits.h>
 
 #include <cstdint>
 #include <vector>
@@ -16,10 +17,6 @@ using Mask = std::uint64_t;
 
 inline Mask localBit(std::int64_t k) {
   return Mask{1} << (k - 1);
-}
-
-inline bool isLocal(std::int64_t k) {
-  return k >= 1 && k <= 33;
 }
 
 struct Plan {

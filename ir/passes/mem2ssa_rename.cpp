@@ -13,7 +13,7 @@ namespace mbc::ir::mem2ssa {
 
 namespace {
 
-using Values = std::array<ValueId, 33>; // current value of #1..#33
+using Values = std::array<ValueId, kLocalCount>; // current value of #1..#33
 
 Values noValues() {
   Values v;
@@ -101,7 +101,7 @@ void Renamer::enter(BlockId b, Values& cur) {
   }
   cur = noValues();
   std::size_t pos = firstNonPhi(f_, b);
-  for (int k = 0; k < 33; ++k) {
+  for (int k = 0; k < kLocalCount; ++k) {
     if (!(live_[b] & (Mask{1} << k))) {
       continue;
     }
@@ -142,7 +142,7 @@ bool Renamer::rewriteBlock(BlockId b, Values& cur) {
 bool Renamer::storeBack(BlockId b, const Values& cur) {
   ValueId term = terminatorOf(f_, b);
   std::uint32_t line = f_.insts[term].line;
-  for (int k = 0; k < 33; ++k) {
+  for (int k = 0; k < kLocalCount; ++k) {
     if (!(plan_.stores[b] & (Mask{1} << k))) {
       continue;
     }

@@ -4,14 +4,14 @@
 #include "ir/cfg.h"
 #include <mbc/arith.h>
 #include <mbc/g_codes.h>
+#include <mbc/limits.h>
 
 #include <algorithm>
 
 namespace mbc::ir {
 
 bool readCannotAlarm(std::int64_t n) {
-  return n == 0 || (n >= 1 && n <= 33) || (n >= 100 && n <= 199) ||
-         (n >= 500 && n <= 999);
+  return n == 0 || isLocal(n) || isFixedCommon(n);
 }
 
 namespace {

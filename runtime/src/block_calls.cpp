@@ -156,15 +156,19 @@ mbrt_status setModalCall(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     return raise(ctx, AlarmId::GAsArgument,
                  fmt::format("another G code in the {} block", name));
   }
+  const std::optional<int> program = calledProgramNumber(numeric(p->value));
+  if (!program) {
+    return raise(ctx, AlarmId::ProgramNotFound,
+                 fmt::format("{} P{}", name, p->value));
+  }
   const bool everyBlock = gTenths(g) == 661;
   if (everyBlock) {
     const int id = ctx.nextModalId; // the call below is the modal call's own
-    askCall(ctx, flow, MBRT_CALL_MODAL,
-            static_cast<int>(roundHalfAway(p->value)), repeatOf(words, count),
-            args, id);
+    askCall(ctx, flow, MBRT_CALL_MODAL, *program, repeatOf(words, count), args,
+            id);
   }
-  pushModalCall(ctx, static_cast<int>(roundHalfAway(p->value)),
-                repeatOf(words, count), everyBlock, std::move(args));
+  pushModalCall(ctx, *program, repeatOf(words, count), everyBlock,
+                std::move(args));
   return 0;
 }
 

@@ -183,7 +183,7 @@ int parseProgramNumber(const char* name) {
   }
   int number = 0;
   for (const char* digit = name + 1; *digit != '\0'; ++digit) {
-    if (*digit < '0' || *digit > '9' || number > 99'999'999) {
+    if (*digit < '0' || *digit > '9' || number > kMaxProgramNumber) {
       return 0;
     }
     number = number * 10 + (*digit - '0');

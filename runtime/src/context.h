@@ -27,8 +27,9 @@
 
 namespace mbc::rt {
 
-inline constexpr int kLocalCount = 33;
-inline constexpr int kCommonEnd = 1000;            // commons are #100..#999
+inline constexpr int kCommonEnd = kLastNonvolatile + 1; // commons: #100..#999
+static_assert(sizeof(mbrt_level::value) / sizeof(mbrt_num) == kLocalCount,
+              "compiled.h's call level holds the locals of limits.h");
 inline constexpr double kCountsPerDegree = 1000.0; // 0.001 deg (IS-B)
 inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
 inline constexpr std::uint64_t kDefaultMaxOutput = std::uint64_t{1} << 30;

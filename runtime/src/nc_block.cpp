@@ -480,9 +480,14 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   if (repeat < 1.0) {
     return 0; // L0: no call
   }
+  const std::optional<int> number = calledProgramNumber(program);
+  if (!number) {
+    return raise(ctx, AlarmId::ProgramNotFound,
+                 fmt::format("M98 P{}", program));
+  }
   flow->kind = MBRT_FLOW_CALL;
   flow->call_kind = MBRT_CALL_SUB;
-  flow->program = static_cast<int>(program);
+  flow->program = *number;
   flow->repeat = static_cast<long>(repeat);
   return 0;
 }

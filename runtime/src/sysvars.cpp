@@ -533,10 +533,10 @@ VarAccess variableAccess(int n) {
   if (n == 0) {
     return VarAccess::ReadOnly;
   }
-  if ((n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999)) {
+  if (isLocal(n) || isFixedCommon(n)) {
     return VarAccess::ReadWrite;
   }
-  if (n < 1000) {
+  if (n <= kLastNonvolatile) {
     return VarAccess::Missing;
   }
   const rt::SysVarRange* range = rt::findSystemVariable(n);

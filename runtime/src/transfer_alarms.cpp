@@ -1,6 +1,7 @@
 // The alarms of GOTO, M99 P and calls, in one place so that the interpreter,
 // the IR evaluator and compiled code word them identically.
 #include <mbc/arith.h>
+#include <mbc/limits.h>
 #include <mbc/runtime.h>
 
 #include <fmt/format.h>
@@ -12,7 +13,7 @@ using namespace mbc;
 mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
                                 const char* program) {
   double n = roundHalfAway(seq);
-  std::string detail = n < 1 || n > 99999
+  std::string detail = !isSequenceNumber(n)
                            ? fmt::format("{}{}", jump, seq)
                            : fmt::format("N{} not found in {}", n, program);
   return rt::raise(*ctx, AlarmId::IllegalMacroSequenceNumber, detail);
@@ -23,7 +24,8 @@ mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number) {
   if (const mbrt_status status = rt::checkProgramNumber(*ctx, n)) {
     return status;
   }
-  std::string detail = n >= 0 && n < 1e9 ? programName(static_cast<int>(n))
-                                         : fmt::format("O{}", number);
+  std::string detail = n >= 0 && n <= kMaxCallNumber
+                           ? programName(static_cast<int>(n))
+                           : fmt::format("O{}", number);
   return rt::raise(*ctx, AlarmId::ProgramNotFound, detail);
 }

@@ -18,7 +18,7 @@ namespace {
 /// variable become -1, which fails every range check.
 long variableNumber(double number) {
   const double value = numeric(number);
-  if (!(std::fabs(value) < 1e9)) {
+  if (!(std::fabs(value) < kBeyondAnyVariable)) {
     return -1;
   }
   const auto whole = static_cast<long>(value);
@@ -28,15 +28,8 @@ long variableNumber(double number) {
   return static_cast<long>(roundHalfAway(value));
 }
 
-bool isLocal(long n) {
-  return n >= 1 && n <= kLocalCount;
-}
-
 bool isCommon(const mbrt_ctx& ctx, long n) {
-  if (n >= 100 && n <= 199) {
-    return true;
-  }
-  if (n >= 500 && n <= 999) {
+  if (isFixedCommon(n)) {
     return true;
   }
   return ctx.profile.extendedCommon && n >= kFirstExtendedCommon &&

@@ -71,6 +71,16 @@ TEST(RuntimePrograms, TracesCallsByTheirNames) {
                    "test.nc:8: G65 <CYCLE> L1\n");
 }
 
+// A P beyond every program number (an int once took it, undefined) is
+// PS0076, as a call of a program that does not exist.
+TEST(RuntimePrograms, HugePIsProgramNotFound) {
+  for (const char* block : {"M98 P99999999999", "G66 P-99999999999 A1."}) {
+    Machine m;
+    EXPECT_EQ(m.block(block), status(AlarmId::ProgramNotFound)) << block;
+    EXPECT_NE(m.report().find("PS0076"), std::string::npos) << m.report();
+  }
+}
+
 // A 4-digit control reads a long M98 P as repeats and program, but no
 // packed P reaches a named program's number.
 TEST(RuntimePrograms, NamedProgramsPassThe4DigitRules) {

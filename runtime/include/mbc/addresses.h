@@ -2,7 +2,10 @@
 // runtime alike.
 #pragma once
 
-#include <limits>
+#include <mbc/arith.h>
+#include <mbc/limits.h>
+
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,22 +16,14 @@ inline bool isWholeNumberAddress(char letter) {
   return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
-/// Program numbers O1-O99999999: the 8-digit program number option, common
-/// on 0i-F and 30i-B; a machine profile can keep the standard O1-O9999.
-inline constexpr int kMaxProgramNumber = 99'999'999;
-inline constexpr int kMaxProgramNumber4Digits = 9'999;
-
-/// Programs called by name (`M98 <DRILL>`, `G65 <BOLT>`) get numbers above
-/// every O number, so that each engine finds them by number as it finds O
-/// numbers. No packed M98 P of a 4-digit control reaches them (its largest
-/// is 9999 repeats of O9999).
-inline constexpr int kFirstNamedProgram = 100'000'000;
-
-/// The largest number a call looks up (rounded P); above it, PS0076.
-inline constexpr int kMaxCallNumber = std::numeric_limits<int>::max();
-
-inline bool isNamedProgramNumber(double number) {
-  return number >= kFirstNamedProgram;
+/// The program number a call's P names, rounded half away from zero as the
+/// control rounds addresses; none when no program can have it (PS0076).
+inline std::optional<int> calledProgramNumber(double p) {
+  const double n = roundHalfAway(p);
+  if (!(n >= 0 && n <= kMaxCallNumber)) {
+    return std::nullopt;
+  }
+  return static_cast<int>(n);
 }
 
 /// "O0012", "O80000003": a numbered program's name, at least four digits.

@@ -3,16 +3,11 @@
 // (with the machine profile's sizes) at run time.
 #pragma once
 
+#include <mbc/limits.h>
+
 namespace mbc {
 
 enum class VarAccess { Missing, ReadOnly, ReadWrite };
-
-/// The commons a machine profile may add ("extended_common").
-inline constexpr int kFirstExtendedCommon = 200;
-inline constexpr int kLastExtendedCommon = 499;
-/// The additional commons of a 30i-B option ("common_98000").
-inline constexpr int kFirstCommon98000 = 98000;
-inline constexpr int kLastCommon98000 = 98499;
 
 /// The access class of #n on the built-in default machine (spec §2, §6).
 VarAccess variableAccess(int n);
