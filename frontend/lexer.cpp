@@ -27,8 +27,6 @@ constexpr WordRow fn(std::string_view s, Builtin b) {
   return {s, true, Keyword::If, b};
 }
 
-// ATAN maps to the one-argument builtin; the parser turns the two-argument
-// forms into Atan2.
 constexpr std::array kWords = {
     kw("IF", Keyword::If),       kw("GOTO", Keyword::Goto),
     kw("THEN", Keyword::Then),   kw("WHILE", Keyword::While),
@@ -40,15 +38,10 @@ constexpr std::array kWords = {
     kw("XOR", Keyword::Xor),     kw("MOD", Keyword::Mod),
     kw("DPRNT", Keyword::Dprnt), kw("BPRNT", Keyword::Bprnt),
     kw("POPEN", Keyword::Popen), kw("PCLOS", Keyword::Pclos),
-    fn("SIN", Builtin::Sin),     fn("COS", Builtin::Cos),
-    fn("TAN", Builtin::Tan),     fn("ASIN", Builtin::Asin),
-    fn("ACOS", Builtin::Acos),   fn("ATAN", Builtin::Atan),
-    fn("SQRT", Builtin::Sqrt),   fn("ABS", Builtin::Abs),
-    fn("ROUND", Builtin::Round), fn("FIX", Builtin::Fix),
-    fn("FUP", Builtin::Fup),     fn("LN", Builtin::Ln),
-    fn("EXP", Builtin::Exp),     fn("POW", Builtin::Pow),
-    fn("ADP", Builtin::Adp),     fn("BIN", Builtin::Bin),
-    fn("BCD", Builtin::Bcd),
+// The functions, from builtins.def. ATAN finds its first row, the
+// one-argument builtin; the parser turns the two-argument forms into Atan2.
+#define BUILTIN(Id, Name, Arity) fn(Name, Builtin::Id),
+#include <mbc/builtins.def>
 };
 
 // The two-letter abbreviations of macro words that FANUC controls read
