@@ -3,7 +3,7 @@
 
 #include "ir/cfg.h"
 #include <mbc/arith.h>
-#include <mbc/g_codes.h>
+#include <mbc/calling_codes.h>
 #include <mbc/limits.h>
 
 #include <algorithm>
@@ -16,7 +16,7 @@ bool readCannotAlarm(std::int64_t n) {
 
 namespace {
 
-/// A G word that may call: not a constant, or not a G code of FANUC's.
+/// A G word that may call: not a constant, or a code that may call.
 bool mayCallByG(const Function& f, const Inst& nc, std::size_t i,
                 bool modalToo) {
   const Inst& value = f.insts[nc.ops[i]];
@@ -30,8 +30,7 @@ bool mayCallByG(const Function& f, const Inst& nc, std::size_t i,
   if (tenths < 0.0 || tenths > 99999.0) {
     return false; // PS0010 at run time
   }
-  const int code = static_cast<int>(tenths);
-  return !isFanucGCode(code) || (modalToo && (code == 660 || code == 661));
+  return gCodeMayCall(static_cast<int>(tenths), modalToo);
 }
 
 bool blockMayCallByG(const Function& f, const Inst& nc, bool modalToo) {
@@ -52,17 +51,15 @@ bool ncMayShareFrame(const Function& f, const Inst& nc) {
     if (value.op == Op::Vacant) {
       continue; // a vacant word is no word
     }
-    if (letter == 'T' || letter == 'S' || letter == 'B') {
+    if (letterMayCall(letter)) {
       return true;
     }
-    // M00, M01, M02 and M30 only stop or end (profiles cannot make them
-    // call); every other M code may be M98, M99 or a subprogram's code.
+    // Every M code but those that stop or end may be M98, M99 or a code
+    // that calls a subprogram, which shares this frame.
     if (letter == 'M') {
       bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
-      double m = value.op == Op::Const
-                     ? roundHalfAway(negated ? -value.imm : value.imm)
-                     : -1.0;
-      if (m != 0.0 && m != 1.0 && m != 2.0 && m != 30.0) {
+      if (value.op != Op::Const ||
+          mCodeMayCall(roundHalfAway(negated ? -value.imm : value.imm))) {
         return true;
       }
     }

@@ -4,6 +4,7 @@
 #include "block_calls.h"
 
 #include <mbc/arith.h>
+#include <mbc/calling_codes.h>
 
 #include <fmt/format.h>
 
@@ -13,17 +14,6 @@ namespace mbc::rt {
 
 namespace {
 
-/// A parameter run that maps codes to programs: parameter first + i holds
-/// the code that calls program + i.
-struct CodeTable {
-  int first;
-  int size;
-  int program;
-};
-
-constexpr CodeTable kCustomG{6050, 10, 9010};
-constexpr CodeTable kSubprogramM{6071, 9, 9001};
-constexpr CodeTable kMacroM{6080, 10, 9020};
 constexpr int kTProgram = 9000;
 constexpr int kSProgram = 9029;
 constexpr int kBProgram = 9028;
@@ -31,7 +21,8 @@ constexpr int kTCommon = 149;
 constexpr int kSCommon = 147;
 constexpr int kBCommon = 146;
 
-/// The program parameter `first + i` with |value| == code calls, or -1;
+/// The program parameter `firstParameter + i` with |value| == code calls,
+/// or -1;
 /// `modal` tells a negative parameter (a G66-like custom G code).
 int findCode(const mbrt_ctx& ctx, const CodeTable& table, double code,
              bool* modal = nullptr) {
@@ -39,12 +30,12 @@ int findCode(const mbrt_ctx& ctx, const CodeTable& table, double code,
     return -1;
   }
   for (int i = 0; i < table.size; ++i) {
-    const double value = ctx.profile.parameter(table.first + i);
+    const double value = ctx.profile.parameter(table.firstParameter + i);
     if (std::fabs(value) == code) {
       if (modal != nullptr) {
         *modal = value < 0.0;
       }
-      return table.program + i;
+      return table.firstProgram + i;
     }
   }
   return -1;
@@ -180,10 +171,12 @@ bool callCustomCode(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     const mbrt_word& word = words[i];
     bool modal = false;
     int program = -1;
-    if (word.letter == 'G' && gTenths(word) % 10 == 0) {
-      program = findCode(ctx, kCustomG, gTenths(word) / 10, &modal);
-    } else if (word.letter == 'M') {
-      program = findCode(ctx, kMacroM, roundHalfAway(word.value));
+    if (word.letter == 'G' && gTenths(word) % 10 == 0 &&
+        mayBeCustomGCode(gTenths(word))) {
+      program = findCode(ctx, kCustomGCodes, gTenths(word) / 10, &modal);
+    } else if (word.letter == 'M' &&
+               mayBeCustomMCode(roundHalfAway(word.value))) {
+      program = findCode(ctx, kMacroMCodes, roundHalfAway(word.value));
     }
     if (program < 0) {
       continue;
@@ -214,7 +207,9 @@ struct Wanted {
 void wantCodeSubprograms(const mbrt_ctx& ctx, const BlockCodes& codes,
                          std::vector<Wanted>& wanted) {
   for (int i = 0; i < codes.mCount; ++i) {
-    const int program = findCode(ctx, kSubprogramM, codes.m[i]);
+    const int program = mayBeCustomMCode(codes.m[i])
+                            ? findCode(ctx, kSubprogramMCodes, codes.m[i])
+                            : -1;
     if (program >= 0) {
       wanted.push_back({MBRT_CALL_CODE_SUB, program, 0,
                         static_cast<double>(codes.m[i]),

@@ -1,6 +1,8 @@
 // The parameters mbc models. Bit parameters take the whole byte (bit 0 = 1).
 #include "parameters.h"
 
+#include <mbc/calling_codes.h>
+
 #include <array>
 
 namespace mbc::rt {
@@ -8,6 +10,17 @@ namespace mbc::rt {
 namespace {
 
 constexpr double kMaxCode = 99'999'999.0;
+
+/// The parameters that make codes call: whole numbers, 0 = no code.
+constexpr ParameterSpec codeTableSpec(const CodeTable& table, double low,
+                                      double high) {
+  return {table.firstParameter,
+          table.firstParameter + table.size - 1,
+          low,
+          high,
+          0,
+          true};
+}
 
 constexpr std::array kParameters = {
     // 2nd, 3rd and 4th reference positions (G30), machine coordinates, mm.
@@ -32,9 +45,9 @@ constexpr std::array kParameters = {
     ParameterSpec{6004, 6004, 0, 255, 0, true},          // #0 NAT
     ParameterSpec{6007, 6007, 0, 255, 0, true},          // #4 BCS, #5 SCS
     // G codes calling O9010..O9019; negative: a modal (G66-like) call.
-    ParameterSpec{6050, 6059, -9999, 9999, 0, true},
-    ParameterSpec{6071, 6079, 0, kMaxCode, 0, true}, // M codes -> O9001..
-    ParameterSpec{6080, 6089, 0, kMaxCode, 0, true}, // M codes -> O9020..
+    codeTableSpec(kCustomGCodes, -9999, 9999),
+    codeTableSpec(kSubprogramMCodes, 0, kMaxCode),
+    codeTableSpec(kMacroMCodes, 0, kMaxCode),
 };
 
 } // namespace

@@ -3,7 +3,7 @@
 // in a profile never silently selects a default.
 #include "profile.h"
 
-#include <mbc/g_codes.h>
+#include <mbc/calling_codes.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -88,15 +88,17 @@ void parseParameters(const json& value, Profile& profile) {
     }
     const double x = number(item, path);
     checkRange(*spec, x, path);
-    // The compiler assumes FANUC's own G codes never call a macro.
-    if (*n >= 6050 && *n <= 6059 &&
-        isFanucGCode(static_cast<int>(std::fabs(x)) * 10)) {
+    // The compiler keeps locals across the blocks that may call, by one
+    // rule (<mbc/calling_codes.h>); a code outside it must not call.
+    const bool gCodes = *n >= kCustomGCodes.firstParameter &&
+                        *n < kCustomGCodes.firstParameter + kCustomGCodes.size;
+    if (gCodes && x != 0 &&
+        !mayBeCustomGCode(static_cast<int>(std::fabs(x)) * 10)) {
       fail(path, fmt::format("must not be a G code the control has (G{})",
                              std::fabs(x)));
     }
-    // Nor do the M codes that stop, end, call or return.
-    if (*n >= 6071 && *n <= 6089 &&
-        (x == 1 || x == 2 || x == 30 || x == 98 || x == 99 || x == 198)) {
+    if (!gCodes && isCallingCodeParameter(*n) && x != 0 &&
+        !mayBeCustomMCode(x)) {
       fail(path, fmt::format("must not be M{:02} (0 = no code)", x));
     }
     profile.parameters[*n] = x;
@@ -106,14 +108,13 @@ void parseParameters(const json& value, Profile& profile) {
   profile.nat = profile.parameterBit(6004, 0);
   profile.v15 = profile.parameterBit(6000, 3);
   profile.rigidTappingCode = profile.parameter(5210);
-  profile.codeCalls = profile.parameterBit(6001, 5) ||
-                      profile.parameterBit(6007, 4) ||
-                      profile.parameterBit(6007, 5) ||
-                      std::any_of(profile.parameters.begin(),
-                                  profile.parameters.end(), [](const auto& p) {
-                                    return p.first >= 6050 && p.first <= 6089 &&
-                                           p.second != 0.0;
-                                  });
+  profile.codeCalls =
+      profile.parameterBit(6001, 5) || profile.parameterBit(6007, 4) ||
+      profile.parameterBit(6007, 5) ||
+      std::any_of(profile.parameters.begin(), profile.parameters.end(),
+                  [](const auto& p) {
+                    return isCallingCodeParameter(p.first) && p.second != 0.0;
+                  });
 }
 
 /// Memory A holds one value per offset (h_geometry), memory B a geometry

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <fstream>
 
+#include <mbc/calling_codes.h>
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -141,6 +143,34 @@ TEST(RuntimeProfile, ErrorsNameTheKey) {
     EXPECT_NE(error.find(key), std::string::npos) << json << " gave: " << error;
     EXPECT_EQ(error.rfind("machine profile: ", 0), 0u) << error;
   }
+}
+
+// The calling-code parameters follow the one rule the IR passes assume
+// (<mbc/calling_codes.h>): no FANUC G code, and no M code that stops,
+// ends, calls or returns, can be made to call; 0 means no code.
+TEST(RuntimeProfile, CallingCodesFollowTheCompilersRule) {
+  for (const char* bad :
+       {R"({"parameters": {"6050": 1}})", R"({"parameters": {"6059": -66}})",
+        R"({"parameters": {"6071": 30}})", R"({"parameters": {"6079": 0.5}})",
+        R"({"parameters": {"6080": 98}})", R"({"parameters": {"6089": 2}})"}) {
+    EXPECT_NE(profileError(bad), "") << bad;
+  }
+  for (const char* good :
+       {R"({"parameters": {"6050": 100, "6051": -110, "6052": 0}})",
+        R"({"parameters": {"6071": 6, "6080": 50, "6081": 0}})"}) {
+    EXPECT_EQ(profileError(good), "") << good;
+  }
+  EXPECT_FALSE(mayBeCustomGCode(650));
+  EXPECT_TRUE(mayBeCustomGCode(1000));
+  EXPECT_TRUE(gCodeMayCall(661, true));
+  EXPECT_FALSE(gCodeMayCall(661, false));
+  for (double m : {0.0, 1.0, 2.0, 30.0}) {
+    EXPECT_FALSE(mCodeMayCall(m)) << m;
+    EXPECT_FALSE(mayBeCustomMCode(m)) << m;
+  }
+  EXPECT_TRUE(mCodeMayCall(98));
+  EXPECT_FALSE(mayBeCustomMCode(98));
+  EXPECT_TRUE(mayBeCustomMCode(6));
 }
 
 TEST(RuntimeProfile, InvalidJson) {
