@@ -135,7 +135,7 @@ llvm::Value* FunctionEmitter::emitArith(const ir::Inst& inst) {
 }
 
 llvm::Value* FunctionEmitter::emitRuntimeArith(const ir::Inst& inst) {
-  auto op = static_cast<int>(inst.op) - static_cast<int>(ir::Op::Add);
+  const auto op = static_cast<int>(*ir::binaryOf(inst.op));
   return callStatusOut(Rt::mbrt_binary,
                        {ctx_, llvm::ConstantInt::get(abi_.i32, op),
                         numOperand(inst, 0), numOperand(inst, 1)});

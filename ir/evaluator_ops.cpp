@@ -9,25 +9,6 @@ namespace mbc::ir::detail {
 
 namespace {
 
-constexpr int opIndex(Op op) {
-  return static_cast<int>(op);
-}
-
-// exec() dispatches on these ranges of opcodes.def: values, variables,
-// effects and terminators.
-static_assert(Op::BlockSkip < Op::LdVar && Op::Adp < Op::Begin);
-static_assert(opIndex(Op::BitXor) - opIndex(Op::Add) ==
-              static_cast<int>(BinOp::Xor));
-static_assert(opIndex(Op::Le) - opIndex(Op::Eq) == static_cast<int>(RelOp::Le));
-
-BinOp binOp(Op op) {
-  return static_cast<BinOp>(opIndex(op) - opIndex(Op::Add));
-}
-
-RelOp relOp(Op op) {
-  return static_cast<RelOp>(opIndex(op) - opIndex(Op::Eq));
-}
-
 double truth(bool b) {
   return b ? 1.0 : 0.0;
 }
@@ -61,16 +42,16 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
     case Op::BitAnd:
     case Op::BitOr:
     case Op::BitXor:
-      return check(
-          evalBinary(binOp(inst.op), v[inst.ops[0]], v[inst.ops[1]], &v[id]));
+      return check(evalBinary(*binaryOf(inst.op), v[inst.ops[0]],
+                              v[inst.ops[1]], &v[id]));
     case Op::Eq:
     case Op::Ne:
     case Op::Gt:
     case Op::Ge:
     case Op::Lt:
     case Op::Le:
-      v[id] =
-          truth(evalCompare(relOp(inst.op), v[inst.ops[0]], v[inst.ops[1]]));
+      v[id] = truth(
+          evalCompare(*relationOf(inst.op), v[inst.ops[0]], v[inst.ops[1]]));
       return 0;
     case Op::LdVar:
       return mbrt_read_var(ctx_, static_cast<double>(inst.attr), &v[id]);
@@ -83,13 +64,16 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
     default:
       break;
   }
-  if (inst.op <= Op::BlockSkip) {
-    return execValue(inst, frame, id);
+  switch (opInfo(inst.op).cls) {
+    case OpClass::Value:
+      return execValue(inst, frame, id);
+    case OpClass::Variable:
+      return execVariable(inst, frame, id);
+    case OpClass::Effect:
+    case OpClass::Control:
+      return execEffect(inst, frame, depth, id);
   }
-  if (inst.op <= Op::Adp) {
-    return execVariable(inst, frame, id);
-  }
-  return execEffect(inst, frame, depth, id);
+  return internalError(opInfo(inst.op).mnemonic);
 }
 
 mbrt_status Evaluator::execValue(const Inst& inst, Frame& frame, ValueId id) {

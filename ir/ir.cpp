@@ -7,16 +7,42 @@ namespace mbc::ir {
 
 namespace {
 
+constexpr OpMath NoMath{};
+#define Bin(Id)                                                                \
+  OpMath {                                                                     \
+    OpMath::Binary, static_cast<std::uint8_t>(BinOp::Id)                       \
+  }
+#define Rel(Id)                                                                \
+  OpMath {                                                                     \
+    OpMath::Relation, static_cast<std::uint8_t>(RelOp::Id)                     \
+  }
+
 constexpr std::array kOps = {
-#define OP(Name, Mnemonic, Result, Operands, Flags)                            \
-  OpInfo{Mnemonic, Type::Result, Operands, static_cast<unsigned>(Flags)},
+#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math)               \
+  OpInfo{Mnemonic,       Type::Result, Operands, static_cast<unsigned>(Flags), \
+         OpClass::Class, Math},
 #include "ir/opcodes.def"
 };
+
+#undef Bin
+#undef Rel
 
 } // namespace
 
 const OpInfo& opInfo(Op op) {
   return kOps[static_cast<std::size_t>(op)];
+}
+
+std::optional<BinOp> binaryOf(Op op) {
+  const OpMath& m = opInfo(op).math;
+  return m.kind == OpMath::Binary ? std::optional(static_cast<BinOp>(m.op))
+                                  : std::nullopt;
+}
+
+std::optional<RelOp> relationOf(Op op) {
+  const OpMath& m = opInfo(op).math;
+  return m.kind == OpMath::Relation ? std::optional(static_cast<RelOp>(m.op))
+                                    : std::nullopt;
 }
 
 bool opFromMnemonic(const std::string& mnemonic, Op& out) {

@@ -5,14 +5,17 @@
 // docs/ir.md describes every operation and the text form.
 #pragma once
 
+#include <mbc/arith.h>
+
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace mbc::ir {
 
 enum class Op : std::uint8_t {
-#define OP(Name, Mnemonic, Result, Operands, Flags) Name,
+#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math) Name,
 #include "ir/opcodes.def"
 };
 
@@ -31,7 +34,19 @@ enum OpFlag : unsigned {
   WritesVars = 1U << 2,
   SideEffect = 1U << 3,
   MayAlarm = 1U << 4,
-  ReadsState = 1U << 5, // machine state that NC blocks change
+  ReadsState = 1U << 5,  // machine state that NC blocks change
+  Cseable = 1U << 6,     // equal operands give equal results
+  Commutative = 1U << 7, // the two operands may swap
+};
+
+/// The evaluator's dispatch (opcodes.def, Class).
+enum class OpClass : std::uint8_t { Value, Variable, Effect, Control };
+
+/// The runtime arithmetic an op computes (opcodes.def, Math).
+struct OpMath {
+  enum Kind : std::uint8_t { None, Binary, Relation } kind = None;
+
+  std::uint8_t op = 0; // a BinOp or a RelOp of <mbc/arith.h>
 };
 
 struct OpInfo {
@@ -39,9 +54,15 @@ struct OpInfo {
   Type result;
   int operands; // -1: variadic
   unsigned flags;
+  OpClass cls;
+  OpMath math;
 };
 
 const OpInfo& opInfo(Op op);
+
+/// add ... xor: the BinOp they compute; eq ... le: the RelOp.
+std::optional<BinOp> binaryOf(Op op);
+std::optional<RelOp> relationOf(Op op);
 /// The op with this mnemonic; false when there is none.
 bool opFromMnemonic(const std::string& mnemonic, Op& out);
 

@@ -118,8 +118,9 @@ void Folder::fold(ValueId id) {
 
 void Folder::foldArith(ValueId id) {
   const Inst& inst = f_.insts[id];
-  if (inst.op < Op::Add || inst.op > Op::Le || inst.op == Op::Fn ||
-      inst.op == Op::RoundAddr) {
+  const std::optional<BinOp> binary = binaryOf(inst.op);
+  const std::optional<RelOp> relation = relationOf(inst.op);
+  if (!binary && !relation && inst.op != Op::Neg && inst.op != Op::ToNum) {
     return;
   }
   std::optional<Num> a = num(inst.ops[0]);
@@ -132,15 +133,11 @@ void Folder::foldArith(ValueId id) {
     setConst(id, negate(*a));
   } else if (inst.op == Op::ToNum) {
     setConst(id, numeric(*a));
-  } else if (inst.op >= Op::Eq) {
-    auto rel = static_cast<RelOp>(static_cast<int>(inst.op) -
-                                  static_cast<int>(Op::Eq));
-    bools_[id] = evalCompare(rel, *a, *b) ? 1 : 0;
+  } else if (relation) {
+    bools_[id] = evalCompare(*relation, *a, *b) ? 1 : 0;
   } else {
-    auto op = static_cast<BinOp>(static_cast<int>(inst.op) -
-                                 static_cast<int>(Op::Add));
     Num out = 0;
-    if (evalBinary(op, *a, *b, &out) == AlarmId::None) {
+    if (evalBinary(*binary, *a, *b, &out) == AlarmId::None) {
       setConst(id, out);
     }
   }

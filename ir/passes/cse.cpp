@@ -18,30 +18,12 @@ namespace mbc::ir {
 
 namespace {
 
-// The operations from add to lxor in opcodes.def, except round.addr.
-static_assert(Op::Add < Op::RoundAddr && Op::RoundAddr < Op::LogXor &&
-              Op::LogXor < Op::Phi);
-
 bool isCandidate(Op op) {
-  return op >= Op::Add && op <= Op::LogXor && op != Op::RoundAddr;
+  return (opInfo(op).flags & Cseable) != 0;
 }
 
 bool isCommutative(Op op) {
-  switch (op) {
-    case Op::Add:
-    case Op::Mul:
-    case Op::BitAnd:
-    case Op::BitOr:
-    case Op::BitXor:
-    case Op::Eq:
-    case Op::Ne:
-    case Op::LogAnd:
-    case Op::LogOr:
-    case Op::LogXor:
-      return true;
-    default:
-      return false;
-  }
+  return (opInfo(op).flags & Commutative) != 0;
 }
 
 using Key = std::vector<std::uint64_t>;

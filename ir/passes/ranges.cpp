@@ -214,7 +214,7 @@ void Analysis::comparisons(ValueId cond, bool sense, Each each) const {
       work.emplace_back(inst.ops[1], holds);
       continue;
     }
-    if (inst.op < Op::Eq || inst.op > Op::Le) {
+    if (!relationOf(inst.op)) {
       continue;
     }
     Op op = holds ? inst.op : negated(inst.op);

@@ -181,7 +181,7 @@ TEST(IrText, TestsUseEveryOperation) {
       }
     }
   }
-#define OP(Name, Mnemonic, Result, Operands, Flags)                            \
+#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math)               \
   EXPECT_TRUE(used.count(Op::Name)) << Mnemonic;
 #include "ir/opcodes.def"
 }
