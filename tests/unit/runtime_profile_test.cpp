@@ -1,11 +1,11 @@
 // Machine profiles through mbrt_create: the built-in default, every field,
 // and errors that name the offending key.
+#include <mbc/calling_codes.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-
-#include <mbc/calling_codes.h>
 
 #include "runtime_test_support.h"
 
