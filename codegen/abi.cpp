@@ -1,10 +1,14 @@
 // LLVM types and declarations of the runtime's C ABI (see abi.h).
 #include "codegen/abi.h"
 
+#include <mbc/compiled.h>
 #include <mbc/limits.h>
+#include <mbc/runtime.h>
 
 #include <llvm/Config/llvm-config.h>
 #include <llvm/IR/LLVMContext.h>
+
+#include <type_traits>
 
 namespace mbc::codegen {
 
@@ -36,6 +40,35 @@ llvm::FunctionType* signature(const Abi& abi, Kind result,
   }
   return llvm::FunctionType::get(typeOf(abi, result), types, false);
 }
+
+// Each row of runtime_functions.def against the runtime's own declaration:
+// a parameter added, removed or retyped there fails the build here.
+template <Kind K, class T> constexpr bool passesAs() {
+  if constexpr (K == Kind::Void) {
+    return std::is_void_v<T>;
+  } else if constexpr (K == Kind::Ptr) {
+    return std::is_pointer_v<T>;
+  } else if constexpr (K == Kind::F64) {
+    return std::is_same_v<T, double>;
+  } else {
+    return std::is_integral_v<T> && sizeof(T) == (K == Kind::I32 ? 4 : 8);
+  }
+}
+
+template <Kind Result, Kind... Params, class R, class... Args>
+constexpr bool declaredAs(R (*)(Args...)) {
+  if constexpr (sizeof...(Params) != sizeof...(Args)) {
+    return false;
+  } else {
+    return passesAs<Result, R>() && (passesAs<Params, Args>() && ...);
+  }
+}
+
+using enum Kind;
+#define RT(Name, Result, ...)                                                  \
+  static_assert(declaredAs<Result, __VA_ARGS__>(&::Name),                      \
+                #Name " differs from its row in runtime_functions.def");
+#include "codegen/runtime_functions.def"
 
 } // namespace
 
