@@ -307,7 +307,7 @@ void FunctionEmitter::emitTerminator(const ir::Inst& inst) {
             inst.str != 0 ? m_.ir.strings[inst.str - 1].c_str() : nullptr);
       return;
     default:
-      raise(static_cast<int>(AlarmId::Unsupported),
+      raise(static_cast<int>(AlarmId::InternalError),
             "compiled code: unreachable code reached");
       return;
   }

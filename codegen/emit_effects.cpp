@@ -50,7 +50,7 @@ llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
       emitTrace(inst);
       return nullptr;
     default:
-      raise(static_cast<int>(AlarmId::Unsupported),
+      raise(static_cast<int>(AlarmId::InternalError),
             "compiled code: unexpected operation");
       b_.SetInsertPoint(newBlock("dead"));
       return nullptr;

@@ -5,6 +5,7 @@
 #include "driver/output_files.h"
 #include "driver/state_file.h"
 #include "driver/svg_writer.h"
+#include <mbc/alarm.h>
 
 #include <fmt/format.h>
 
@@ -271,7 +272,10 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
   if (!written) {
     return 2;
   }
-  return st ? 3 : 0;
+  // A run the compiler got wrong is no alarm of the program's.
+  return st == static_cast<mbrt_status>(AlarmId::InternalError) ? 4
+         : st                                                   ? 3
+                                                                : 0;
 }
 
 int runOnce(const RunOptions& o, const std::string& mainName,

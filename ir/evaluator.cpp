@@ -37,7 +37,7 @@ int Evaluator::findProgram(double number) const {
 }
 
 mbrt_status Evaluator::internalError(const char* what) {
-  return mbrt_raise(ctx_, static_cast<int>(AlarmId::Unsupported),
+  return mbrt_raise(ctx_, static_cast<int>(AlarmId::InternalError),
                     fmt::format("IR evaluator: {}", what).c_str());
 }
 

@@ -178,6 +178,22 @@ TEST(IrEval, DivisionByZeroRaisesPS0112) {
   EXPECT_TRUE(isVacant(machine.read(100)));
 }
 
+// A module the evaluator cannot run is the compiler's fault: MBC0006
+// INTERNAL COMPILER ERROR (mbc exits 4), never MBC0001 "not supported".
+TEST(IrEval, AMalformedModuleIsAnInternalError) {
+  Module m;
+  Builder b(m, "O1000", 1000);
+  b.begin(3);
+  b.term(Op::Unreachable);
+
+  Machine machine;
+  EXPECT_EQ(run(m, machine), status(AlarmId::InternalError));
+  EXPECT_NE(machine.report().find("MBC0006"), std::string::npos)
+      << machine.report();
+  Machine none;
+  EXPECT_EQ(evaluate(Module{}, 0, none.ctx()), status(AlarmId::InternalError));
+}
+
 TEST(IrEval, NcBlocksMoveAndDropVacantWords) {
   Module m;
   Builder b(m, "O1000", 1000);
