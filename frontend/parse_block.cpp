@@ -107,11 +107,13 @@ bool Parser::parseProgramHeader() {
       fail();
     }
     if (tok_.kind != Tok::Number || tok_.hasDecimal) {
-      diags_.report(DiagKind::ExpectedProgramNumber, start.range);
+      diags_.report(DiagKind::ExpectedProgramNumber, start.range,
+                    kMaxProgramNumber);
       fail();
     }
     if (tok_.number < 1 || tok_.number > kMaxProgramNumber) {
-      diags_.report(DiagKind::ProgramNumberRange, tok_.range, tok_.text);
+      diags_.report(DiagKind::ProgramNumberRange, tok_.range, tok_.text,
+                    kMaxProgramNumber);
       fail();
     }
     p.number = static_cast<int>(tok_.number);
@@ -175,7 +177,8 @@ void Parser::parseBlock() {
         }
         if (tok_.kind != Tok::Number || tok_.hasDecimal || tok_.number < 1 ||
             tok_.number > kMaxSequenceNumber) {
-          diags_.report(DiagKind::ExpectedSequenceNumber, n.range);
+          diags_.report(DiagKind::ExpectedSequenceNumber, n.range,
+                        kMaxSequenceNumber);
           fail();
         }
         b.seq = static_cast<int>(tok_.number);

@@ -129,7 +129,7 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
   double n = std::round(written);
   if (!isSequenceNumber(n)) {
     diags.report(DiagKind::GotoRange, s.value->range,
-                 fmt::format("{}", written));
+                 fmt::format("{}", written), kMaxSequenceNumber);
     return;
   }
   int target = findSequence(p, static_cast<int>(n), i);
