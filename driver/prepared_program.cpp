@@ -48,7 +48,9 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
     return 2;
   }
   for (const Program& p : cu_.unit.programs) {
-    names_.push_back({p.name.c_str(), p.number, nullptr});
+    if (isNamedProgramNumber(p.number)) {
+      names_.push_back({p.name.c_str(), p.number, nullptr});
+    }
   }
   start = std::chrono::steady_clock::now();
   if (engine_ != "interp") {

@@ -39,7 +39,7 @@ private:
   CompiledUnit cu_;
   ir::Module module_;
   std::unique_ptr<codegen::Jit> jit_;
-  std::vector<mbrt_program> names_; // the unit's programs, for traces
+  std::vector<mbrt_program> names_; // the named programs, for traces
   int mainIndex_ = -1;
 };
 

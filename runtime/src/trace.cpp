@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include <climits>
+#include <optional>
 
 #include "context.h"
 
@@ -19,11 +19,11 @@ namespace {
 
 /// The name a call by name was written with, for the number it carries.
 const std::string* calledName(const mbrt_ctx& ctx, mbrt_num value) {
-  const double v = numeric(value);
-  if (!isNamedProgramNumber(v) || v > INT_MAX) {
+  const std::optional<int> n = calledProgramNumber(numeric(value));
+  if (!n || !isNamedProgramNumber(*n)) {
     return nullptr;
   }
-  const auto it = ctx.programNames.find(static_cast<int>(v));
+  const auto it = ctx.programNames.find(*n);
   return it == ctx.programNames.end() ? nullptr : &it->second;
 }
 
