@@ -49,8 +49,8 @@ std::uint32_t DebugInfo::firstLine(const ir::Function& f) {
   for (const ir::Block& block : f.blocks) {
     for (ir::ValueId id : block.insts) {
       const ir::Inst& inst = f.insts[id];
-      if (inst.op == ir::Op::Begin && inst.attr > 0) {
-        return static_cast<std::uint32_t>(inst.attr);
+      if (inst.op == ir::Op::Begin && inst.get<ir::SourceLine>().line > 0) {
+        return inst.get<ir::SourceLine>().line;
       }
     }
   }

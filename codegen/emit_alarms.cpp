@@ -31,12 +31,38 @@ bool FunctionEmitter::isInlineValue(const ir::Inst& inst) const {
     case ir::Op::RetSeq:
       return true;
     case ir::Op::Fn:
-      return isInlineBuiltin(static_cast<Builtin>(inst.attr));
+      return isInlineBuiltin(inst.get<ir::BuiltinFn>().fn);
     case ir::Op::LdVar:
-      return isDirectVariable(inst.attr);
-    default:
-      return false;
+      return isDirectVariable(inst.get<ir::VarNumber>().number);
+    case ir::Op::Mod: // through the runtime
+    case ir::Op::BitAnd:
+    case ir::Op::BitOr:
+    case ir::Op::BitXor:
+    case ir::Op::RoundAddr:
+    case ir::Op::Phi:
+    case ir::Op::BlockSkip:
+    case ir::Op::StVar:
+    case ir::Op::LdInd:
+    case ir::Op::StInd:
+    case ir::Op::Adp:
+    case ir::Op::Begin:
+    case ir::Op::Nc:
+    case ir::Op::CallMacro:
+    case ir::Op::Dprnt:
+    case ir::Op::Bprnt:
+    case ir::Op::Popen:
+    case ir::Op::Pclos:
+    case ir::Op::Trace:
+    case ir::Op::Br:
+    case ir::Op::CondBr:
+    case ir::Op::Switch:
+    case ir::Op::Resume:
+    case ir::Op::Ret:
+    case ir::Op::Raise:
+    case ir::Op::Unreachable:
+      break;
   }
+  return false;
 }
 
 void FunctionEmitter::alarmIf(llvm::Value* cond, int key) {

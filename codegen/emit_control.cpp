@@ -48,8 +48,8 @@ void FunctionEmitter::at(std::uint32_t line) {
 // Instructions that passes made up without a line of their own (hoisted
 // loads, say) belong to the program as a whole.
 std::uint32_t FunctionEmitter::lineOf(const ir::Inst& inst) const {
-  if (inst.op == ir::Op::Begin && inst.attr > 0) {
-    return static_cast<std::uint32_t>(inst.attr);
+  if (inst.op == ir::Op::Begin && inst.get<ir::SourceLine>().line > 0) {
+    return inst.get<ir::SourceLine>().line;
   }
   return inst.line != 0 ? inst.line : firstLine_;
 }
@@ -130,16 +130,12 @@ void FunctionEmitter::emitPrologue() {
 
 namespace {
 
+// A resume of an NC block may make its call in mbc.resume.
 bool staleAfter(ir::Op op, bool stale) {
-  switch (op) {
-    case ir::Op::Begin:
-      return false;
-    case ir::Op::CallMacro:
-    case ir::Op::Resume: // of an NC block: mbc.resume may make its call
-      return true;
-    default:
-      return stale;
+  if (op == ir::Op::Begin) {
+    return false;
   }
+  return stale || op == ir::Op::CallMacro || op == ir::Op::Resume;
 }
 
 } // namespace
@@ -180,12 +176,11 @@ void FunctionEmitter::emitBlock(ir::BlockId b) {
     const ir::Inst& inst = fn_.insts[id];
     at(lineOf(inst));
     if (inst.op == ir::Op::Phi) {
-      llvm::Type* type = inst.type == ir::Type::Bool ? abi_.i1 : abi_.f64;
-      values_[id] = b_.CreatePHI(type, static_cast<unsigned>(inst.ops.size()));
+      emitInst(id);
     } else if (ir::opInfo(inst.op).flags & ir::Terminator) {
       flushAlarms();
       flushAdp();
-      emitTerminator(inst);
+      emitInst(id);
     } else {
       if (!isInlineValue(inst)) {
         flushAlarms();
@@ -278,39 +273,6 @@ void FunctionEmitter::leaveStopped(int endKind) {
   b_.CreateCall(abi_.fn(Rt::mbrt_finish),
                 {ctx_, llvm::ConstantInt::get(abi_.i32, endKind)});
   leave(llvm::ConstantInt::get(abi_.i32, MBRT_STOP));
-}
-
-void FunctionEmitter::emitTerminator(const ir::Inst& inst) {
-  switch (inst.op) {
-    case ir::Op::Br:
-      jump(inst.targets[0]);
-      return;
-    case ir::Op::CondBr: {
-      llvm::BasicBlock* here = b_.GetInsertBlock();
-      incoming_[inst.targets[0]].push_back({here, current_});
-      incoming_[inst.targets[1]].push_back({here, current_});
-      b_.CreateCondBr(values_[inst.ops[0]], blocks_[inst.targets[0]],
-                      blocks_[inst.targets[1]]);
-      return;
-    }
-    case ir::Op::Switch:
-      emitSwitch(inst);
-      return;
-    case ir::Op::Resume:
-      emitResume(inst);
-      return;
-    case ir::Op::Ret:
-      emitRet();
-      return;
-    case ir::Op::Raise:
-      raise(static_cast<int>(inst.attr),
-            inst.str != 0 ? m_.ir.strings[inst.str - 1].c_str() : nullptr);
-      return;
-    default:
-      raise(static_cast<int>(AlarmId::InternalError),
-            "compiled code: unreachable code reached");
-      return;
-  }
 }
 
 // The end of a called program's text returns like M99; the end of the main

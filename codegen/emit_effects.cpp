@@ -9,52 +9,8 @@
 
 namespace mbc::codegen::detail {
 
-namespace {} // namespace
-
 bool isDirectVariable(std::int64_t n) {
   return isLocal(n) || isFixedCommon(n);
-}
-
-llvm::Value* FunctionEmitter::emitEffect(const ir::Inst& inst) {
-  switch (inst.op) {
-    case ir::Op::LdVar:
-      return emitLoadVar(static_cast<int>(inst.attr));
-    case ir::Op::StVar:
-      emitStoreVar(inst, static_cast<int>(inst.attr), values_[inst.ops[0]]);
-      return nullptr;
-    case ir::Op::LdInd:
-      return emitLoadIndirect(numOperand(inst, 0));
-    case ir::Op::StInd:
-      emitStoreIndirect(inst, numOperand(inst, 0), values_[inst.ops[1]]);
-      return nullptr;
-    case ir::Op::Adp:
-      return callStatusOut(Rt::mbrt_adp, {ctx_, numOperand(inst, 0)});
-    case ir::Op::Begin:
-      emitBegin(inst);
-      return nullptr;
-    case ir::Op::Nc:
-      return emitNc(inst);
-    case ir::Op::CallMacro:
-      return emitCallMacro(inst);
-    case ir::Op::Dprnt:
-    case ir::Op::Bprnt:
-      emitPrint(inst);
-      return nullptr;
-    case ir::Op::Popen:
-      check(b_.CreateCall(abi_.fn(Rt::mbrt_popen), {ctx_}));
-      return nullptr;
-    case ir::Op::Pclos:
-      check(b_.CreateCall(abi_.fn(Rt::mbrt_pclos), {ctx_}));
-      return nullptr;
-    case ir::Op::Trace:
-      emitTrace(inst);
-      return nullptr;
-    default:
-      raise(static_cast<int>(AlarmId::InternalError),
-            "compiled code: unexpected operation");
-      b_.SetInsertPoint(newBlock("dead"));
-      return nullptr;
-  }
 }
 
 // mbrt_begin_block inline: where alarms and motion are reported, and the
@@ -65,7 +21,9 @@ void FunctionEmitter::emitBegin(const ir::Inst& inst) {
   if (fileStale_) {
     b_.CreateStore(file_, blockFile_);
   }
-  b_.CreateStore(llvm::ConstantInt::get(abi_.i32, inst.attr), blockLine_);
+  b_.CreateStore(
+      llvm::ConstantInt::get(abi_.i32, inst.get<ir::SourceLine>().line),
+      blockLine_);
   llvm::Value* count = b_.CreateAdd(b_.CreateLoad(abi_.i64, blockCount_),
                                     llvm::ConstantInt::get(abi_.i64, 1));
   b_.CreateStore(count, blockCount_);
@@ -105,7 +63,8 @@ void FunctionEmitter::flushAdp() {
 
 bool FunctionEmitter::keepsAdpPending(const ir::Inst& inst) const {
   return inst.op == ir::Op::Begin ||
-         (inst.op == ir::Op::StVar && isDirectVariable(inst.attr)) ||
+         (inst.op == ir::Op::StVar &&
+          isDirectVariable(inst.get<ir::VarNumber>().number)) ||
          isInlineValue(inst);
 }
 
@@ -113,12 +72,12 @@ llvm::Value* FunctionEmitter::commonSlot(llvm::Value* number) {
   return b_.CreateInBoundsGEP(abi_.f64, commons_, number);
 }
 
-llvm::Value* FunctionEmitter::message(const ir::Inst& inst) {
-  if (inst.str == 0 || inst.str > m_.ir.strings.size() ||
-      m_.ir.strings[inst.str - 1].empty()) {
+llvm::Value* FunctionEmitter::message(ir::StringRef ref) {
+  if (ref == 0 || ref > m_.ir.strings.size() ||
+      m_.ir.strings[ref - 1].empty()) {
     return llvm::ConstantPointerNull::get(abi_.ptr);
   }
-  return m_.cstring(m_.ir.strings[inst.str - 1]);
+  return m_.cstring(m_.ir.strings[ref - 1]);
 }
 
 llvm::Value* FunctionEmitter::emitLoadVar(int number) {
@@ -146,7 +105,8 @@ void FunctionEmitter::emitStoreVar(const ir::Inst& inst, int number,
     return;
   }
   check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
-                      {ctx_, constant(number), value, message(inst)}));
+                      {ctx_, constant(number), value,
+                       message(inst.get<ir::VarNumber>().message)}));
 }
 
 namespace {
@@ -238,8 +198,9 @@ void FunctionEmitter::emitStoreIndirect(const ir::Inst& inst, llvm::Value* x,
                  return nullptr;
                },
                [&]() -> llvm::Value* {
-                 check(b_.CreateCall(abi_.fn(Rt::mbrt_write_var),
-                                     {ctx_, x, value, message(inst)}));
+                 check(b_.CreateCall(
+                     abi_.fn(Rt::mbrt_write_var),
+                     {ctx_, x, value, message(inst.get<ir::Message>().text)}));
                  return nullptr;
                }});
 }
@@ -267,8 +228,7 @@ llvm::Value* FunctionEmitter::loadFlow() {
 // vacant as 0. Words that are all constants (the blocks of a posted part
 // program) are one constant array: no stores, and no constant-pool entry per
 // value, which LLVM finds by a linear search.
-FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst,
-                                                   std::size_t first) {
+FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst) {
   /// One word: its fields, and whether a vacant value drops it.
   struct Word {
     llvm::Constant* letter;
@@ -277,12 +237,13 @@ FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst,
     bool mayDrop;
   };
 
-  std::size_t skip = inst.cases.size() == inst.ops.size() ? 0 : first;
+  const std::vector<ir::AddressWord>& descs = inst.get<ir::Words>().words;
+  const std::size_t first = ir::firstWordOperand(inst.op);
   std::vector<Word> words;
   std::vector<llvm::Constant*> fixed;
   for (std::size_t k = first; k < inst.ops.size(); ++k) {
-    std::int64_t desc = inst.cases[k - skip];
-    ir::WordKind kind = ir::wordKind(desc);
+    const ir::AddressWord& desc = descs[k - first];
+    ir::WordKind kind = desc.kind;
     bool bare = kind == ir::WordKind::Var || kind == ir::WordKind::NegVar;
     llvm::Value* value = values_[inst.ops[k]];
     if (!bare) {
@@ -290,7 +251,7 @@ FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst,
     } else if (kind == ir::WordKind::NegVar) {
       value = b_.CreateFSub(constant(0), value); // vacant stays NaN
     }
-    const Word word{llvm::ConstantInt::get(abi_.i8, ir::wordLetter(desc)),
+    const Word word{llvm::ConstantInt::get(abi_.i8, desc.letter),
                     llvm::ConstantInt::get(abi_.i8, runtimeWordKind(kind)),
                     value,
                     bare && fn_.insts[inst.ops[k]].type == ir::Type::VNum};
@@ -323,7 +284,7 @@ FunctionEmitter::Words FunctionEmitter::buildWords(const ir::Inst& inst,
 }
 
 llvm::Value* FunctionEmitter::emitNc(const ir::Inst& inst) {
-  const Words words = buildWords(inst, 0);
+  const Words words = buildWords(inst);
   check(b_.CreateCall(abi_.fn(Rt::mbrt_nc_block),
                       {ctx_, words.data, words.count, flowSlot_}));
   return loadFlow();
@@ -334,7 +295,7 @@ llvm::Value* FunctionEmitter::emitNc(const ir::Inst& inst) {
 llvm::Value* FunctionEmitter::emitCallMacro(const ir::Inst& inst) {
   llvm::Value* p = numOperand(inst, 0);
   llvm::Value* l = numOperand(inst, 1);
-  const Words words = buildWords(inst, 2);
+  const Words words = buildWords(inst);
   b_.CreateCall(abi_.fn(Rt::mbrt_trace_call),
                 {ctx_, p, l, words.data, words.count});
   check(
@@ -344,34 +305,31 @@ llvm::Value* FunctionEmitter::emitCallMacro(const ir::Inst& inst) {
       loadFlow(), llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_NEXT), kFlowKind);
 }
 
-// Items: a text item is str << 1 (str indexes Module::strings), a value
-// item (c * 10 + d) << 1 | 1 and takes the next operand.
 void FunctionEmitter::emitPrint(const ir::Inst& inst) {
-  llvm::Value* items = scratch(abi_.printItem, inst.cases.size());
+  const std::vector<ir::PrintItem>& list = inst.get<ir::PrintItems>().items;
+  llvm::Value* items = scratch(abi_.printItem, list.size());
   std::size_t next = 0;
-  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    std::int64_t item = inst.cases[i];
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const ir::PrintItem& item = list[i];
     llvm::Value* slot = b_.CreateConstInBoundsGEP1_64(abi_.printItem, items, i);
     llvm::Value* text = llvm::ConstantPointerNull::get(abi_.ptr);
     llvm::Value* value = constant(0);
-    int format = 0;
-    if (item & 1) {
-      format = static_cast<int>(item >> 1);
+    if (item.isValue()) {
       value = values_[inst.ops[next++]];
     } else {
-      text = m_.cstring(m_.ir.strings[static_cast<std::size_t>(item >> 1)]);
+      text = m_.cstring(m_.ir.strings[item.text - 1]);
     }
     b_.CreateStore(text, b_.CreateStructGEP(abi_.printItem, slot, kItemText));
     b_.CreateStore(value, b_.CreateStructGEP(abi_.printItem, slot, kItemValue));
-    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, format / 10),
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, item.intDigits),
                    b_.CreateStructGEP(abi_.printItem, slot, kItemIntDigits));
-    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, format % 10),
+    b_.CreateStore(llvm::ConstantInt::get(abi_.i32, item.fracDigits),
                    b_.CreateStructGEP(abi_.printItem, slot, kItemFracDigits));
   }
   Rt f = inst.op == ir::Op::Dprnt ? Rt::mbrt_dprnt : Rt::mbrt_bprnt;
   check(b_.CreateCall(
       abi_.fn(f),
-      {ctx_, items, llvm::ConstantInt::get(abi_.i64, inst.cases.size())}));
+      {ctx_, items, llvm::ConstantInt::get(abi_.i64, list.size())}));
 }
 
 // Only while a trace sink is set: code compiled with trace statements (all
@@ -391,7 +349,7 @@ void FunctionEmitter::emitTrace(const ir::Inst& inst) {
     b_.CreateStore(v, b_.CreateConstInBoundsGEP1_64(abi_.f64, values, i));
   }
   b_.CreateCall(abi_.fn(Rt::mbrt_trace_values),
-                {ctx_, message(inst), values,
+                {ctx_, message(inst.get<ir::Message>().text), values,
                  llvm::ConstantInt::get(abi_.i64, inst.ops.size())});
   b_.CreateBr(rest);
   b_.SetInsertPoint(rest);

@@ -30,14 +30,15 @@ bool FunctionEmitter::isStep(ir::BlockId b) const {
   }
   const ir::Inst& last = fn_.insts[insts.back()];
   if (last.op != ir::Op::Resume || last.ops[0] != nc ||
-      last.targets.size() != 1 || !last.cases.empty()) {
+      last.targets.size() != 1) {
     return false;
   }
-  const ir::Inst& words = fn_.insts[nc];
-  for (std::size_t k = 0; k < words.ops.size(); ++k) {
-    const ir::WordKind kind = ir::wordKind(words.cases[k]);
+  const ir::Inst& block = fn_.insts[nc];
+  const std::vector<ir::AddressWord>& words = block.get<ir::Words>().words;
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const ir::WordKind kind = words[k].kind;
     if (kind == ir::WordKind::Var || kind == ir::WordKind::NegVar ||
-        fn_.insts[words.ops[k]].op != ir::Op::Const) {
+        fn_.insts[block.ops[k]].op != ir::Op::Const) {
       return false;
     }
   }
@@ -88,16 +89,16 @@ void FunctionEmitter::emitRun(const std::vector<ir::BlockId>& run) {
       if (inst.op == ir::Op::Const) {
         emitInst(id);
       } else if (inst.op == ir::Op::Begin) {
-        steps.push_back(static_cast<std::int32_t>(inst.attr));
+        steps.push_back(
+            static_cast<std::int32_t>(inst.get<ir::SourceLine>().line));
       } else if (inst.op == ir::Op::Nc) {
         steps.push_back(static_cast<std::int32_t>(inst.ops.size()));
         steps.push_back(static_cast<std::int32_t>(values.size()));
+        const std::vector<ir::AddressWord>& words = inst.get<ir::Words>().words;
         for (std::size_t k = 0; k < inst.ops.size(); ++k) {
-          const ir::WordKind kind = ir::wordKind(inst.cases[k]);
-          codes.push_back(
-              static_cast<std::uint8_t>(ir::wordLetter(inst.cases[k])));
-          codes.push_back(runtimeWordKind(kind));
-          values.push_back(fn_.insts[inst.ops[k]].imm);
+          codes.push_back(static_cast<std::uint8_t>(words[k].letter));
+          codes.push_back(runtimeWordKind(words[k].kind));
+          values.push_back(fn_.insts[inst.ops[k]].get<ir::Number>().value);
         }
       } else {
         resume = &inst;

@@ -14,7 +14,7 @@ namespace mbc::codegen::detail {
 // number outside 1..99999 or without an N is PS0128, worded by the runtime.
 void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
   llvm::Value* target = numOperand(inst, 0);
-  switchOnSequence(inst, target, 0);
+  switchOnSequence(inst, target);
   bool landing = fn_.insts[inst.ops[0]].op == ir::Op::RetSeq;
   leave(b_.CreateCall(
       abi_.fn(Rt::mbrt_raise_sequence),
@@ -22,8 +22,10 @@ void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
 }
 
 llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
-                                                    llvm::Value* number,
-                                                    std::size_t offset) {
+                                                    llvm::Value* number) {
+  const std::vector<std::int64_t>& numbers =
+      inst.get<ir::SequenceCases>().numbers;
+  const std::size_t offset = ir::firstCaseTarget(inst.op);
   llvm::Value* n = roundHalfAway(number);
   llvm::Value* inRange =
       b_.CreateAnd(b_.CreateFCmpOGE(n, constant(1)),
@@ -32,16 +34,14 @@ llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
                                      llvm::ConstantInt::get(abi_.i32, 0));
   llvm::BasicBlock* missing = newBlock("noseq");
   llvm::SwitchInst* sw =
-      b_.CreateSwitch(seq, missing, static_cast<unsigned>(inst.cases.size()));
+      b_.CreateSwitch(seq, missing, static_cast<unsigned>(numbers.size()));
   std::set<std::int64_t> seen;
-  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    if (i + offset >= inst.targets.size() ||
-        !seen.insert(inst.cases[i]).second) {
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    if (i + offset >= inst.targets.size() || !seen.insert(numbers[i]).second) {
       continue;
     }
     ir::BlockId target = inst.targets[i + offset];
-    sw->addCase(llvm::ConstantInt::get(abi_.i32, inst.cases[i]),
-                blocks_[target]);
+    sw->addCase(llvm::ConstantInt::get(abi_.i32, numbers[i]), blocks_[target]);
     incoming_[target].push_back({sw->getParent(), current_});
   }
   b_.SetInsertPoint(missing);
@@ -53,17 +53,18 @@ llvm::BasicBlock* FunctionEmitter::switchOnSequence(const ir::Inst& inst,
 // IR; lowering always gives the landing). An empty table can only raise
 // PS0128.
 void FunctionEmitter::jumpToSeq(const ir::Inst& inst, llvm::Value* seq) {
-  if (inst.cases.empty() && inst.targets.size() == 2) {
+  const ir::SequenceCases& cases = inst.get<ir::SequenceCases>();
+  if (cases.landing) {
     b_.CreateStore(seq, retSeqSlot_);
     jump(inst.targets[1]);
     return;
   }
-  if (inst.cases.empty()) {
+  if (cases.numbers.empty()) {
     leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
                         {ctx_, m_.cstring("M99 P"), seq, name_}));
     return;
   }
-  switchOnSequence(inst, seq, 1);
+  switchOnSequence(inst, seq);
   leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_sequence),
                       {ctx_, m_.cstring("M99 P"), seq, name_}));
 }
@@ -115,9 +116,10 @@ void FunctionEmitter::storeFlow(llvm::Value* flow) {
 // stands for an empty table) is the same for every resume of the function
 // and gets one block; a resume with its own case table gets its own.
 llvm::BasicBlock* FunctionEmitter::seqBlock(const ir::Inst& inst) {
-  bool toLanding = inst.cases.empty() && inst.targets.size() == 2;
+  const ir::SequenceCases& cases = inst.get<ir::SequenceCases>();
+  bool toLanding = cases.landing;
   bool shared =
-      inst.cases.empty() && (!toLanding || !blockHasPhis(inst.targets[1]));
+      cases.numbers.empty() && (!toLanding || !blockHasPhis(inst.targets[1]));
   llvm::BasicBlock*& block =
       sharedSeq_[toLanding ? static_cast<std::int64_t>(inst.targets[1]) : -1];
   if (shared && block != nullptr) {

@@ -65,86 +65,37 @@ llvm::Value* FunctionEmitter::callStatusOut(Rt f,
   return b_.CreateLoad(abi_.f64, outSlot_);
 }
 
-void FunctionEmitter::emitInst(ir::ValueId id) {
-  const ir::Inst& inst = fn_.insts[id];
-  values_[id] =
-      inst.op <= ir::Op::BlockSkip ? emitValue(inst) : emitEffect(inst);
-}
-
-llvm::Value* FunctionEmitter::emitValue(const ir::Inst& inst) {
-  switch (inst.op) {
-    case ir::Op::Const:
-      return constant(inst.imm);
-    case ir::Op::Vacant:
-      return llvm::ConstantFP::get(abi_.context,
-                                   llvm::APFloat(llvm::APFloat::IEEEdouble(),
-                                                 llvm::APInt(64, kVacantBits)));
-    case ir::Op::Add:
-    case ir::Op::Sub:
-    case ir::Op::Mul:
-    case ir::Op::Div:
-      return emitArith(inst);
-    case ir::Op::Mod:
-    case ir::Op::BitAnd:
-    case ir::Op::BitOr:
-    case ir::Op::BitXor:
-      return emitRuntimeArith(inst);
-    case ir::Op::Neg: // 0 - x is -x without -0.0
-      return b_.CreateFSub(constant(0), numOperand(inst, 0));
-    case ir::Op::ToNum:
-      return toNum(values_[inst.ops[0]]);
-    case ir::Op::Fn:
-      return emitFn(inst);
-    case ir::Op::RoundAddr:
-      return callStatusOut(Rt::mbrt_round_address,
-                           {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr),
-                            numOperand(inst, 0)});
-    case ir::Op::LogAnd:
-      return b_.CreateAnd(values_[inst.ops[0]], values_[inst.ops[1]]);
-    case ir::Op::LogOr:
-      return b_.CreateOr(values_[inst.ops[0]], values_[inst.ops[1]]);
-    case ir::Op::LogXor:
-      return b_.CreateXor(values_[inst.ops[0]], values_[inst.ops[1]]);
-    case ir::Op::RetSeq:
-      return b_.CreateLoad(abi_.f64, retSeqSlot_);
-    case ir::Op::BlockSkip:
-      return b_.CreateICmpNE(
-          b_.CreateCall(abi_.fn(Rt::mbrt_skip_switch),
-                        {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr)}),
-          llvm::ConstantInt::get(abi_.i32, 0));
-    default:
-      return emitCompare(inst);
-  }
-}
-
-// evalBinary's + - * / inline: the same IEEE operations, then its checks.
-llvm::Value* FunctionEmitter::emitArith(const ir::Inst& inst) {
+// evalBinary's + - * / inline: the same IEEE operations, then its checks;
+// MOD and the bit operations through the runtime.
+llvm::Value* FunctionEmitter::emitArith(const ir::Inst& inst, BinOp op) {
   llvm::Value* a = numOperand(inst, 0);
   llvm::Value* b = numOperand(inst, 1);
-  switch (inst.op) {
-    case ir::Op::Add: // the sum of two values that are not -0.0 is not -0.0
+  switch (op) {
+    case BinOp::Add: // the sum of two values that are not -0.0 is not -0.0
       return finite(b_.CreateFAdd(a, b));
-    case ir::Op::Sub:
+    case BinOp::Sub:
       return finite(b_.CreateFSub(a, b));
-    case ir::Op::Mul:
+    case BinOp::Mul:
       return finite(positiveZero(b_.CreateFMul(a, b)));
-    default:
+    case BinOp::Div:
       alarmIf(b_.CreateFCmpOEQ(b, constant(0)), alarm(AlarmId::ZeroDivide));
       return finite(positiveZero(b_.CreateFDiv(a, b)));
+    case BinOp::Mod:
+    case BinOp::And:
+    case BinOp::Or:
+    case BinOp::Xor:
+      break;
   }
-}
-
-llvm::Value* FunctionEmitter::emitRuntimeArith(const ir::Inst& inst) {
-  const auto op = static_cast<int>(*ir::binaryOf(inst.op));
-  return callStatusOut(Rt::mbrt_binary,
-                       {ctx_, llvm::ConstantInt::get(abi_.i32, op),
-                        numOperand(inst, 0), numOperand(inst, 1)});
+  return callStatusOut(
+      Rt::mbrt_binary,
+      {ctx_, llvm::ConstantInt::get(abi_.i32, static_cast<std::uint64_t>(op)),
+       a, b});
 }
 
 // evalCompare: EQ and NE tell vacant from 0 (vacant EQ vacant); a num is
 // never vacant, so an ordered compare suffices unless both may be.
-llvm::Value* FunctionEmitter::emitCompare(const ir::Inst& inst) {
-  if (inst.op == ir::Op::Eq || inst.op == ir::Op::Ne) {
+llvm::Value* FunctionEmitter::emitCompare(const ir::Inst& inst, RelOp op) {
+  if (op == RelOp::Eq || op == RelOp::Ne) {
     llvm::Value* a = values_[inst.ops[0]];
     llvm::Value* b = values_[inst.ops[1]];
     llvm::Value* equal = b_.CreateFCmpOEQ(a, b);
@@ -152,20 +103,23 @@ llvm::Value* FunctionEmitter::emitCompare(const ir::Inst& inst) {
         fn_.insts[inst.ops[1]].type == ir::Type::VNum) {
       equal = b_.CreateOr(equal, b_.CreateAnd(isVacant(a), isVacant(b)));
     }
-    return inst.op == ir::Op::Eq ? equal : b_.CreateNot(equal);
+    return op == RelOp::Eq ? equal : b_.CreateNot(equal);
   }
   llvm::Value* a = numOperand(inst, 0);
   llvm::Value* b = numOperand(inst, 1);
-  switch (inst.op) {
-    case ir::Op::Gt:
+  switch (op) {
+    case RelOp::Gt:
       return b_.CreateFCmpOGT(a, b);
-    case ir::Op::Ge:
+    case RelOp::Ge:
       return b_.CreateFCmpOGE(a, b);
-    case ir::Op::Lt:
+    case RelOp::Lt:
       return b_.CreateFCmpOLT(a, b);
-    default:
-      return b_.CreateFCmpOLE(a, b);
+    case RelOp::Le:
+    case RelOp::Eq:
+    case RelOp::Ne:
+      break;
   }
+  return b_.CreateFCmpOLE(a, b);
 }
 
 bool isInlineBuiltin(Builtin f) {
@@ -185,13 +139,14 @@ bool isInlineBuiltin(Builtin f) {
 // The rounding functions, ABS and SQRT inline (exact IEEE operations, as in
 // evalBuiltin); the trigonometric and other functions through the runtime.
 llvm::Value* FunctionEmitter::emitFn(const ir::Inst& inst) {
-  auto f = static_cast<Builtin>(inst.attr);
+  const Builtin f = inst.get<ir::BuiltinFn>().fn;
   llvm::Value* x = numOperand(inst, 0);
   if (!isInlineBuiltin(f)) {
     llvm::Value* y = inst.ops.size() > 1 ? numOperand(inst, 1) : constant(0);
     return callStatusOut(
         Rt::mbrt_builtin,
-        {ctx_, llvm::ConstantInt::get(abi_.i32, inst.attr), x, y});
+        {ctx_, llvm::ConstantInt::get(abi_.i32, static_cast<std::uint64_t>(f)),
+         x, y});
   }
   switch (f) {
     case Builtin::Abs:

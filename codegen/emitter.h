@@ -119,7 +119,6 @@ private:
   void findStaleFile(const ir::Cfg& cfg);
   void emitBlock(ir::BlockId b);
   void fillPhis();
-  void emitTerminator(const ir::Inst& inst);
   /// The input `phi` takes from IR block `pred` (nullptr: none).
   llvm::Value* inputFrom(const ir::Inst& phi, ir::BlockId pred) const;
 
@@ -136,11 +135,10 @@ private:
   bool blockHasPhis(ir::BlockId b) const;
   void jumpToSeq(const ir::Inst& inst, llvm::Value* seq);
   void emitSwitch(const ir::Inst& inst);
-  /// Switches on round(number) in 1..99999: cases[i] go to
-  /// targets[i + offset]. Returns the block for every other number, with
-  /// the insert point there.
-  llvm::BasicBlock* switchOnSequence(const ir::Inst& inst, llvm::Value* number,
-                                     std::size_t offset);
+  /// Switches on round(number) in 1..99999 to the cases of a switch or
+  /// resume (ir::SequenceCases). Returns the block for every other number,
+  /// with the insert point there.
+  llvm::BasicBlock* switchOnSequence(const ir::Inst& inst, llvm::Value* number);
   void emitRet();
   void jump(ir::BlockId target);
   /// Goes on in a new block when `status` is 0, else leaves with it.
@@ -173,12 +171,13 @@ private:
                               bool unlikely);
   llvm::BasicBlock* newBlock(const char* name);
 
-  // Values (emit_values.cpp).
+  // One switch over every operation (emit_inst.cpp).
   void emitInst(ir::ValueId id);
-  llvm::Value* emitValue(const ir::Inst& inst);
-  llvm::Value* emitArith(const ir::Inst& inst);
-  llvm::Value* emitRuntimeArith(const ir::Inst& inst);
-  llvm::Value* emitCompare(const ir::Inst& inst);
+  llvm::Value* emitOp(const ir::Inst& inst);
+
+  // Values (emit_values.cpp).
+  llvm::Value* emitArith(const ir::Inst& inst, BinOp op);
+  llvm::Value* emitCompare(const ir::Inst& inst, RelOp op);
   llvm::Value* emitFn(const ir::Inst& inst);
   llvm::Value* finite(llvm::Value* result);
   llvm::Value* positiveZero(llvm::Value* x);
@@ -191,7 +190,6 @@ private:
   llvm::Value* callStatusOut(Rt f, std::vector<llvm::Value*> args);
 
   // Effects (emit_effects.cpp).
-  llvm::Value* emitEffect(const ir::Inst& inst);
   void emitBegin(const ir::Inst& inst);
   llvm::Value* emitLoadVar(int number);
   void emitStoreVar(const ir::Inst& inst, int number, llvm::Value* value);
@@ -225,10 +223,10 @@ private:
     llvm::Value* count;
   };
 
-  Words buildWords(const ir::Inst& inst, std::size_t first);
+  Words buildWords(const ir::Inst& inst);
   void emitPrint(const ir::Inst& inst);
   void emitTrace(const ir::Inst& inst);
-  llvm::Value* message(const ir::Inst& inst);
+  llvm::Value* message(ir::StringRef ref);
   llvm::Value* loadFlow();
   llvm::Value* scratch(llvm::Type* type, std::size_t count);
 

@@ -1,4 +1,4 @@
-// The IR evaluator's control: activations, phis, terminators, calls (G65,
+// The IR evaluator's control: activations, phis, transfers, calls (G65,
 // M98) and returns (M99 [P], the end of a called program's text), mirroring
 // interp/interpreter.cpp and interp/statements.cpp effect for effect.
 #include "ir/evaluator.h"
@@ -74,15 +74,17 @@ mbrt_status Evaluator::runFunction(int index, int depth) {
       }
     }
     const std::size_t last = b.insts.size() - 1;
-    for (; i < last; ++i) {
-      if (mbrt_status st = exec(fn, frame, depth, b.insts[i])) {
+    BlockId next = kNoNext;
+    for (; i <= last; ++i) {
+      if (mbrt_status st = exec(fn, frame, depth, b.insts[i], next)) {
         return st;
       }
+      if (next != kNoNext && i != last) {
+        return internalError("terminator in the middle of a block");
+      }
     }
-    BlockId next = kLeave;
-    if (mbrt_status st =
-            terminate(fn, frame, depth, fn.insts[b.insts[last]], next)) {
-      return st;
+    if (next == kNoNext) {
+      return internalError("block without a terminator");
     }
     if (next == kLeave) {
       return 0;
@@ -131,41 +133,6 @@ mbrt_status Evaluator::enterPhis(const Function& fn, Frame& frame,
   return 0;
 }
 
-mbrt_status Evaluator::terminate(const Function& fn, Frame& frame, int depth,
-                                 const Inst& inst, BlockId& next) {
-  switch (inst.op) {
-    case Op::Br:
-      next = inst.targets[0];
-      return 0;
-    case Op::CondBr:
-      next = frame.values[inst.ops[0]] != 0 ? inst.targets[0] : inst.targets[1];
-      return 0;
-    case Op::Switch: // a landing's switch words its alarm as M99 P does
-      return switchTo(
-          fn, inst, frame.values[inst.ops[0]],
-          fn.insts[inst.ops[0]].op == Op::RetSeq ? "M99 P" : "GOTO ", next);
-    case Op::Resume:
-      return resume(fn, frame, depth, inst, next);
-    case Op::Ret:
-      // The end of a called program's text returns like M99; the end of the
-      // main program's text ends the run.
-      if (depth == 0) {
-        mbrt_finish(ctx_, MBRT_END_PROGRAM);
-        return kStop;
-      }
-      next = kLeave;
-      return 0;
-    case Op::Raise:
-      return mbrt_raise(ctx_, static_cast<int>(inst.attr),
-                        inst.str != 0 ? module_.strings[inst.str - 1].c_str()
-                                      : nullptr);
-    case Op::Unreachable:
-      return internalError("unreachable code reached");
-    default:
-      return internalError("block without a terminator");
-  }
-}
-
 // Computed GOTO (interp execGoto/jumpTo), and a landing's M99 P.
 mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
                                 double value, const char* jump, BlockId& next) {
@@ -174,14 +141,14 @@ mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
   if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, jump, target, fn.name.c_str());
   }
-  return caseTarget(fn, inst, static_cast<int>(n), 0, next);
+  return caseTarget(fn, inst, static_cast<int>(n), next);
 }
 
 // M99 P back into this activation: to the landing, or through the
 // resume's own case table.
 mbrt_status Evaluator::resumeAt(const Function& fn, Frame& frame,
                                 const Inst& inst, double seq, BlockId& next) {
-  if (inst.cases.empty() && inst.targets.size() == 2) {
+  if (inst.get<SequenceCases>().landing) {
     frame.retSeq = seq;
     next = inst.targets[1];
     return 0;
@@ -196,15 +163,17 @@ mbrt_status Evaluator::jumpToSeq(const Function& fn, const Inst& inst,
   if (!isSequenceNumber(n)) {
     return mbrt_raise_sequence(ctx_, "M99 P", seq, fn.name.c_str());
   }
-  return caseTarget(fn, inst, static_cast<int>(n), 1, next);
+  return caseTarget(fn, inst, static_cast<int>(n), next);
 }
 
-// The case for sequence number `seq`: cases[i] goes to targets[i + offset].
+// The case for sequence number `seq` (SequenceCases).
 mbrt_status Evaluator::caseTarget(const Function& fn, const Inst& inst, int seq,
-                                  std::size_t offset, BlockId& next) {
-  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    if (inst.cases[i] == seq && i + offset < inst.targets.size()) {
-      next = inst.targets[i + offset];
+                                  BlockId& next) {
+  const std::vector<std::int64_t>& numbers = inst.get<SequenceCases>().numbers;
+  const std::size_t first = firstCaseTarget(inst.op);
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    if (numbers[i] == seq && i + first < inst.targets.size()) {
+      next = inst.targets[i + first];
       return 0;
     }
   }

@@ -42,15 +42,14 @@ public:
   mbrt_status run(int mainIndex);
 
 private:
-  static constexpr BlockId kLeave = 0xffffffffU;
+  static constexpr BlockId kLeave = 0xffffffffU;  // the activation ends
+  static constexpr BlockId kNoNext = 0xfffffffeU; // no terminator ran yet
 
   // Control (evaluator.cpp).
   mbrt_status runFunction(int index, int depth);
   Frame& frameAt(int depth, const Function& fn);
   mbrt_status enterPhis(const Function& fn, Frame& frame, const Block& block,
                         BlockId pred, std::size_t& first);
-  mbrt_status terminate(const Function& fn, Frame& frame, int depth,
-                        const Inst& inst, BlockId& next);
   mbrt_status resume(const Function& fn, Frame& frame, int depth,
                      const Inst& inst, BlockId& next);
   mbrt_status resumeNc(const Function& fn, Frame& frame, int depth,
@@ -62,18 +61,15 @@ private:
   mbrt_status jumpToSeq(const Function& fn, const Inst& inst, double seq,
                         BlockId& next);
   mbrt_status caseTarget(const Function& fn, const Inst& inst, int seq,
-                         std::size_t offset, BlockId& next);
+                         BlockId& next);
   mbrt_status call(int callee, int depth, int kind, const mbrt_word* args,
                    std::size_t count, long repeat, FlowRec& out);
   int findProgram(double number) const;
   mbrt_status internalError(const char* what);
 
   // Instructions (evaluator_ops.cpp).
-  mbrt_status exec(const Function& fn, Frame& frame, int depth, ValueId id);
-  mbrt_status execValue(const Inst& inst, Frame& frame, ValueId id);
-  mbrt_status execLogic(const Inst& inst, Frame& frame, ValueId id);
-  mbrt_status execVariable(const Inst& inst, Frame& frame, ValueId id);
-  mbrt_status execEffect(const Inst& inst, Frame& frame, int depth, ValueId id);
+  mbrt_status exec(const Function& fn, Frame& frame, int depth, ValueId id,
+                   BlockId& next);
   mbrt_status execFn(const Inst& inst, const Frame& frame, double& out);
   mbrt_status execNc(const Inst& inst, Frame& frame, FlowRec& out);
   mbrt_status execCallMacro(const Inst& inst, Frame& frame, int depth,
@@ -81,8 +77,10 @@ private:
   mbrt_status execPrint(const Inst& inst, const Frame& frame);
   mbrt_status execTrace(const Inst& inst, const Frame& frame);
   mbrt_status buildWords(const Inst& inst, const Frame& frame,
-                         std::size_t first, std::vector<mbrt_word>& out);
-  const char* message(const Inst& inst) const;
+                         std::vector<mbrt_word>& out);
+  /// The string `ref` names; nullptr for none. message(): also for "".
+  const char* text(StringRef ref) const;
+  const char* message(StringRef ref) const;
   mbrt_status check(AlarmId id);
 
   const Module& module_;

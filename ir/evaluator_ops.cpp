@@ -1,6 +1,7 @@
-// The IR evaluator's instructions other than terminators: values through the
-// shared arithmetic (mbc/arith.h), variables, NC blocks, G65 calls and
-// output, with the runtime calls of interp/eval.cpp and interp/statements.cpp.
+// The IR evaluator's instructions: values through the shared arithmetic
+// (mbc/arith.h), variables, NC blocks, G65 calls, output and the
+// terminators, with the runtime calls of interp/eval.cpp and
+// interp/statements.cpp.
 #include "ir/evaluator_impl.h"
 
 #include <fmt/format.h>
@@ -24,15 +25,18 @@ mbrt_status Evaluator::check(AlarmId id) {
                              : mbrt_raise(ctx_, static_cast<int>(id), nullptr);
 }
 
-// The frequent operations are handled here in one switch; the others by
-// execValue, execVariable and execEffect.
+// Every operation, in one switch over Op: -Wswitch names any op this engine
+// does not know. A terminator sets `next`.
 mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
-                            ValueId id) {
+                            ValueId id, BlockId& next) {
   const Inst& inst = fn.insts[id];
   double* v = frame.values.data();
   switch (inst.op) {
     case Op::Const:
-      v[id] = inst.imm;
+      v[id] = inst.get<Number>().value;
+      return 0;
+    case Op::Vacant:
+      v[id] = vacant();
       return 0;
     case Op::Add:
     case Op::Sub:
@@ -44,44 +48,6 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
     case Op::BitXor:
       return check(evalBinary(*binaryOf(inst.op), v[inst.ops[0]],
                               v[inst.ops[1]], &v[id]));
-    case Op::Eq:
-    case Op::Ne:
-    case Op::Gt:
-    case Op::Ge:
-    case Op::Lt:
-    case Op::Le:
-      v[id] = truth(
-          evalCompare(*relationOf(inst.op), v[inst.ops[0]], v[inst.ops[1]]));
-      return 0;
-    case Op::LdVar:
-      return mbrt_read_var(ctx_, static_cast<double>(inst.attr), &v[id]);
-    case Op::StVar:
-      return mbrt_write_var(ctx_, static_cast<double>(inst.attr),
-                            v[inst.ops[0]], message(inst));
-    case Op::Begin:
-      return mbrt_begin_block(ctx_, fn.file.c_str(),
-                              static_cast<int>(inst.attr));
-    default:
-      break;
-  }
-  switch (opInfo(inst.op).cls) {
-    case OpClass::Value:
-      return execValue(inst, frame, id);
-    case OpClass::Variable:
-      return execVariable(inst, frame, id);
-    case OpClass::Effect:
-    case OpClass::Control:
-      return execEffect(inst, frame, depth, id);
-  }
-  return internalError(opInfo(inst.op).mnemonic);
-}
-
-mbrt_status Evaluator::execValue(const Inst& inst, Frame& frame, ValueId id) {
-  std::vector<double>& v = frame.values;
-  switch (inst.op) {
-    case Op::Vacant:
-      v[id] = vacant();
-      return 0;
     case Op::Neg:
       v[id] = negate(v[inst.ops[0]]);
       return 0;
@@ -91,16 +57,17 @@ mbrt_status Evaluator::execValue(const Inst& inst, Frame& frame, ValueId id) {
     case Op::Fn:
       return execFn(inst, frame, v[id]);
     case Op::RoundAddr:
-      return mbrt_round_address(ctx_, static_cast<int>(inst.attr),
+      return mbrt_round_address(ctx_, inst.get<AddressLetter>().letter,
                                 v[inst.ops[0]], &v[id]);
-    default:
-      return execLogic(inst, frame, id);
-  }
-}
-
-mbrt_status Evaluator::execLogic(const Inst& inst, Frame& frame, ValueId id) {
-  std::vector<double>& v = frame.values;
-  switch (inst.op) {
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Lt:
+    case Op::Le:
+      v[id] = truth(
+          evalCompare(*relationOf(inst.op), v[inst.ops[0]], v[inst.ops[1]]));
+      return 0;
     case Op::LogAnd:
       v[id] = truth(v[inst.ops[0]] != 0 && v[inst.ops[1]] != 0);
       return 0;
@@ -110,54 +77,32 @@ mbrt_status Evaluator::execLogic(const Inst& inst, Frame& frame, ValueId id) {
     case Op::LogXor:
       v[id] = truth((v[inst.ops[0]] != 0) != (v[inst.ops[1]] != 0));
       return 0;
+    case Op::Phi: // enterPhis assigns the phis at the head of a block
+      return internalError("phi after the head of its block");
     case Op::RetSeq:
       v[id] = frame.retSeq;
       return 0;
     case Op::BlockSkip:
-      v[id] = truth(mbrt_skip_switch(ctx_, static_cast<int>(inst.attr)) != 0);
+      v[id] = truth(mbrt_skip_switch(ctx_, inst.get<SkipSwitch>().number) != 0);
       return 0;
-    default: // a phi after the head of its block
-      return internalError("phi after the head of its block");
-  }
-}
-
-mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
-                              double& out) {
-  Num args[2] = {0, 0};
-  for (std::size_t i = 0; i < inst.ops.size() && i < 2; ++i) {
-    args[i] = frame.values[inst.ops[i]];
-  }
-  return mbrt_builtin(ctx_, static_cast<int>(inst.attr), args[0], args[1],
-                      &out);
-}
-
-const char* Evaluator::message(const Inst& inst) const {
-  if (inst.str == 0 || inst.str > module_.strings.size()) {
-    return nullptr;
-  }
-  const std::string& s = module_.strings[inst.str - 1];
-  return s.empty() ? nullptr : s.c_str();
-}
-
-mbrt_status Evaluator::execVariable(const Inst& inst, Frame& frame,
-                                    ValueId id) {
-  std::vector<double>& v = frame.values;
-  switch (inst.op) {
+    case Op::LdVar:
+      return mbrt_read_var(
+          ctx_, static_cast<double>(inst.get<VarNumber>().number), &v[id]);
+    case Op::StVar: {
+      const VarNumber& var = inst.get<VarNumber>();
+      return mbrt_write_var(ctx_, static_cast<double>(var.number),
+                            v[inst.ops[0]], message(var.message));
+    }
     case Op::LdInd:
       return mbrt_read_var(ctx_, numeric(v[inst.ops[0]]), &v[id]);
     case Op::StInd:
       return mbrt_write_var(ctx_, numeric(v[inst.ops[0]]), v[inst.ops[1]],
-                            message(inst));
+                            message(inst.get<Message>().text));
     case Op::Adp:
       return mbrt_adp(ctx_, numeric(v[inst.ops[0]]), &v[id]);
-    default:
-      return internalError("unexpected variable operation");
-  }
-}
-
-mbrt_status Evaluator::execEffect(const Inst& inst, Frame& frame, int depth,
-                                  ValueId id) {
-  switch (inst.op) {
+    case Op::Begin:
+      return mbrt_begin_block(ctx_, fn.file.c_str(),
+                              static_cast<int>(inst.get<SourceLine>().line));
     case Op::Nc:
       return execNc(inst, frame, frame.flows[id]);
     case Op::CallMacro:
@@ -171,27 +116,71 @@ mbrt_status Evaluator::execEffect(const Inst& inst, Frame& frame, int depth,
       return mbrt_pclos(ctx_);
     case Op::Trace:
       return execTrace(inst, frame);
-    default:
-      return internalError("terminator in the middle of a block");
+    case Op::Br:
+      next = inst.targets[0];
+      return 0;
+    case Op::CondBr:
+      next = v[inst.ops[0]] != 0 ? inst.targets[0] : inst.targets[1];
+      return 0;
+    case Op::Switch: // a landing's switch words its alarm as M99 P does
+      return switchTo(
+          fn, inst, v[inst.ops[0]],
+          fn.insts[inst.ops[0]].op == Op::RetSeq ? "M99 P" : "GOTO ", next);
+    case Op::Resume:
+      return resume(fn, frame, depth, inst, next);
+    case Op::Ret:
+      // The end of a called program's text returns like M99; the end of the
+      // main program's text ends the run.
+      if (depth == 0) {
+        mbrt_finish(ctx_, MBRT_END_PROGRAM);
+        return kStop;
+      }
+      next = kLeave;
+      return 0;
+    case Op::Raise:
+      return mbrt_raise(ctx_, static_cast<int>(inst.get<AlarmRaise>().alarm),
+                        text(inst.get<AlarmRaise>().detail));
+    case Op::Unreachable:
+      return internalError("unreachable code reached");
   }
+  return internalError(opInfo(inst.op).mnemonic);
 }
 
-// The words of nc (first = 0) or call.macro (first = 2: after P and L). A
-// bare vacant variable drops its word (spec §2.3a); any other value reads
-// vacant as 0. cases holds one descriptor per operand or per word operand.
+mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
+                              double& out) {
+  Num args[2] = {0, 0};
+  for (std::size_t i = 0; i < inst.ops.size() && i < 2; ++i) {
+    args[i] = frame.values[inst.ops[i]];
+  }
+  return mbrt_builtin(ctx_, static_cast<int>(inst.get<BuiltinFn>().fn), args[0],
+                      args[1], &out);
+}
+
+const char* Evaluator::text(StringRef ref) const {
+  return ref == 0 || ref > module_.strings.size()
+             ? nullptr
+             : module_.strings[ref - 1].c_str();
+}
+
+const char* Evaluator::message(StringRef ref) const {
+  const char* s = text(ref);
+  return s == nullptr || *s == '\0' ? nullptr : s;
+}
+
+// The words of nc or call.macro (Words). A bare vacant variable drops its
+// word (spec §2.3a); any other value reads vacant as 0.
 mbrt_status Evaluator::buildWords(const Inst& inst, const Frame& frame,
-                                  std::size_t first,
                                   std::vector<mbrt_word>& out) {
   out.clear();
-  std::size_t skip = inst.cases.size() == inst.ops.size() ? 0 : first;
-  if (inst.cases.size() + skip != inst.ops.size()) {
-    return internalError("word descriptors do not match the operands");
+  const std::vector<AddressWord>& words = inst.get<Words>().words;
+  const std::size_t first = firstWordOperand(inst.op);
+  if (first + words.size() != inst.ops.size()) {
+    return internalError("words do not match the operands");
   }
-  for (std::size_t k = first; k < inst.ops.size(); ++k) {
-    std::int64_t desc = inst.cases[k - skip];
-    char letter = wordLetter(desc);
-    Num v = frame.values[inst.ops[k]];
-    switch (wordKind(desc)) {
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const char letter = words[k].letter;
+    Num v = frame.values[inst.ops[first + k]];
+    switch (words[k].kind) {
       case WordKind::Int:
         out.push_back(word(letter, MBRT_WORD_INT_LITERAL, numeric(v)));
         break;
@@ -204,7 +193,7 @@ mbrt_status Evaluator::buildWords(const Inst& inst, const Frame& frame,
       case WordKind::Var:
       case WordKind::NegVar:
         if (!isVacant(v)) {
-          bool negated = wordKind(desc) == WordKind::NegVar;
+          bool negated = words[k].kind == WordKind::NegVar;
           out.push_back(word(letter, MBRT_WORD_VALUE, negated ? negate(v) : v));
         }
         break;
@@ -214,7 +203,7 @@ mbrt_status Evaluator::buildWords(const Inst& inst, const Frame& frame,
 }
 
 mbrt_status Evaluator::execNc(const Inst& inst, Frame& frame, FlowRec& out) {
-  if (mbrt_status st = buildWords(inst, frame, 0, words_)) {
+  if (mbrt_status st = buildWords(inst, frame, words_)) {
     return st;
   }
   out = FlowRec{};
@@ -229,7 +218,7 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
   }
   Num p = numeric(frame.values[inst.ops[0]]);
   Num l = numeric(frame.values[inst.ops[1]]);
-  if (mbrt_status st = buildWords(inst, frame, 2, frame.args)) {
+  if (mbrt_status st = buildWords(inst, frame, frame.args)) {
     return st;
   }
   mbrt_trace_call(ctx_, p, l, frame.args.data(), frame.args.size());
@@ -248,7 +237,7 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
 }
 
 mbrt_status Evaluator::execTrace(const Inst& inst, const Frame& frame) {
-  const char* tmpl = message(inst);
+  const char* tmpl = message(inst.get<Message>().text);
   if (tmpl == nullptr) {
     return internalError("trace without a template");
   }
@@ -260,26 +249,23 @@ mbrt_status Evaluator::execTrace(const Inst& inst, const Frame& frame) {
   return 0;
 }
 
-// Items: a text item is str << 1 (str indexes Module::strings), a value
-// item (c * 10 + d) << 1 | 1 and takes the next operand.
 mbrt_status Evaluator::execPrint(const Inst& inst, const Frame& frame) {
   items_.clear();
   std::size_t next = 0;
-  for (std::int64_t item : inst.cases) {
-    if (item & 1) {
+  for (const PrintItem& item : inst.get<PrintItems>().items) {
+    if (item.isValue()) {
       if (next >= inst.ops.size()) {
         return internalError("print item without a value");
       }
-      int format = static_cast<int>(item >> 1);
-      items_.push_back(
-          {nullptr, frame.values[inst.ops[next++]], format / 10, format % 10});
+      items_.push_back({nullptr, frame.values[inst.ops[next++]], item.intDigits,
+                        item.fracDigits});
       continue;
     }
-    auto str = static_cast<std::size_t>(item >> 1);
-    if (str >= module_.strings.size()) {
+    const char* s = text(item.text);
+    if (s == nullptr) {
       return internalError("print text out of range");
     }
-    items_.push_back({module_.strings[str].c_str(), 0, 0, 0});
+    items_.push_back({s, 0, 0, 0});
   }
   return inst.op == Op::Dprnt ? mbrt_dprnt(ctx_, items_.data(), items_.size())
                               : mbrt_bprnt(ctx_, items_.data(), items_.size());

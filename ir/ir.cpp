@@ -18,9 +18,14 @@ constexpr OpMath NoMath{};
   }
 
 constexpr std::array kOps = {
-#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math)               \
-  OpInfo{Mnemonic,       Type::Result, Operands, static_cast<unsigned>(Flags), \
-         OpClass::Class, Math},
+#define OP(Name, Mnemonic, Result, Operands, Takes, Flags, Math, Shape)        \
+  OpInfo{Mnemonic,                                                             \
+         Type::Result,                                                         \
+         Operands,                                                             \
+         OperandRule::Takes,                                                   \
+         static_cast<unsigned>(Flags),                                         \
+         Math,                                                                 \
+         Format::Shape},
 #include "ir/opcodes.def"
 };
 
@@ -43,6 +48,26 @@ std::optional<RelOp> relationOf(Op op) {
   const OpMath& m = opInfo(op).math;
   return m.kind == OpMath::Relation ? std::optional(static_cast<RelOp>(m.op))
                                     : std::nullopt;
+}
+
+Payload payloadOf(Op op) {
+  switch (opInfo(op).format) {
+#define FORMAT(Name, Payload)                                                  \
+  case Format::Name:                                                           \
+    return Payload{};
+#include "ir/formats.def"
+  }
+  return NoData{};
+}
+
+bool payloadFits(Op op, const Payload& p) {
+  switch (opInfo(op).format) {
+#define FORMAT(Name, Payload)                                                  \
+  case Format::Name:                                                           \
+    return std::holds_alternative<Payload>(p);
+#include "ir/formats.def"
+  }
+  return false;
 }
 
 bool opFromMnemonic(const std::string& mnemonic, Op& out) {

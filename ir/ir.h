@@ -5,26 +5,22 @@
 // docs/ir.md describes every operation and the text form.
 #pragma once
 
+#include <mbc/alarm.h>
 #include <mbc/arith.h>
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace mbc::ir {
 
 enum class Op : std::uint8_t {
-#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math) Name,
+#define OP(Name, Mnemonic, Result, Operands, Takes, Flags, Math, Format) Name,
 #include "ir/opcodes.def"
 };
 
-/// The type of a value. Num is a double that is never vacant; VNum is a
-/// double that may be vacant (a variable's value, a phi over such values).
-/// Arithmetic takes Num: where a VNum is read as a number, `tonum` makes
-/// "vacant reads as 0" explicit, and the vacancy pass removes the `tonum`s
-/// it proves needless. Flow is what an NC block or a call asks the control
-/// to do next (resume interprets it).
 enum class Type : std::uint8_t { None, Num, VNum, Bool, Flow };
 
 enum OpFlag : unsigned {
@@ -39,8 +35,22 @@ enum OpFlag : unsigned {
   Commutative = 1U << 7, // the two operands may swap
 };
 
-/// The evaluator's dispatch (opcodes.def, Class).
-enum class OpClass : std::uint8_t { Value, Variable, Effect, Control };
+/// What the value operands of an op are read as (opcodes.def, Takes).
+enum class OperandRule : std::uint8_t {
+  Num,
+  VNum,
+  Bool,
+  Flow,
+  AnyValue,   // any value but a flow
+  OwnType,    // the instruction's own type (phi)
+  IndexValue, // a number, then a value that may be vacant (stind)
+};
+
+/// The operand syntax, payload and targets of an op (formats.def).
+enum class Format : std::uint8_t {
+#define FORMAT(Name, Payload) Name,
+#include "ir/formats.def"
+};
 
 /// The runtime arithmetic an op computes (opcodes.def, Math).
 struct OpMath {
@@ -53,9 +63,10 @@ struct OpInfo {
   const char* mnemonic;
   Type result;
   int operands; // -1: variadic
+  OperandRule takes;
   unsigned flags;
-  OpClass cls;
   OpMath math;
+  Format format;
 };
 
 const OpInfo& opInfo(Op op);
@@ -79,30 +90,111 @@ enum class WordKind : std::uint8_t {
   NegVar, // "X-#1": dropped when vacant, else negated
 };
 
-/// cases[i] of nc/call.macro describes operand i: letter | kind << 8.
-inline std::int64_t packWord(char letter, WordKind kind) {
-  return static_cast<unsigned char>(letter) |
-         (static_cast<std::int64_t>(kind) << 8);
-}
+/// A string of Module::strings: its index + 1, 0 for none.
+using StringRef = std::uint32_t;
 
-inline char wordLetter(std::int64_t w) {
-  return static_cast<char>(w & 0xff);
-}
+// The payloads: what an instruction holds besides its operands and
+// targets. The op's format (formats.def) names the one it has; the verifier
+// checks it.
 
-inline WordKind wordKind(std::int64_t w) {
-  return static_cast<WordKind>((w >> 8) & 0xff);
-}
+struct NoData {};
 
-/// cases[i] of dprnt/bprnt describes item i: a text item is str << 1 (str
-/// indexes Module::strings), a value item is (c * 10 + d) << 1 | 1 and takes
-/// the next operand.
-inline std::int64_t packText(std::uint32_t str) {
-  return static_cast<std::int64_t>(str) << 1;
-}
+/// const: the value.
+struct Number {
+  double value = 0;
+};
 
-inline std::int64_t packFormat(int intDigits, int fracDigits) {
-  return (static_cast<std::int64_t>(intDigits * 10 + fracDigits) << 1) | 1;
-}
+/// ldvar, stvar: the variable; stvar's optional message (an assignment
+/// whose text the trace quotes).
+struct VarNumber {
+  std::int64_t number = 0;
+  StringRef message = 0;
+};
+
+/// stind: the optional message, as stvar's; trace: the template.
+struct Message {
+  StringRef text = 0;
+};
+
+/// fn: the builtin it calls.
+struct BuiltinFn {
+  Builtin fn{};
+};
+
+/// round.addr: the address whose least increment ROUND rounds to.
+struct AddressLetter {
+  char letter = 'A';
+};
+
+/// blockskip: the switch /1../9.
+struct SkipSwitch {
+  int number = 1;
+};
+
+/// begin: the source line of the block.
+struct SourceLine {
+  std::uint32_t line = 0;
+};
+
+/// One address word of an NC block or a G65 call.
+struct AddressWord {
+  char letter = 'A';
+  WordKind kind = WordKind::Val;
+
+  bool operator==(const AddressWord&) const = default;
+};
+
+/// nc, call.macro: one word per word operand. nc's words are its
+/// operands; call.macro's start after P and L (firstWordOperand).
+struct Words {
+  std::vector<AddressWord> words;
+};
+
+/// One item of a print statement: a text, or a value printed with
+/// intDigits.fracDigits (bprnt: fracDigits only) that takes the next
+/// operand.
+struct PrintItem {
+  StringRef text = 0; // 0: a value
+  std::uint8_t intDigits = 0;
+  std::uint8_t fracDigits = 0;
+
+  bool isValue() const { return text == 0; }
+
+  bool operator==(const PrintItem&) const = default;
+};
+
+/// dprnt, bprnt: the items in order.
+struct PrintItems {
+  std::vector<PrintItem> items;
+};
+
+/// raise: the alarm and the diagnostic printed after it.
+struct AlarmRaise {
+  AlarmId alarm = AlarmId::None;
+  StringRef detail = 0;
+};
+
+/// switch: numbers[i] goes to targets[i]. resume: targets[0] is NEXT; with
+/// `landing` an M99 P goes to targets[1] (the landing block reads the N),
+/// otherwise numbers[i] goes to targets[i + 1] (firstCaseTarget).
+struct SequenceCases {
+  std::vector<std::int64_t> numbers;
+  bool landing = false;
+};
+
+using Payload = std::variant<NoData, Number, VarNumber, Message, BuiltinFn,
+                             AddressLetter, SkipSwitch, SourceLine, Words,
+                             PrintItems, AlarmRaise, SequenceCases>;
+
+/// A visitor of a Payload from one lambda per alternative.
+template <class... Fs> struct Overloaded : Fs... { using Fs::operator()...; };
+template <class... Fs> Overloaded(Fs...) -> Overloaded<Fs...>;
+
+/// The payload a new instruction of this op starts with (its format's).
+Payload payloadOf(Op op);
+
+/// True when `p` holds the alternative the format of `op` names.
+bool payloadFits(Op op, const Payload& p);
 
 struct Inst {
   Op op = Op::Unreachable;
@@ -110,12 +202,28 @@ struct Inst {
   BlockId block = 0;
   std::uint32_t line = 0;
   std::vector<ValueId> ops;
-  double imm = 0;                  // const
-  std::int64_t attr = 0;           // #n, builtin, letter, skip switch, line
-  std::uint32_t str = 0;           // Module::strings index + 1 (0: none)
-  std::vector<BlockId> targets;    // br, condbr, switch, resume; phi inputs
-  std::vector<std::int64_t> cases; // switch/resume N numbers; word/item info
+  /// The blocks it names: a terminator's successors (br: one; condbr: true
+  /// then false; switch and resume: see SequenceCases), a phi's incoming
+  /// blocks (targets[i] gives ops[i]).
+  std::vector<BlockId> targets;
+  Payload data;
+
+  /// The payload of the op's format; only after the verifier, or where the
+  /// op is known, since a mismatch throws.
+  template <class T> T& get() { return std::get<T>(data); }
+
+  template <class T> const T& get() const { return std::get<T>(data); }
 };
+
+/// call.macro's words follow its P and L operands; nc's start at 0.
+inline std::size_t firstWordOperand(Op op) {
+  return op == Op::CallMacro ? 2 : 0;
+}
+
+/// switch's cases start at targets[0]; resume's after NEXT.
+inline std::size_t firstCaseTarget(Op op) {
+  return op == Op::Resume ? 1 : 0;
+}
 
 struct Block {
   std::vector<ValueId> insts; // in order; the last is the terminator

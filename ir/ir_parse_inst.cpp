@@ -10,7 +10,8 @@ namespace mbc::ir::parse {
 
 namespace {
 
-/// Fills the operand fields of one instruction whose mnemonic is read.
+/// Fills the operands, targets and payload of one instruction whose
+/// mnemonic is read.
 class OperandParser {
 public:
   OperandParser(Cursor& c, Module& m, Inst& inst)
@@ -21,31 +22,33 @@ public:
 private:
   bool atOperandEnd() { return c_.atEol() || c_.peek() == '!'; }
 
-  std::uint32_t intern(const std::string& s);
+  StringRef intern(const std::string& s);
   char letter();
-  std::int64_t alarm();
+  AlarmId alarm();
   void valueList();
-  void fn();
-  void words();
-  void word();
-  void items();
+  Builtin fn();
+  void words(Words& into);
+  AddressWord word();
+  PrintItems items();
   void phi();
-  void caseTable();
-  void message();
+  void caseTable(SequenceCases& into);
+  StringRef message();
+
+  template <class T> T& data() { return inst_.get<T>(); }
 
   Cursor& c_;
   Module& module_;
   Inst& inst_;
 };
 
-std::uint32_t OperandParser::intern(const std::string& s) {
+StringRef OperandParser::intern(const std::string& s) {
   for (std::size_t i = 0; i < module_.strings.size(); ++i) {
     if (module_.strings[i] == s) {
-      return static_cast<std::uint32_t>(i);
+      return static_cast<StringRef>(i + 1);
     }
   }
   module_.strings.push_back(s);
-  return static_cast<std::uint32_t>(module_.strings.size() - 1);
+  return static_cast<StringRef>(module_.strings.size());
 }
 
 // An address letter: one of A..Z.
@@ -59,14 +62,14 @@ char OperandParser::letter() {
 }
 
 // alarm = CODE ;  "PS0114", "MBC0001"
-std::int64_t OperandParser::alarm() {
+AlarmId OperandParser::alarm() {
   TextPos at = c_.pos();
   std::string_view w = c_.word("an alarm code");
   const AlarmId id = alarmFromCode(w);
   if (id == AlarmId::None) {
     Cursor::failAt(at, fmt::format("'{}' is not an alarm code", w));
   }
-  return static_cast<std::int64_t>(id);
+  return id;
 }
 
 // values = [value {"," value}] ;
@@ -80,7 +83,7 @@ void OperandParser::valueList() {
 }
 
 // fn = NAME {"," value} ;
-void OperandParser::fn() {
+Builtin OperandParser::fn() {
   c_.skipBlanks();
   TextPos at = c_.pos();
   std::string_view name = c_.word("a builtin name");
@@ -88,14 +91,14 @@ void OperandParser::fn() {
   if (!builtinFromMnemonic(name, b)) {
     Cursor::failAt(at, fmt::format("unknown builtin '{}'", name));
   }
-  inst_.attr = static_cast<std::int64_t>(b);
   while (c_.accept(',')) {
     inst_.ops.push_back(c_.value());
   }
+  return b;
 }
 
 // word = LETTER ":" kind value ; kind = "int" | "dec" | "val" | "var" | "nvar"
-void OperandParser::word() {
+AddressWord OperandParser::word() {
   char l = letter();
   c_.expect(':');
   c_.skipBlanks();
@@ -106,27 +109,28 @@ void OperandParser::word() {
     Cursor::failAt(at, fmt::format("unknown word kind '{}'", name));
   }
   inst_.ops.push_back(c_.value());
-  inst_.cases.push_back(packWord(l, kind));
+  return {l, kind};
 }
 
 // words = [word {"," word}] ;
-void OperandParser::words() {
+void OperandParser::words(Words& into) {
   if (atOperandEnd()) {
     return;
   }
   do {
-    word();
+    into.words.push_back(word());
   } while (c_.accept(','));
 }
 
 // items = [item {"," item}] ; item = string | value "[" integer "]" ;
-void OperandParser::items() {
+PrintItems OperandParser::items() {
+  PrintItems p;
   if (atOperandEnd()) {
-    return;
+    return p;
   }
   do {
     if (c_.peek() == '"') {
-      inst_.cases.push_back(packText(intern(c_.string())));
+      p.items.push_back({intern(c_.string())});
       continue;
     }
     inst_.ops.push_back(c_.value());
@@ -136,9 +140,10 @@ void OperandParser::items() {
       c_.fail("print format out of range");
     }
     c_.expect(']');
-    auto digits = static_cast<int>(format);
-    inst_.cases.push_back(packFormat(digits / 10, digits % 10));
+    p.items.push_back({0, static_cast<std::uint8_t>(format / 10),
+                       static_cast<std::uint8_t>(format % 10)});
   } while (c_.accept(','));
+  return p;
 }
 
 // phi = ("num" | "vnum") [input {"," input}] ; input = "[" value "," block "]"
@@ -165,117 +170,117 @@ void OperandParser::phi() {
 }
 
 // table = "[" [integer ":" block {"," integer ":" block}] "]" ;
-void OperandParser::caseTable() {
+void OperandParser::caseTable(SequenceCases& into) {
   c_.expect('[');
   if (c_.accept(']')) {
     return;
   }
   do {
-    inst_.cases.push_back(c_.integer("a sequence number"));
+    into.numbers.push_back(c_.integer("a sequence number"));
     c_.expect(':');
     inst_.targets.push_back(c_.block());
   } while (c_.accept(','));
   c_.expect(']');
 }
 
-// message = ["," string] ;  stored as Module::strings index + 1
-void OperandParser::message() {
-  if (c_.accept(',')) {
-    inst_.str = intern(c_.string()) + 1;
-  }
+// message = ["," string] ;
+StringRef OperandParser::message() {
+  return c_.accept(',') ? intern(c_.string()) : 0;
 }
 
 void OperandParser::parse() {
-  switch (inst_.op) {
-    case Op::Const:
-      inst_.imm = c_.number();
+  inst_.data = payloadOf(inst_.op);
+  switch (opInfo(inst_.op).format) {
+    case Format::Plain:
+      valueList();
       return;
-    case Op::Fn:
-      fn();
+    case Format::Constant:
+      data<Number>().value = c_.number();
       return;
-    case Op::RoundAddr:
-      inst_.attr = letter();
+    case Format::Function:
+      data<BuiltinFn>().fn = fn();
+      return;
+    case Format::RoundAddress:
+      data<AddressLetter>().letter = letter();
       c_.expect(',');
       inst_.ops.push_back(c_.value());
       return;
-    case Op::BlockSkip:
-    case Op::Begin:
-      inst_.attr = c_.integer("a number");
+    case Format::Skip:
+      data<SkipSwitch>().number =
+          static_cast<int>(c_.integer("a skip switch", INT32_MIN, INT32_MAX));
       return;
-    case Op::LdVar:
+    case Format::Line:
+      data<SourceLine>().line = static_cast<std::uint32_t>(
+          c_.integer("a line number", 0, UINT32_MAX));
+      return;
+    case Format::Load:
       c_.expect('#');
-      inst_.attr = c_.integer("a variable number");
+      data<VarNumber>().number = c_.integer("a variable number");
       return;
-    case Op::StVar:
+    case Format::Store:
       c_.expect('#');
-      inst_.attr = c_.integer("a variable number");
+      data<VarNumber>().number = c_.integer("a variable number");
       c_.expect(',');
       inst_.ops.push_back(c_.value());
-      message();
+      data<VarNumber>().message = message();
       return;
-    case Op::StInd:
-      inst_.ops.push_back(c_.value());
-      c_.expect(',');
-      inst_.ops.push_back(c_.value());
-      message();
-      return;
-    case Op::Nc:
-      words();
-      return;
-    case Op::CallMacro:
-      // P and L have no word descriptor; cases[0] and [1] are placeholders
-      // so that cases[i] still describes operand i.
+    case Format::IndirectStore:
       inst_.ops.push_back(c_.value());
       c_.expect(',');
       inst_.ops.push_back(c_.value());
-      inst_.cases = {0, 0};
+      data<Message>().text = message();
+      return;
+    case Format::Block:
+      words(data<Words>());
+      return;
+    case Format::MacroCall:
+      inst_.ops.push_back(c_.value());
+      c_.expect(',');
+      inst_.ops.push_back(c_.value());
       if (c_.accept(',')) {
-        words();
+        words(data<Words>());
       }
       return;
-    case Op::Dprnt:
-    case Op::Bprnt:
-      items();
+    case Format::Print:
+      data<PrintItems>() = items();
       return;
-    case Op::Phi:
+    case Format::PhiInputs:
       phi();
       return;
-    case Op::Trace:
-      inst_.str = intern(c_.string()) + 1;
+    case Format::Template:
+      data<Message>().text = intern(c_.string());
       while (c_.accept(',')) {
         inst_.ops.push_back(c_.value());
       }
       return;
-    case Op::Raise:
-      inst_.attr = alarm();
-      message();
+    case Format::Alarm:
+      data<AlarmRaise>().alarm = alarm();
+      data<AlarmRaise>().detail = message();
       return;
-    case Op::Br:
+    case Format::Jump:
       inst_.targets.push_back(c_.block());
       return;
-    case Op::CondBr:
+    case Format::Branch:
       inst_.ops.push_back(c_.value());
       for (int i = 0; i < 2; ++i) {
         c_.expect(',');
         inst_.targets.push_back(c_.block());
       }
       return;
-    case Op::Switch:
+    case Format::Table:
       inst_.ops.push_back(c_.value());
-      caseTable();
+      caseTable(data<SequenceCases>());
       return;
-    case Op::Resume:
+    case Format::Resumption:
       inst_.ops.push_back(c_.value());
       c_.expect(',');
       inst_.targets.push_back(c_.block());
       if (c_.accept(',')) {
         inst_.targets.push_back(c_.block()); // the M99 P landing
+        data<SequenceCases>().landing = true;
       } else {
-        caseTable();
+        caseTable(data<SequenceCases>());
       }
-      return;
-    default:
-      valueList();
       return;
   }
 }

@@ -54,6 +54,8 @@ public:
   /// Everything up to `close` (for `<NAME>`); the delimiters are consumed.
   std::string_view delimited(char open, char close);
   std::int64_t integer(const char* what);
+  /// An integer in lo..hi, else "WHAT out of range".
+  std::int64_t integer(const char* what, std::int64_t lo, std::int64_t hi);
   double number();
   std::string string();
   ValueId value();

@@ -153,6 +153,16 @@ std::int64_t Cursor::integer(const char* what) {
   return v;
 }
 
+std::int64_t Cursor::integer(const char* what, std::int64_t lo,
+                             std::int64_t hi) {
+  TextPos start = pos_;
+  std::int64_t v = integer(what);
+  if (v < lo || v > hi) {
+    failAt(start, fmt::format("{} out of range", what));
+  }
+  return v;
+}
+
 double Cursor::number() {
   skipBlanks();
   TextPos start = pos_;
@@ -300,11 +310,12 @@ void FunctionParser::instruction() {
   ParsedInst p = parseInst(c_, module_);
   Inst& inst = p.inst;
   if (!p.hasLine) {
-    std::int64_t line = inst.op == Op::Begin ? inst.attr : currentLine_;
+    std::int64_t line =
+        inst.op == Op::Begin ? inst.get<SourceLine>().line : currentLine_;
     inst.line = static_cast<std::uint32_t>(line);
   }
   if (inst.op == Op::Begin) {
-    currentLine_ = inst.attr;
+    currentLine_ = inst.get<SourceLine>().line;
   }
   if (p.hasId && !defined_.insert(p.id).second) {
     Cursor::failAt(p.pos, fmt::format("value %{} is defined twice", p.id));

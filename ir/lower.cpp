@@ -27,17 +27,17 @@ private:
   ValueId emit(Op op, std::vector<ValueId> ops = {});
   void terminate(Op op, std::vector<BlockId> targets,
                  std::vector<ValueId> ops = {});
-  std::uint32_t intern(const std::string& s);
+  StringRef intern(const std::string& s);
   void lowerBlock(int index);
   void lowerStatement(const Stmt& s, int index);
   void lowerAssign(const Stmt& s);
   void trace(const Stmt& s, std::vector<ValueId> values, bool taken = true);
   void lowerGoto(const Stmt& s, int index);
-  void lowerWords(const std::vector<Word>& words, Inst& into,
-                  std::vector<ValueId>& ops);
+  Words lowerWords(const std::vector<Word>& words, std::vector<ValueId>& ops);
   void lowerPrint(const Stmt& s);
   void resumeAfter(ValueId flow, int index);
-  void addSequenceTable(Inst& inst, int from);
+  void addSequenceTable(SequenceCases& cases, std::vector<BlockId>& targets,
+                        int from);
   BlockId landing(int from);
   ValueId lowerExpr(const Expr& e, char roundLetter = 0);
   ValueId lowerNum(const Expr& e, char roundLetter = 0);
@@ -72,6 +72,7 @@ ValueId FunctionLowering::emit(Op op, std::vector<ValueId> ops) {
   inst.block = cur_;
   inst.line = line_;
   inst.ops = std::move(ops);
+  inst.data = payloadOf(op);
   auto id = static_cast<ValueId>(fn_.insts.size());
   fn_.insts.push_back(std::move(inst));
   fn_.blocks[cur_].insts.push_back(id);
@@ -84,19 +85,19 @@ void FunctionLowering::terminate(Op op, std::vector<BlockId> targets,
   fn_.insts[id].targets = std::move(targets);
 }
 
-std::uint32_t FunctionLowering::intern(const std::string& s) {
+StringRef FunctionLowering::intern(const std::string& s) {
   for (std::size_t i = 0; i < module_.strings.size(); ++i) {
     if (module_.strings[i] == s) {
-      return static_cast<std::uint32_t>(i + 1);
+      return static_cast<StringRef>(i + 1);
     }
   }
   module_.strings.push_back(s);
-  return static_cast<std::uint32_t>(module_.strings.size());
+  return static_cast<StringRef>(module_.strings.size());
 }
 
 ValueId FunctionLowering::constant(double v) {
   ValueId id = emit(Op::Const);
-  fn_.insts[id].imm = v;
+  fn_.insts[id].get<Number>().value = v;
   return id;
 }
 
@@ -134,17 +135,15 @@ void FunctionLowering::lowerBlock(int index) {
   line_ = static_cast<std::uint32_t>(b.line);
   if (b.skipLevel) {
     ValueId on = emit(Op::BlockSkip);
-    fn_.insts[on].attr = b.skipLevel;
+    fn_.insts[on].data = SkipSwitch{b.skipLevel};
     BlockId body = newBlock();
     terminate(Op::CondBr, {head(index + 1), body}, {on});
     cur_ = body;
   }
-  ValueId begin = emit(Op::Begin);
-  fn_.insts[begin].attr = b.line;
+  fn_.insts[emit(Op::Begin)].data = SourceLine{line_};
   if (b.alarm != AlarmId::None) {
-    ValueId raise = emit(Op::Raise);
-    fn_.insts[raise].attr = static_cast<std::int64_t>(b.alarm);
-    fn_.insts[raise].str = intern(b.alarmDetail);
+    fn_.insts[emit(Op::Raise)].data =
+        AlarmRaise{b.alarm, intern(b.alarmDetail)};
     return;
   }
   lowerStatement(b.stmt, index);
@@ -208,21 +207,18 @@ void FunctionLowering::lowerStatement(const Stmt& s, int index) {
       return;
     case StmtKind::Nc: {
       std::vector<ValueId> ops;
-      Inst words;
-      lowerWords(s.words, words, ops);
+      Words words = lowerWords(s.words, ops);
       ValueId f = emit(Op::Nc, std::move(ops));
-      fn_.insts[f].cases = std::move(words.cases);
+      fn_.insts[f].data = std::move(words);
       resumeAfter(f, index);
       return;
     }
     case StmtKind::MacroCall: {
       std::vector<ValueId> ops{lowerExpr(*s.program),
                                s.repeat ? lowerExpr(*s.repeat) : constant(1)};
-      Inst words;
-      words.cases = {0, 0};
-      lowerWords(s.words, words, ops);
+      Words words = lowerWords(s.words, ops);
       ValueId f = emit(Op::CallMacro, std::move(ops));
-      fn_.insts[f].cases = std::move(words.cases);
+      fn_.insts[f].data = std::move(words);
       resumeAfter(f, index);
       return;
     }
@@ -245,25 +241,22 @@ void FunctionLowering::lowerAssign(const Stmt& s) {
   // reference or ADP of a vacant variable stores 0.
   ValueId v =
       s.value->isBareVariable() ? lowerExpr(*s.value) : lowerNum(*s.value);
-  std::uint32_t message = s.message.empty() ? 0 : intern(s.message);
-  ValueId st = 0;
+  StringRef message = s.message.empty() ? 0 : intern(s.message);
   if (s.target.index) {
     ValueId idx = lowerNum(*s.target.index);
     trace(s, {idx, v});
-    st = emit(Op::StInd, {idx, v});
+    fn_.insts[emit(Op::StInd, {idx, v})].data = Message{message};
   } else {
     trace(s, {v});
-    st = emit(Op::StVar, {v});
-    fn_.insts[st].attr = s.target.number;
+    fn_.insts[emit(Op::StVar, {v})].data = VarNumber{s.target.number, message};
   }
-  fn_.insts[st].str = message;
 }
 
 void FunctionLowering::trace(const Stmt& s, std::vector<ValueId> values,
                              bool taken) {
   if (options_.trace) {
     ValueId t = emit(Op::Trace, std::move(values));
-    fn_.insts[t].str = intern(traceTemplate(program_, s, taken));
+    fn_.insts[t].data = Message{intern(traceTemplate(program_, s, taken))};
   }
 }
 
@@ -277,17 +270,20 @@ void FunctionLowering::lowerGoto(const Stmt& s, int index) {
     trace(s, {target});
   }
   terminate(Op::Switch, {}, {target});
-  addSequenceTable(fn_.insts.back(), index);
+  Inst& sw = fn_.insts.back();
+  addSequenceTable(sw.get<SequenceCases>(), sw.targets, index);
 }
 
 // Where each N sends a jump from block `from`. Only a repeated N makes the
 // answer depend on `from` (the search goes forward from there).
-void FunctionLowering::addSequenceTable(Inst& inst, int from) {
+void FunctionLowering::addSequenceTable(SequenceCases& cases,
+                                        std::vector<BlockId>& targets,
+                                        int from) {
   for (int seq : sequences_) {
     int block = repeatedSequence_ ? findSequence(program_, seq, from)
                                   : sequenceBlock_.at(seq);
-    inst.cases.push_back(seq);
-    inst.targets.push_back(head(block));
+    cases.numbers.push_back(seq);
+    targets.push_back(head(block));
   }
 }
 
@@ -300,16 +296,19 @@ void FunctionLowering::resumeAfter(ValueId flow, int index) {
   if (!sequences_.empty()) {
     targets.push_back(landing(index));
   }
+  bool landing = targets.size() == 2;
   terminate(Op::Resume, std::move(targets), {flow});
+  fn_.insts.back().get<SequenceCases>().landing = landing;
 }
 
 BlockId FunctionLowering::landing(int from) {
   if (!repeatedSequence_ && !landings_.empty()) {
     return landings_.begin()->second; // the one table every resume shares
   }
-  Inst table;
-  addSequenceTable(table, from);
-  auto it = landings_.find(table.targets);
+  SequenceCases table;
+  std::vector<BlockId> targets;
+  addSequenceTable(table, targets, from);
+  auto it = landings_.find(targets);
   if (it != landings_.end()) {
     return it->second;
   }
@@ -319,16 +318,17 @@ BlockId FunctionLowering::landing(int from) {
   cur_ = land;
   ValueId seq = emit(Op::RetSeq);
   terminate(Op::Switch, {}, {seq});
-  fn_.insts.back().cases = table.cases;
-  fn_.insts.back().targets = table.targets;
-  landings_.emplace(std::move(table.targets), land);
+  fn_.insts.back().data = std::move(table);
+  fn_.insts.back().targets = targets;
+  landings_.emplace(std::move(targets), land);
   cur_ = saved;
   line_ = savedLine;
   return land;
 }
 
-void FunctionLowering::lowerWords(const std::vector<Word>& words, Inst& into,
-                                  std::vector<ValueId>& ops) {
+Words FunctionLowering::lowerWords(const std::vector<Word>& words,
+                                   std::vector<ValueId>& ops) {
+  Words into;
   for (const Word& w : words) {
     WordKind kind = WordKind::Val;
     ValueId v = 0;
@@ -345,24 +345,26 @@ void FunctionLowering::lowerWords(const std::vector<Word>& words, Inst& into,
       v = lowerNum(*w.value, w.letter);
     }
     ops.push_back(v);
-    into.cases.push_back(packWord(w.letter, kind));
+    into.words.push_back({w.letter, kind});
   }
+  return into;
 }
 
 void FunctionLowering::lowerPrint(const Stmt& s) {
   std::vector<ValueId> ops;
-  std::vector<std::int64_t> items;
-  for (const PrintItem& it : s.items) {
+  PrintItems items;
+  for (const mbc::PrintItem& it : s.items) {
     if (it.value) {
       ops.push_back(lowerExpr(*it.value));
-      items.push_back(packFormat(it.intDigits, it.fracDigits));
+      items.items.push_back({0, static_cast<std::uint8_t>(it.intDigits),
+                             static_cast<std::uint8_t>(it.fracDigits)});
     } else {
-      items.push_back(packText(intern(it.text) - 1));
+      items.items.push_back({intern(it.text)});
     }
   }
   ValueId p =
       emit(s.kind == StmtKind::Dprnt ? Op::Dprnt : Op::Bprnt, std::move(ops));
-  fn_.insts[p].cases = std::move(items);
+  fn_.insts[p].data = std::move(items);
 }
 
 // roundLetter != 0: the expression is an NC address, where ROUND rounds to
@@ -376,7 +378,7 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
         return emit(Op::Vacant); // #0 is always vacant and cannot alarm
       }
       ValueId v = emit(Op::LdVar);
-      fn_.insts[v].attr = e.var;
+      fn_.insts[v].get<VarNumber>().number = e.var;
       return v;
     }
     case ExprKind::Indirect:
@@ -439,11 +441,11 @@ ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
   }
   if (e.builtin == Builtin::Round && roundLetter) {
     ValueId v = emit(Op::RoundAddr, std::move(ops));
-    fn_.insts[v].attr = roundLetter;
+    fn_.insts[v].data = AddressLetter{roundLetter};
     return v;
   }
   ValueId v = emit(Op::Fn, std::move(ops));
-  fn_.insts[v].attr = static_cast<std::int64_t>(e.builtin);
+  fn_.insts[v].data = BuiltinFn{e.builtin};
   return v;
 }
 

@@ -37,13 +37,15 @@ private:
 
   void operand(std::size_t i);
   void target(std::size_t i);
-  void string(std::size_t index);
+  void string(StringRef ref);
   void valueList(std::size_t from);
-  void words(std::size_t from);
-  void items();
+  void words(const Words& w, std::size_t from);
+  void items(const PrintItems& p);
   void phi();
-  void caseTable(std::size_t firstTarget);
-  void message();
+  void caseTable(const SequenceCases& c, std::size_t firstTarget);
+  void resume(const SequenceCases& c);
+  void message(StringRef ref);
+  void payload();
 
   const Module& module_;
   const Inst& inst_;
@@ -66,9 +68,9 @@ void OperandPrinter::target(std::size_t i) {
   }
 }
 
-void OperandPrinter::string(std::size_t index) {
-  if (index < module_.strings.size()) {
-    out_ += quoteString(module_.strings[index]);
+void OperandPrinter::string(StringRef ref) {
+  if (ref != 0 && ref <= module_.strings.size()) {
+    out_ += quoteString(module_.strings[ref - 1]);
   } else {
     out_ += "?";
   }
@@ -82,30 +84,30 @@ void OperandPrinter::valueList(std::size_t from) {
   }
 }
 
-// `X:int %3` per operand from..end; cases[i] describes operand i.
-void OperandPrinter::words(std::size_t from) {
-  std::size_t n = std::max(inst_.ops.size(), inst_.cases.size());
+// `X:int %3` per word; word i is operand from + i.
+void OperandPrinter::words(const Words& w, std::size_t from) {
+  std::size_t n = std::max(inst_.ops.size(), from + w.words.size());
   for (std::size_t i = from; i < n; ++i) {
     out_ += i == 0 ? " " : ", ";
-    std::int64_t w = i < inst_.cases.size() ? inst_.cases[i] : 0;
-    char letter = wordLetter(w);
-    out_ += letter >= 'A' && letter <= 'Z' ? letter : '?';
-    put(":{} ", wordKindName(wordKind(w)));
+    AddressWord word =
+        i - from < w.words.size() ? w.words[i - from] : AddressWord{'?', {}};
+    out_ += word.letter >= 'A' && word.letter <= 'Z' ? word.letter : '?';
+    put(":{} ", wordKindName(word.kind));
     operand(i);
   }
 }
 
 // `"TEXT", %3[53]`: a value item takes the next operand.
-void OperandPrinter::items() {
+void OperandPrinter::items(const PrintItems& p) {
   std::size_t next = 0;
-  for (std::size_t i = 0; i < inst_.cases.size(); ++i) {
+  for (std::size_t i = 0; i < p.items.size(); ++i) {
     out_ += i == 0 ? " " : ", ";
-    std::int64_t item = inst_.cases[i];
-    if (item & 1) {
+    const PrintItem& item = p.items[i];
+    if (item.isValue()) {
       operand(next++);
-      put("[{}]", item >> 1);
+      put("[{}]", item.intDigits * 10 + item.fracDigits);
     } else {
-      string(static_cast<std::size_t>(item >> 1));
+      string(item.text);
     }
   }
 }
@@ -122,31 +124,59 @@ void OperandPrinter::phi() {
   }
 }
 
-// ` [10: b3, 20: b7]`: cases[i] goes to targets[firstTarget + i].
-void OperandPrinter::caseTable(std::size_t firstTarget) {
+// ` [10: b3, 20: b7]`: numbers[i] goes to targets[firstTarget + i].
+void OperandPrinter::caseTable(const SequenceCases& c,
+                               std::size_t firstTarget) {
   out_ += " [";
-  for (std::size_t i = 0; i < inst_.cases.size(); ++i) {
-    put("{}{}: ", i == 0 ? "" : ", ", inst_.cases[i]);
+  for (std::size_t i = 0; i < c.numbers.size(); ++i) {
+    put("{}{}: ", i == 0 ? "" : ", ", c.numbers[i]);
     target(firstTarget + i);
   }
   out_ += "]";
 }
 
-void OperandPrinter::message() {
-  if (inst_.str != 0) {
+void OperandPrinter::resume(const SequenceCases& c) {
+  out_ += " ";
+  operand(0);
+  out_ += ", ";
+  target(0);
+  if (c.landing) {
     out_ += ", ";
-    string(inst_.str - 1);
+    target(1);
+  } else {
+    caseTable(c, 1);
   }
 }
 
+void OperandPrinter::message(StringRef ref) {
+  if (ref != 0) {
+    out_ += ", ";
+    string(ref);
+  }
+}
+
+// The operands of an instruction whose payload is not its op's: the
+// verifier quotes such IR.
+void OperandPrinter::payload() {
+  valueList(0);
+  out_ += " <payload?>";
+}
+
 void OperandPrinter::print() {
-  switch (inst_.op) {
-    case Op::Const:
-      put(" {}", formatNumber(inst_.imm));
+  if (!payloadFits(inst_.op, inst_.data)) {
+    payload();
+    return;
+  }
+  switch (opInfo(inst_.op).format) {
+    case Format::Plain:
+      valueList(0);
       return;
-    case Op::Fn: {
-      bool known = inst_.attr >= 0 && inst_.attr < kBuiltins;
-      auto b = static_cast<Builtin>(inst_.attr);
+    case Format::Constant:
+      put(" {}", formatNumber(inst_.get<Number>().value));
+      return;
+    case Format::Function: {
+      auto b = inst_.get<BuiltinFn>().fn;
+      bool known = static_cast<int>(b) < kBuiltins;
       out_ += " ";
       out_ += known ? builtinMnemonic(b) : "?";
       for (std::size_t i = 0; i < inst_.ops.size(); ++i) {
@@ -155,62 +185,63 @@ void OperandPrinter::print() {
       }
       return;
     }
-    case Op::RoundAddr: {
-      char letter = static_cast<char>(inst_.attr);
+    case Format::RoundAddress: {
+      char letter = inst_.get<AddressLetter>().letter;
       put(" {}, ", letter >= 'A' && letter <= 'Z' ? letter : '?');
       operand(0);
       return;
     }
-    case Op::BlockSkip:
-    case Op::Begin:
-      put(" {}", inst_.attr);
+    case Format::Skip:
+      put(" {}", inst_.get<SkipSwitch>().number);
       return;
-    case Op::LdVar:
-      put(" #{}", inst_.attr);
+    case Format::Line:
+      put(" {}", inst_.get<SourceLine>().line);
       return;
-    case Op::StVar:
-      put(" #{}, ", inst_.attr);
+    case Format::Load:
+      put(" #{}", inst_.get<VarNumber>().number);
+      return;
+    case Format::Store:
+      put(" #{}, ", inst_.get<VarNumber>().number);
       operand(0);
-      message();
+      message(inst_.get<VarNumber>().message);
       return;
-    case Op::StInd:
+    case Format::IndirectStore:
       valueList(0);
-      message();
+      message(inst_.get<Message>().text);
       return;
-    case Op::Nc:
-      words(0);
+    case Format::Block:
+      words(inst_.get<Words>(), 0);
       return;
-    case Op::CallMacro:
+    case Format::MacroCall:
       out_ += " ";
       operand(0);
       out_ += ", ";
       operand(1);
-      words(2);
+      words(inst_.get<Words>(), 2);
       return;
-    case Op::Dprnt:
-    case Op::Bprnt:
-      items();
+    case Format::Print:
+      items(inst_.get<PrintItems>());
       return;
-    case Op::Phi:
+    case Format::PhiInputs:
       phi();
       return;
-    case Op::Trace:
+    case Format::Template:
       out_ += " ";
-      string(inst_.str - 1);
+      string(inst_.get<Message>().text);
       for (std::size_t i = 0; i < inst_.ops.size(); ++i) {
         out_ += ", ";
         operand(i);
       }
       return;
-    case Op::Raise:
-      put(" {}", alarmCode(static_cast<AlarmId>(inst_.attr), 0));
-      message();
+    case Format::Alarm:
+      put(" {}", alarmCode(inst_.get<AlarmRaise>().alarm, 0));
+      message(inst_.get<AlarmRaise>().detail);
       return;
-    case Op::Br:
+    case Format::Jump:
       out_ += " ";
       target(0);
       return;
-    case Op::CondBr:
+    case Format::Branch:
       out_ += " ";
       operand(0);
       out_ += ", ";
@@ -218,25 +249,13 @@ void OperandPrinter::print() {
       out_ += ", ";
       target(1);
       return;
-    case Op::Switch:
+    case Format::Table:
       out_ += " ";
       operand(0);
-      caseTable(0);
+      caseTable(inst_.get<SequenceCases>(), 0);
       return;
-    case Op::Resume:
-      out_ += " ";
-      operand(0);
-      out_ += ", ";
-      target(0);
-      if (inst_.cases.empty() && inst_.targets.size() == 2) {
-        out_ += ", ";
-        target(1); // the M99 P landing
-      } else {
-        caseTable(1);
-      }
-      return;
-    default:
-      valueList(0);
+    case Format::Resumption:
+      resume(inst_.get<SequenceCases>());
       return;
   }
 }
@@ -244,7 +263,8 @@ void OperandPrinter::print() {
 // The line an instruction without `!LINE` gets: a begin's own line, else
 // the line of the last begin before it in the block.
 std::int64_t impliedLine(const Inst& inst, std::int64_t current) {
-  return inst.op == Op::Begin ? inst.attr : current;
+  const auto* begin = std::get_if<SourceLine>(&inst.data);
+  return inst.op == Op::Begin && begin != nullptr ? begin->line : current;
 }
 
 void printBlock(const Module& m, const Function& f, BlockId b,
@@ -260,9 +280,7 @@ void printBlock(const Module& m, const Function& f, BlockId b,
       if (static_cast<std::int64_t>(inst.line) != implied) {
         fmt::format_to(std::back_inserter(out), " !{}", inst.line);
       }
-      if (inst.op == Op::Begin) {
-        current = inst.attr;
-      }
+      current = implied;
     }
     out += "\n";
   }

@@ -25,39 +25,26 @@ std::string_view typeName(Type t) {
   return i < kNames.size() ? kNames[i] : "?";
 }
 
-// The type operand i must have; VNum accepts Num too, None any value but a
-// flow. Arithmetic, functions,
-// ordering comparisons and variable numbers read a number (vacant as 0
-// through an explicit tonum); equality, stores, NC words, print items and
-// the computed GOTO tell vacant apart, so they take either.
+// The type operand i must have (opcodes.def, Takes); VNum accepts Num too,
+// None any value but a flow.
 Type operandType(const Inst& inst, std::size_t i) {
-  switch (inst.op) {
-    case Op::LogAnd:
-    case Op::LogOr:
-    case Op::LogXor:
-    case Op::CondBr:
-      return Type::Bool;
-    case Op::Resume:
-      return Type::Flow;
-    case Op::Trace:
-      return Type::None;
-    case Op::Phi:
-      return inst.type;
-    case Op::StInd:
-      return i == 0 ? Type::Num : Type::VNum;
-    case Op::ToNum:
-    case Op::Eq:
-    case Op::Ne:
-    case Op::StVar:
-    case Op::Nc:
-    case Op::CallMacro:
-    case Op::Dprnt:
-    case Op::Bprnt:
-    case Op::Switch:
-      return Type::VNum;
-    default:
+  switch (opInfo(inst.op).takes) {
+    case OperandRule::Num:
       return Type::Num;
+    case OperandRule::VNum:
+      return Type::VNum;
+    case OperandRule::Bool:
+      return Type::Bool;
+    case OperandRule::Flow:
+      return Type::Flow;
+    case OperandRule::AnyValue:
+      return Type::None;
+    case OperandRule::OwnType:
+      return inst.type;
+    case OperandRule::IndexValue:
+      return i == 0 ? Type::Num : Type::VNum;
   }
+  return Type::Num;
 }
 
 bool accepts(Type want, Type got) {
@@ -79,24 +66,58 @@ std::size_t traceHoles(std::string_view tmpl) {
   return n;
 }
 
-// The number of block targets an instruction needs.
-std::size_t expectedTargets(const Inst& inst) {
-  switch (inst.op) {
-    case Op::Br:
-      return 1;
-    case Op::CondBr:
-      return 2;
-    case Op::Switch:
-      return inst.cases.size();
-    case Op::Resume: // NEXT, then the M99 P landing or one per case
-      return inst.cases.empty() && inst.targets.size() == 2
-                 ? 2
-                 : inst.cases.size() + 1;
-    case Op::Phi:
-      return inst.ops.size();
-    default:
-      return 0;
+// What an instruction with a fitting payload must have: its number of block
+// targets, and of value operands (-1: the targets decide, for phis).
+struct Shape {
+  std::size_t targets = 0;
+  std::ptrdiff_t operands = 0;
+};
+
+Shape expectedShape(const Module& m, const Inst& inst) {
+  const OpInfo& info = opInfo(inst.op);
+  switch (info.format) {
+    case Format::Plain:
+    case Format::Constant:
+    case Format::RoundAddress:
+    case Format::Skip:
+    case Format::Line:
+    case Format::Load:
+    case Format::Store:
+    case Format::IndirectStore:
+    case Format::Alarm:
+      break;
+    case Format::Function:
+      return {0, builtinArity(inst.get<BuiltinFn>().fn)};
+    case Format::Block:
+    case Format::MacroCall:
+      return {0, static_cast<std::ptrdiff_t>(firstWordOperand(inst.op) +
+                                             inst.get<Words>().words.size())};
+    case Format::Print: {
+      const auto& items = inst.get<PrintItems>().items;
+      return {0, std::count_if(items.begin(), items.end(),
+                               [](const PrintItem& i) { return i.isValue(); })};
+    }
+    case Format::PhiInputs:
+      return {inst.ops.size(), -1};
+    case Format::Template: {
+      StringRef t = inst.get<Message>().text;
+      return {0,
+              t == 0 || t > m.strings.size()
+                  ? -1
+                  : static_cast<std::ptrdiff_t>(traceHoles(m.strings[t - 1]))};
+    }
+    case Format::Jump:
+      return {1, info.operands};
+    case Format::Branch:
+      return {2, info.operands};
+    case Format::Table:
+      return {inst.get<SequenceCases>().numbers.size(), info.operands};
+    case Format::Resumption: { // NEXT, then the M99 P landing or the cases
+      const SequenceCases& c = inst.get<SequenceCases>();
+      return {1 + (c.landing ? 1 : c.numbers.size()), info.operands};
+    }
   }
+  return {0, info.operands};
 }
 
 bool isLetter(std::int64_t c) {
@@ -122,11 +143,9 @@ private:
   void placeInstructions();
   void checkBlock(BlockId b);
   void checkInst(BlockId b, std::uint32_t index, ValueId id);
-  void checkOperandCount(BlockId b, ValueId id, const Inst& inst);
-  void checkTargets(BlockId b, ValueId id, const Inst& inst);
-  void checkCases(BlockId b, ValueId id, const Inst& inst);
-  void checkWords(BlockId b, ValueId id, const Inst& inst, std::size_t from);
-  void checkAttributes(BlockId b, ValueId id, const Inst& inst);
+  void checkShape(BlockId b, ValueId id, const Inst& inst);
+  void checkString(BlockId b, ValueId id, StringRef s, std::string_view what);
+  void checkPayload(BlockId b, ValueId id, const Inst& inst);
   void checkOperands(BlockId b, std::uint32_t index, ValueId id,
                      const Inst& inst);
   void checkDominance(BlockId b, std::uint32_t index, ValueId id,
@@ -229,10 +248,14 @@ void FunctionVerifier::checkInst(BlockId b, std::uint32_t index, ValueId id) {
          fmt::format("type is {}, but {} defines {}", typeName(inst.type),
                      opInfo(inst.op).mnemonic, typeName(defined)));
   }
-  checkAttributes(b, id, inst);
-  checkOperandCount(b, id, inst);
-  checkTargets(b, id, inst);
-  checkCases(b, id, inst);
+  if (payloadFits(inst.op, inst.data)) {
+    checkPayload(b, id, inst);
+    checkShape(b, id, inst);
+  } else {
+    fail(b, id,
+         fmt::format("the payload is not the one {} has (opcodes.def)",
+                     opInfo(inst.op).mnemonic));
+  }
   checkOperands(b, index, id, inst);
   if (inst.op == Op::Phi) {
     checkPhiInputs(b, id, inst);
@@ -254,9 +277,10 @@ void FunctionVerifier::checkLanding(BlockId b, ValueId id) {
     for (BlockId p : cfg_.preds[into]) {
       const std::vector<ValueId>& ids = f_.blocks[p].insts;
       const Inst* term = ids.empty() ? nullptr : &f_.insts[ids.back()];
-      if (term != nullptr && term->op == Op::Resume && term->cases.empty() &&
-          term->targets.size() == 2 && term->targets[1] == into &&
-          term->targets[0] != into) {
+      if (term != nullptr && term->op == Op::Resume &&
+          payloadFits(term->op, term->data) &&
+          term->get<SequenceCases>().landing && term->targets.size() == 2 &&
+          term->targets[1] == into && term->targets[0] != into) {
         continue;
       }
       if (term != nullptr && term->op == Op::Br && p != b) {
@@ -273,70 +297,27 @@ void FunctionVerifier::checkLanding(BlockId b, ValueId id) {
   }
 }
 
-void FunctionVerifier::checkOperandCount(BlockId b, ValueId id,
-                                         const Inst& inst) {
-  std::size_t n = inst.ops.size();
-  auto expect = [&](std::size_t want, std::string_view why) {
-    if (n != want) {
-      fail(b, id,
-           fmt::format("expected {} operand(s){}, got {}", want, why, n));
-    }
-  };
-  switch (inst.op) {
-    case Op::Fn:
-      if (inst.attr >= 0 && inst.attr < builtinCount()) {
-        auto fn = static_cast<Builtin>(inst.attr);
-        auto arity = static_cast<std::size_t>(builtinArity(fn));
-        expect(arity, fmt::format(" for {}", builtinMnemonic(fn)));
-      }
-      return;
-    case Op::Phi: // one per input block: checkTargets
-      return;
-    case Op::Raise:
-      expect(0, "");
-      if (alarmInfo(static_cast<AlarmId>(inst.attr)).prefix[0] == '\0') {
-        fail(b, id,
-             fmt::format("raise of alarm {}, which has no code", inst.attr));
-      }
-      return;
-    case Op::Trace:
-      if (inst.str == 0) {
-        fail(b, id, "trace without a template");
-      } else if (inst.str <= module_.strings.size()) {
-        expect(traceHoles(module_.strings[inst.str - 1]),
-               " for the template's holes");
-      }
-      return;
-    case Op::Nc:
-    case Op::CallMacro:
-      if (inst.op == Op::CallMacro && n < 2) {
-        fail(b, id, "call.macro needs the operands P and L");
-      } else if (inst.cases.size() != n) {
-        fail(b, id,
-             fmt::format("{} word descriptors for {} operands",
-                         inst.cases.size(), n));
-      }
-      return;
-    case Op::Dprnt:
-    case Op::Bprnt:
-      expect(static_cast<std::size_t>(std::count_if(
-                 inst.cases.begin(), inst.cases.end(),
-                 [](std::int64_t item) { return (item & 1) != 0; })),
-             " for the value items");
-      return;
-    default:
-      if (opInfo(inst.op).operands >= 0) {
-        expect(static_cast<std::size_t>(opInfo(inst.op).operands), "");
-      }
-      return;
+void FunctionVerifier::checkShape(BlockId b, ValueId id, const Inst& inst) {
+  const Shape want = expectedShape(module_, inst);
+  auto n = std::ssize(inst.ops);
+  if (inst.op == Op::CallMacro && n < 2) {
+    fail(b, id, "call.macro needs the operands P and L");
+  } else if (want.operands >= 0 && n != want.operands) {
+    const Format f = opInfo(inst.op).format;
+    std::string why =
+        f == Format::Block || f == Format::MacroCall ? " for the words"
+        : f == Format::Print                         ? " for the value items"
+        : f == Format::Template ? " for the template's holes"
+        : f == Format::Function
+            ? fmt::format(" for {}", builtinMnemonic(inst.get<BuiltinFn>().fn))
+            : "";
+    fail(
+        b, id,
+        fmt::format("expected {} operand(s){}, got {}", want.operands, why, n));
   }
-}
-
-void FunctionVerifier::checkTargets(BlockId b, ValueId id, const Inst& inst) {
-  std::size_t want = expectedTargets(inst);
-  if (inst.targets.size() != want) {
+  if (inst.targets.size() != want.targets) {
     fail(b, id,
-         fmt::format("expected {} block target(s), got {}", want,
+         fmt::format("expected {} block target(s), got {}", want.targets,
                      inst.targets.size()));
   }
   for (BlockId t : inst.targets) {
@@ -346,88 +327,93 @@ void FunctionVerifier::checkTargets(BlockId b, ValueId id, const Inst& inst) {
   }
 }
 
-// Switch/resume case tables, word descriptors and print items.
-void FunctionVerifier::checkCases(BlockId b, ValueId id, const Inst& inst) {
-  switch (inst.op) {
-    case Op::Switch:
-    case Op::Resume: {
-      std::set<std::int64_t> seen;
-      for (std::int64_t n : inst.cases) {
-        if (n < 1 || n > kMaxSequenceNumber) {
-          fail(b, id,
-               fmt::format("case {} is not a sequence number "
-                           "(1..{})",
-                           n, kMaxSequenceNumber));
-        } else if (!seen.insert(n).second) {
-          fail(b, id, fmt::format("case {} appears twice", n));
-        }
-      }
-      return;
-    }
-    case Op::Nc:
-      checkWords(b, id, inst, 0);
-      return;
-    case Op::CallMacro:
-      checkWords(b, id, inst, 2); // cases[0], [1] (P, L) are placeholders
-      return;
-    case Op::Dprnt:
-    case Op::Bprnt:
-      for (std::int64_t item : inst.cases) {
-        if (!(item & 1) &&
-            (item < 0 || (item >> 1) >= std::ssize(module_.strings))) {
-          fail(b, id, fmt::format("text item {} names no string", item >> 1));
-        }
-      }
-      return;
-    default:
-      return;
+void FunctionVerifier::checkString(BlockId b, ValueId id, StringRef s,
+                                   std::string_view what) {
+  if (s > module_.strings.size()) {
+    fail(b, id, fmt::format("{} {} names no string", what, s));
   }
 }
 
-void FunctionVerifier::checkWords(BlockId b, ValueId id, const Inst& inst,
-                                  std::size_t from) {
-  for (std::size_t i = from; i < inst.cases.size(); ++i) {
-    std::int64_t w = inst.cases[i];
-    if (!isLetter(wordLetter(w)) || wordKind(w) > WordKind::NegVar ||
-        (w >> 16) != 0) {
-      fail(b, id, fmt::format("bad word descriptor {} for operand {}", w, i));
-    }
-  }
-}
-
-void FunctionVerifier::checkAttributes(BlockId b, ValueId id,
-                                       const Inst& inst) {
-  std::int64_t a = inst.attr;
-  switch (inst.op) {
-    case Op::Fn:
-      if (a < 0 || a >= builtinCount()) {
-        fail(b, id, fmt::format("unknown builtin {}", a));
-      } else if (static_cast<Builtin>(a) == Builtin::Adp) {
-        fail(b, id, "ADP is the adp operation, never fn");
-      }
-      break;
-    case Op::RoundAddr:
-      if (!isLetter(a)) {
-        fail(b, id, fmt::format("address {} is not a letter A..Z", a));
-      }
-      break;
-    case Op::BlockSkip:
-      if (a < 1 || a > 9) {
-        fail(b, id, "block skip switch outside 1..9");
-      }
-      break;
-    case Op::LdVar:
-    case Op::StVar:
-      if (a < 0) {
-        fail(b, id, "variable number is negative");
-      }
-      break;
-    default:
-      break;
-  }
-  if (inst.str > module_.strings.size()) {
-    fail(b, id, fmt::format("message {} names no string", inst.str));
-  }
+// What each payload may hold: one overload per alternative of Payload, so
+// that a new payload does not compile until it is checked.
+void FunctionVerifier::checkPayload(BlockId b, ValueId id, const Inst& inst) {
+  auto bad = [&](const std::string& message) { fail(b, id, message); };
+  std::visit(
+      Overloaded{
+          [](const NoData&) {},
+          [](const Number&) {},
+          [&](const VarNumber& v) {
+            if (v.number < 0) {
+              bad("variable number is negative");
+            }
+            checkString(b, id, v.message, "message");
+          },
+          [&](const Message& m) {
+            if (inst.op == Op::Trace && m.text == 0) {
+              bad("trace without a template");
+            }
+            checkString(b, id, m.text, "message");
+          },
+          [&](const BuiltinFn& f) {
+            if (static_cast<int>(f.fn) >= builtinCount()) {
+              bad(fmt::format("unknown builtin {}", static_cast<int>(f.fn)));
+            } else if (f.fn == Builtin::Adp) {
+              bad("ADP is the adp operation, never fn");
+            }
+          },
+          [&](const AddressLetter& l) {
+            if (!isLetter(l.letter)) {
+              bad(fmt::format("address {} is not a letter A..Z",
+                              static_cast<int>(l.letter)));
+            }
+          },
+          [&](const SkipSwitch& s) {
+            if (s.number < 1 || s.number > 9) {
+              bad("block skip switch outside 1..9");
+            }
+          },
+          [](const SourceLine&) {},
+          [&](const Words& w) {
+            for (std::size_t i = 0; i < w.words.size(); ++i) {
+              const AddressWord& word = w.words[i];
+              if (!isLetter(word.letter) || word.kind > WordKind::NegVar) {
+                bad(fmt::format("bad word {} ({}, kind {})", i,
+                                static_cast<int>(word.letter),
+                                static_cast<int>(word.kind)));
+              }
+            }
+          },
+          [&](const PrintItems& p) {
+            for (const PrintItem& item : p.items) {
+              checkString(b, id, item.text, "text item");
+              if (item.intDigits > 9 || item.fracDigits > 9) {
+                bad("print format digits outside 0..9");
+              }
+            }
+          },
+          [&](const AlarmRaise& r) {
+            if (alarmInfo(r.alarm).prefix[0] == '\0') {
+              bad(fmt::format("raise of alarm {}, which has no code",
+                              static_cast<int>(r.alarm)));
+            }
+            checkString(b, id, r.detail, "message");
+          },
+          [&](const SequenceCases& c) {
+            if (c.landing && (inst.op != Op::Resume || !c.numbers.empty())) {
+              bad("only a resume without cases has a landing");
+            }
+            std::set<std::int64_t> seen;
+            for (std::int64_t n : c.numbers) {
+              if (!isSequenceNumber(static_cast<double>(n))) {
+                bad(fmt::format("case {} is not a sequence number (1..{})", n,
+                                kMaxSequenceNumber));
+              } else if (!seen.insert(n).second) {
+                bad(fmt::format("case {} appears twice", n));
+              }
+            }
+          },
+      },
+      inst.data);
 }
 
 void FunctionVerifier::checkOperands(BlockId b, std::uint32_t index, ValueId id,
@@ -489,7 +475,7 @@ void FunctionVerifier::checkPhiInputs(BlockId b, ValueId id, const Inst& inst) {
   std::set<BlockId> seen;
   for (BlockId t : inst.targets) {
     if (t >= f_.blocks.size()) {
-      continue; // reported by checkTargets
+      continue; // reported by checkShape
     }
     if (!std::binary_search(preds.begin(), preds.end(), t)) {
       fail(b, id, fmt::format("b{} is not a predecessor", t));

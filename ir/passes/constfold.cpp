@@ -61,10 +61,8 @@ void Folder::setConst(ValueId id, Num v) {
   Inst& inst = f_.insts[id];
   inst.op = isVacant(v) ? Op::Vacant : Op::Const;
   inst.type = opInfo(inst.op).result;
-  inst.imm = isVacant(v) ? 0 : v;
+  inst.data = isVacant(v) ? Payload{NoData{}} : Payload{Number{v}};
   inst.ops.clear();
-  inst.attr = 0;
-  inst.str = 0;
   nums_[id] = v;
 }
 
@@ -81,38 +79,29 @@ void Folder::run() {
   eraseInsts(f_, dead_);
 }
 
+// Loads, effects and the other terminators are never folded.
 void Folder::fold(ValueId id) {
   const Inst& inst = f_.insts[id];
-  switch (inst.op) {
-    case Op::Const:
-      nums_[id] = inst.imm;
-      return;
-    case Op::Vacant:
-      nums_[id] = vacant();
-      return;
-    case Op::LdVar:
-      if (inst.attr == 0) {
-        setConst(id, vacant()); // #0 is always vacant and never alarms
-      }
-      return;
-    case Op::Fn:
-      foldFn(id);
-      return;
-    case Op::Phi:
-      foldPhi(id);
-      return;
-    case Op::LogAnd:
-    case Op::LogOr:
-    case Op::LogXor:
-      foldLogic(id);
-      return;
-    case Op::CondBr:
-    case Op::Switch:
-      foldTerminator(id);
-      return;
-    default:
-      foldArith(id);
-      return;
+  const Op op = inst.op;
+  if (op == Op::Const) {
+    nums_[id] = inst.get<Number>().value;
+  } else if (op == Op::Vacant) {
+    nums_[id] = vacant();
+  } else if (op == Op::LdVar) {
+    if (inst.get<VarNumber>().number == 0) {
+      setConst(id, vacant()); // #0 is always vacant and never alarms
+    }
+  } else if (op == Op::Fn) {
+    foldFn(id);
+  } else if (op == Op::Phi) {
+    foldPhi(id);
+  } else if (op == Op::LogAnd || op == Op::LogOr || op == Op::LogXor) {
+    foldLogic(id);
+  } else if (op == Op::CondBr || op == Op::Switch) {
+    foldTerminator(id);
+  } else if (binaryOf(op) || relationOf(op) || op == Op::Neg ||
+             op == Op::ToNum) {
+    foldArith(id);
   }
 }
 
@@ -120,9 +109,6 @@ void Folder::foldArith(ValueId id) {
   const Inst& inst = f_.insts[id];
   const std::optional<BinOp> binary = binaryOf(inst.op);
   const std::optional<RelOp> relation = relationOf(inst.op);
-  if (!binary && !relation && inst.op != Op::Neg && inst.op != Op::ToNum) {
-    return;
-  }
   std::optional<Num> a = num(inst.ops[0]);
   std::optional<Num> b =
       inst.ops.size() > 1 ? num(inst.ops[1]) : std::optional<Num>(0.0);
@@ -147,7 +133,7 @@ void Folder::foldArith(ValueId id) {
 // function is folded when both settings give the same result.
 void Folder::foldFn(ValueId id) {
   const Inst& inst = f_.insts[id];
-  auto f = static_cast<Builtin>(inst.attr);
+  Builtin f = inst.get<BuiltinFn>().fn;
   Num args[2] = {0, 0};
   for (std::size_t i = 0; i < inst.ops.size() && i < 2; ++i) {
     std::optional<Num> v = num(inst.ops[i]);
@@ -239,8 +225,9 @@ void Folder::foldTerminator(ValueId id) {
     return;
   }
   double n = roundHalfAway(numeric(*v));
-  for (std::size_t i = 0; i < inst.cases.size(); ++i) {
-    if (isSequenceNumber(n) && static_cast<double>(inst.cases[i]) == n) {
+  const std::vector<std::int64_t>& numbers = inst.get<SequenceCases>().numbers;
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    if (isSequenceNumber(n) && static_cast<double>(numbers[i]) == n) {
       replaceByBr(f_, b, inst.targets[i]);
       return;
     }

@@ -52,7 +52,8 @@ Key Cse::keyOf(const Inst& inst) const {
   for (ValueId op : inst.ops) {
     const Inst& def = f_.insts[resolve(repl_, op)];
     if (def.op == Op::Const) {
-      ops.emplace_back(1, std::bit_cast<std::uint64_t>(def.imm));
+      ops.emplace_back(1,
+                       std::bit_cast<std::uint64_t>(def.get<Number>().value));
     } else {
       ops.emplace_back(0, resolve(repl_, op));
     }
@@ -60,8 +61,10 @@ Key Cse::keyOf(const Inst& inst) const {
   if (isCommutative(inst.op)) {
     std::sort(ops.begin(), ops.end());
   }
+  // Of the Cseable ops only fn has a payload (ir_opcodes_test checks).
+  const auto* fn = std::get_if<BuiltinFn>(&inst.data);
   Key key{static_cast<std::uint64_t>(inst.op),
-          static_cast<std::uint64_t>(inst.attr)};
+          fn != nullptr ? static_cast<std::uint64_t>(fn->fn) : 0};
   for (const auto& [tag, value] : ops) {
     key.push_back(tag);
     key.push_back(value);

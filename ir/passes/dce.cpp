@@ -17,7 +17,7 @@ bool mustKeep(const Inst& inst) {
     return true;
   }
   if (inst.op == Op::LdVar) {
-    return !readCannotAlarm(inst.attr);
+    return !readCannotAlarm(inst.get<VarNumber>().number);
   }
   return (flags & MayAlarm) != 0;
 }

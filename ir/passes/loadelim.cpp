@@ -71,14 +71,15 @@ Known LoadElim::entry(BlockId b) const {
 Known LoadElim::transfer(BlockId b, Known known, bool rewrite) {
   for (ValueId id : f_.blocks[b].insts) {
     const Inst& inst = f_.insts[id];
-    if (inst.op == Op::LdVar && isMemoryVariable(inst.attr)) {
-      auto [it, fresh] = known.emplace(inst.attr, id);
+    const std::int64_t n = varNumberOf(inst);
+    if (inst.op == Op::LdVar && isMemoryVariable(n)) {
+      auto [it, fresh] = known.emplace(n, id);
       if (!fresh && rewrite) {
         repl_[id] = it->second;
         dead_[id] = true;
       }
-    } else if (inst.op == Op::StVar && isMemoryVariable(inst.attr)) {
-      known[inst.attr] = inst.ops[0];
+    } else if (inst.op == Op::StVar && isMemoryVariable(n)) {
+      known[n] = inst.ops[0];
     } else if (opInfo(inst.op).flags & WritesVars) {
       known.clear(); // stind, nc, call.macro, resume
     }

@@ -48,9 +48,9 @@ Mask accessedLocals(const Function& f) {
   for (const Block& block : f.blocks) {
     for (ValueId id : block.insts) {
       const Inst& inst = f.insts[id];
-      if ((inst.op == Op::LdVar || inst.op == Op::StVar) &&
-          isLocal(inst.attr)) {
-        locals |= localBit(inst.attr);
+      const std::int64_t n = varNumberOf(inst);
+      if (isLocal(n)) {
+        locals |= localBit(n);
       }
     }
   }
@@ -190,9 +190,9 @@ Plan makePlan(const Function& f, Mask locals) {
         exit == Op::Ret || exit == Op::Raise || sharesFrame(f, b);
     for (ValueId id : f.blocks[b].insts) {
       const Inst& inst = f.insts[id];
-      if (inst.op == Op::StVar && isLocal(inst.attr) &&
-          (locals & localBit(inst.attr))) {
-        plan.writes[b] |= localBit(inst.attr);
+      const std::int64_t var = varNumberOf(inst);
+      if (inst.op == Op::StVar && isLocal(var) && (locals & localBit(var))) {
+        plan.writes[b] |= localBit(var);
       }
     }
   }

@@ -26,13 +26,14 @@ Mask liveGen(const Function& f, const Plan& plan, BlockId b) {
   Mask gen = 0;
   for (ValueId id : f.blocks[b].insts) {
     const Inst& inst = f.insts[id];
-    if (!isLocal(inst.attr) || !(plan.locals & localBit(inst.attr))) {
+    const std::int64_t n = varNumberOf(inst);
+    if (!isLocal(n) || !(plan.locals & localBit(n))) {
       continue;
     }
-    if (inst.op == Op::LdVar && !(written & localBit(inst.attr))) {
-      gen |= localBit(inst.attr);
+    if (inst.op == Op::LdVar && !(written & localBit(n))) {
+      gen |= localBit(n);
     } else if (inst.op == Op::StVar) {
-      written |= localBit(inst.attr);
+      written |= localBit(n);
     }
   }
   return gen | (plan.stores[b] & ~written); // a store back reads the value
@@ -106,7 +107,9 @@ void Renamer::enter(BlockId b, Values& cur) {
       continue;
     }
     ValueId v = newInst(f_, plan_.sync[b] ? Op::LdVar : Op::Phi, b, 0);
-    f_.insts[v].attr = plan_.sync[b] ? k + 1 : 0;
+    if (plan_.sync[b]) {
+      f_.insts[v].get<VarNumber>().number = k + 1;
+    }
     insertAt(f_, b, pos++, v);
     if (!plan_.sync[b]) {
       phis_.emplace_back(v, k);
@@ -118,15 +121,14 @@ void Renamer::enter(BlockId b, Values& cur) {
 bool Renamer::rewriteBlock(BlockId b, Values& cur) {
   for (ValueId id : f_.blocks[b].insts) {
     const Inst& inst = f_.insts[id];
-    bool access = inst.op == Op::LdVar || inst.op == Op::StVar;
-    if (!access || !isLocal(inst.attr) ||
-        !(plan_.locals & localBit(inst.attr))) {
+    const std::int64_t n = varNumberOf(inst);
+    if (!isLocal(n) || !(plan_.locals & localBit(n))) {
       continue;
     }
     if (repl_.size() <= id) {
       continue; // a load this pass added
     }
-    auto k = static_cast<std::size_t>(inst.attr - 1);
+    auto k = static_cast<std::size_t>(n - 1);
     if (inst.op == Op::StVar) {
       cur[k] = inst.ops[0];
     } else if (cur[k] == kNoValue) {
@@ -150,7 +152,7 @@ bool Renamer::storeBack(BlockId b, const Values& cur) {
       return false;
     }
     ValueId st = newInst(f_, Op::StVar, b, line, {cur[k]});
-    f_.insts[st].attr = k + 1;
+    f_.insts[st].get<VarNumber>().number = k + 1;
     insertAt(f_, b, f_.blocks[b].insts.size() - 1, st);
   }
   return true;

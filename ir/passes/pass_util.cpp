@@ -26,7 +26,7 @@ bool mayCallByG(const Function& f, const Inst& nc, std::size_t i,
   if (value.op != Op::Const) {
     return true;
   }
-  const double tenths = roundHalfAway(value.imm * 10.0);
+  const double tenths = roundHalfAway(value.get<Number>().value * 10.0);
   if (tenths < 0.0 || tenths > 99999.0) {
     return false; // PS0010 at run time
   }
@@ -34,8 +34,9 @@ bool mayCallByG(const Function& f, const Inst& nc, std::size_t i,
 }
 
 bool blockMayCallByG(const Function& f, const Inst& nc, bool modalToo) {
-  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
-    if (wordLetter(nc.cases[i]) == 'G' && mayCallByG(f, nc, i, modalToo)) {
+  const std::vector<AddressWord>& words = nc.get<Words>().words;
+  for (std::size_t i = 0; i < nc.ops.size() && i < words.size(); ++i) {
+    if (words[i].letter == 'G' && mayCallByG(f, nc, i, modalToo)) {
       return true;
     }
   }
@@ -45,8 +46,9 @@ bool blockMayCallByG(const Function& f, const Inst& nc, bool modalToo) {
 } // namespace
 
 bool ncMayShareFrame(const Function& f, const Inst& nc) {
-  for (std::size_t i = 0; i < nc.ops.size() && i < nc.cases.size(); ++i) {
-    const char letter = wordLetter(nc.cases[i]);
+  const std::vector<AddressWord>& words = nc.get<Words>().words;
+  for (std::size_t i = 0; i < nc.ops.size() && i < words.size(); ++i) {
+    const char letter = words[i].letter;
     const Inst& value = f.insts[nc.ops[i]];
     if (value.op == Op::Vacant) {
       continue; // a vacant word is no word
@@ -57,14 +59,22 @@ bool ncMayShareFrame(const Function& f, const Inst& nc) {
     // Every M code but those that stop or end may be M98, M99 or a code
     // that calls a subprogram, which shares this frame.
     if (letter == 'M') {
-      bool negated = wordKind(nc.cases[i]) == WordKind::NegVar;
-      if (value.op != Op::Const ||
-          mCodeMayCall(roundHalfAway(negated ? -value.imm : value.imm))) {
+      if (value.op != Op::Const) {
+        return true;
+      }
+      const bool negated = words[i].kind == WordKind::NegVar;
+      const double code = value.get<Number>().value;
+      if (mCodeMayCall(roundHalfAway(negated ? -code : code))) {
         return true;
       }
     }
   }
   return false;
+}
+
+std::int64_t varNumberOf(const Inst& inst) {
+  const auto* var = std::get_if<VarNumber>(&inst.data);
+  return var != nullptr ? var->number : -1;
 }
 
 ValueId terminatorOf(const Function& f, BlockId b) {
@@ -79,6 +89,7 @@ ValueId newInst(Function& f, Op op, BlockId block, std::uint32_t line,
   inst.block = block;
   inst.line = line;
   inst.ops = std::move(ops);
+  inst.data = payloadOf(op);
   f.insts.push_back(std::move(inst));
   return static_cast<ValueId>(f.insts.size() - 1);
 }
@@ -163,7 +174,7 @@ void replaceByBr(Function& f, BlockId b, BlockId to) {
   br.op = Op::Br;
   br.type = Type::None;
   br.ops.clear();
-  br.cases.clear();
+  br.data = NoData{};
   br.targets = {to};
 }
 

@@ -39,6 +39,9 @@ bool ncMayCall(const Function& f, const Inst& nc);
 /// code of FANUC's other than G66 and G66.1.
 bool moduleMayCallByG(const Module& m);
 
+/// The variable an ldvar or stvar names; -1 for any other instruction.
+std::int64_t varNumberOf(const Inst& inst);
+
 /// The terminator of `b` (its last instruction).
 ValueId terminatorOf(const Function& f, BlockId b);
 

@@ -99,41 +99,45 @@ Range builtin(Builtin fn, const Range& a) {
 // `value op other` holds (op one of lt le gt ge eq, value on the left).
 struct Constraint {
   BlockId block; // holds in the blocks this one dominates
-  Op op;
+  RelOp op;
   ValueId other;
 };
 
-Op mirrored(Op op) {
+// `b op a` for `a op b`.
+RelOp mirrored(RelOp op) {
   switch (op) {
-    case Op::Lt:
-      return Op::Gt;
-    case Op::Le:
-      return Op::Ge;
-    case Op::Gt:
-      return Op::Lt;
-    case Op::Ge:
-      return Op::Le;
-    default:
-      return op;
+    case RelOp::Lt:
+      return RelOp::Gt;
+    case RelOp::Le:
+      return RelOp::Ge;
+    case RelOp::Gt:
+      return RelOp::Lt;
+    case RelOp::Ge:
+      return RelOp::Le;
+    case RelOp::Eq:
+    case RelOp::Ne:
+      break;
   }
+  return op;
 }
 
 // The comparison that holds when `op` is false (on numbers, never NaN).
-Op negated(Op op) {
+RelOp negated(RelOp op) {
   switch (op) {
-    case Op::Lt:
-      return Op::Ge;
-    case Op::Le:
-      return Op::Gt;
-    case Op::Gt:
-      return Op::Le;
-    case Op::Ge:
-      return Op::Lt;
-    case Op::Eq:
-      return Op::Ne;
-    default:
-      return Op::Eq; // ne
+    case RelOp::Lt:
+      return RelOp::Ge;
+    case RelOp::Le:
+      return RelOp::Gt;
+    case RelOp::Gt:
+      return RelOp::Le;
+    case RelOp::Ge:
+      return RelOp::Lt;
+    case RelOp::Eq:
+      return RelOp::Ne;
+    case RelOp::Ne:
+      break;
   }
+  return RelOp::Eq;
 }
 
 class Analysis {
@@ -154,7 +158,7 @@ private:
   void collectConstraints();
   template <typename Each>
   void comparisons(ValueId cond, bool sense, Each each) const;
-  Range bound(Op op, ValueId other) const;
+  Range bound(RelOp op, ValueId other) const;
   Range operand(ValueId v, BlockId use) const;
   Range phiInput(ValueId v, BlockId pred, BlockId phiBlock) const;
   Range transfer(const Inst& inst) const;
@@ -214,14 +218,15 @@ void Analysis::comparisons(ValueId cond, bool sense, Each each) const {
       work.emplace_back(inst.ops[1], holds);
       continue;
     }
-    if (!relationOf(inst.op)) {
+    const std::optional<RelOp> rel = relationOf(inst.op);
+    if (!rel) {
       continue;
     }
-    Op op = holds ? inst.op : negated(inst.op);
-    if (op == Op::Ne) {
+    const RelOp op = holds ? *rel : negated(*rel);
+    if (op == RelOp::Ne) {
       continue;
     }
-    auto side = [&](ValueId v, Op o, ValueId other) {
+    auto side = [&](ValueId v, RelOp o, ValueId other) {
       each(v, o, other);
       if (f_.insts[v].op == Op::ToNum) {
         each(f_.insts[v].ops[0], o, other);
@@ -245,7 +250,7 @@ void Analysis::collectConstraints() {
       if (cfg_.preds[s].size() != 1) {
         continue;
       }
-      comparisons(term.ops[0], t == 0, [&](ValueId v, Op op, ValueId other) {
+      comparisons(term.ops[0], t == 0, [&](ValueId v, RelOp op, ValueId other) {
         constraints_[v].push_back(Constraint{s, op, other});
       });
     }
@@ -253,21 +258,23 @@ void Analysis::collectConstraints() {
 }
 
 // What `value op other` says about value.
-Range Analysis::bound(Op op, ValueId other) const {
+Range Analysis::bound(RelOp op, ValueId other) const {
   const Range& o = ranges_[other];
   if (isEmpty(o)) {
     return Range{}; // not computed yet: no information
   }
   switch (op) {
-    case Op::Lt:
-    case Op::Le:
+    case RelOp::Lt:
+    case RelOp::Le:
       return Range{-kInf, o.hi};
-    case Op::Gt:
-    case Op::Ge:
+    case RelOp::Gt:
+    case RelOp::Ge:
       return Range{o.lo, kInf};
-    default:
-      return o; // eq
+    case RelOp::Eq:
+    case RelOp::Ne: // comparisons() never gives ne
+      break;
   }
+  return o;
 }
 
 Range Analysis::operand(ValueId v, BlockId use) const {
@@ -290,7 +297,7 @@ Range Analysis::phiInput(ValueId v, BlockId pred, BlockId phiBlock) const {
   const Inst& term = f_.insts[f_.blocks[pred].insts.back()];
   if (term.op == Op::CondBr && term.targets[0] != term.targets[1]) {
     comparisons(term.ops[0], term.targets[0] == phiBlock,
-                [&](ValueId w, Op op, ValueId other) {
+                [&](ValueId w, RelOp op, ValueId other) {
                   if (w == v) {
                     r = meet(r, bound(op, other));
                   }
@@ -308,7 +315,8 @@ Range Analysis::transfer(const Inst& inst) const {
     return r;
   }
   if (inst.op == Op::Const) {
-    return Range{inst.imm, inst.imm};
+    const double v = inst.get<Number>().value;
+    return Range{v, v};
   }
   if (inst.op == Op::Vacant) {
     return Range{0, 0};
@@ -318,25 +326,36 @@ Range Analysis::transfer(const Inst& inst) const {
   if (isEmpty(a) || isEmpty(b)) {
     return kEmpty; // on a path that cannot run
   }
-  switch (inst.op) {
-    case Op::ToNum:
-      return a;
-    case Op::Neg:
-      return Range{-a.hi, -a.lo};
-    case Op::Add:
-      return checked(a.lo + b.lo, a.hi + b.hi);
-    case Op::Sub:
-      return checked(a.lo - b.hi, a.hi - b.lo);
-    case Op::Mul:
-      return multiply(a, b);
-    case Op::Div:
-      return outward(divide(a, b));
-    case Op::Fn:
-      return inst.ops.size() == 1 ? builtin(static_cast<Builtin>(inst.attr), a)
-                                  : Range{};
-    default:
-      return Range{};
+  if (inst.op == Op::ToNum) {
+    return a;
   }
+  if (inst.op == Op::Neg) {
+    return Range{-a.hi, -a.lo};
+  }
+  if (inst.op == Op::Fn) {
+    return inst.ops.size() == 1 ? builtin(inst.get<BuiltinFn>().fn, a)
+                                : Range{};
+  }
+  const std::optional<BinOp> bin = binaryOf(inst.op);
+  if (!bin) {
+    return Range{};
+  }
+  switch (*bin) {
+    case BinOp::Add:
+      return checked(a.lo + b.lo, a.hi + b.hi);
+    case BinOp::Sub:
+      return checked(a.lo - b.hi, a.hi - b.lo);
+    case BinOp::Mul:
+      return multiply(a, b);
+    case BinOp::Div:
+      return outward(divide(a, b));
+    case BinOp::Mod:
+    case BinOp::And:
+    case BinOp::Or:
+    case BinOp::Xor:
+      break;
+  }
+  return Range{};
 }
 
 // One pass over the blocks in reverse post-order; true if a range changed.

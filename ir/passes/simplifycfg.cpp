@@ -34,7 +34,7 @@ void pruneResumeCases(Function& f, bool gCodesMayCall) {
     }
     std::vector<BlockId> dropped(term.targets.begin() + 1, term.targets.end());
     term.targets.resize(1);
-    term.cases.clear();
+    term.data = SequenceCases{};
     for (BlockId t : dropped) {
       if (t != term.targets[0]) {
         dropPhiInputs(f, t, b);

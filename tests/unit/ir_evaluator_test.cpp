@@ -42,13 +42,13 @@ public:
 
   void at(BlockId b) { cur_ = b; }
 
-  ValueId emit(Op op, std::vector<ValueId> ops = {}, std::int64_t attr = 0) {
+  ValueId emit(Op op, std::vector<ValueId> ops = {}) {
     Inst i;
     i.op = op;
     i.type = opInfo(op).result;
     i.block = cur_;
     i.ops = std::move(ops);
-    i.attr = attr;
+    i.data = payloadOf(op);
     auto id = static_cast<ValueId>(fn().insts.size());
     fn().insts.push_back(std::move(i));
     fn().blocks[cur_].insts.push_back(id);
@@ -57,15 +57,23 @@ public:
 
   ValueId num(double v) {
     ValueId id = emit(Op::Const);
-    inst(id).imm = v;
+    inst(id).data = Number{v};
     return id;
   }
 
-  void begin(int line) { emit(Op::Begin, {}, line); }
+  void begin(int line) {
+    inst(emit(Op::Begin)).data = SourceLine{static_cast<std::uint32_t>(line)};
+  }
 
-  ValueId ld(int var) { return emit(Op::LdVar, {}, var); }
+  ValueId ld(int var) {
+    ValueId id = emit(Op::LdVar);
+    inst(id).data = VarNumber{var};
+    return id;
+  }
 
-  void st(int var, ValueId v) { emit(Op::StVar, {v}, var); }
+  void st(int var, ValueId v) {
+    inst(emit(Op::StVar, {v})).data = VarNumber{var};
+  }
 
   void st(int var, double v) { st(var, num(v)); }
 
@@ -82,7 +90,9 @@ public:
             std::vector<std::int64_t> cases = {}) {
     ValueId id = emit(op, std::move(ops));
     inst(id).targets = std::move(targets);
-    inst(id).cases = std::move(cases);
+    if (op == Op::Switch || op == Op::Resume) {
+      inst(id).data = SequenceCases{std::move(cases)};
+    }
   }
 
   /// resume %f, next [cases[i]: targets[i]].
@@ -94,13 +104,13 @@ public:
 
 private:
   ValueId wordOp(Op op, std::vector<ValueId> ops, const std::vector<W>& ws) {
-    std::vector<std::int64_t> cases(ops.size(), 0);
+    Words words;
     for (const W& w : ws) {
       ops.push_back(w.value);
-      cases.push_back(packWord(w.letter, w.kind));
+      words.words.push_back({w.letter, w.kind});
     }
     ValueId id = emit(op, std::move(ops));
-    inst(id).cases = std::move(cases);
+    inst(id).data = std::move(words);
     return id;
   }
 
@@ -409,8 +419,7 @@ TEST(IrEval, DprntPrintsTextAndValues) {
   ValueId v = b.num(1.5);
   ValueId w = b.ld(1);
   ValueId p = b.emit(Op::Dprnt, {v, w});
-  b.inst(p).cases = {packText(0), packFormat(5, 3), packText(1),
-                     packFormat(2, 1)};
+  b.inst(p).data = PrintItems{{{1}, {0, 5, 3}, {2}, {0, 2, 1}}};
   b.term(Op::Ret);
 
   Machine machine;
@@ -457,7 +466,9 @@ TEST(IrEval, BlockSkipFollowsTheMask) {
     Module m;
     Builder b(m, "O1000", 1000);
     BlockId body = b.block(), done = b.block();
-    b.term(Op::CondBr, {done, body}, {b.emit(Op::BlockSkip, {}, 2)});
+    ValueId skip = b.emit(Op::BlockSkip);
+    b.inst(skip).data = SkipSwitch{2};
+    b.term(Op::CondBr, {done, body}, {skip});
     b.at(body);
     b.st(100, 1.0);
     b.term(Op::Br, {done});

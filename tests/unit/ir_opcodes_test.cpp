@@ -1,6 +1,6 @@
 // The columns of ir/opcodes.def agree with each other: a row that says add
-// computes BinOp::Sub, or a terminator outside the Control class, fails
-// here rather than as a miscompile in one engine.
+// computes BinOp::Sub, or a branch that is no terminator, fails here rather
+// than as a miscompile in one engine.
 #include "ir/ir.h"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,8 @@ namespace mbc::ir {
 namespace {
 
 constexpr std::array kOps = {
-#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math) Op::Name,
+#define OP(Name, Mnemonic, Result, Operands, Takes, Flags, Math, Format)       \
+  Op::Name,
 #include "ir/opcodes.def"
 };
 
@@ -45,26 +46,52 @@ TEST(IrOpcodes, MathIsWhatTheMnemonicSays) {
   EXPECT_EQ(relations, 6);
 }
 
-TEST(IrOpcodes, ClassesAndFlagsAgree) {
+bool takesTargets(Format f) {
+  return f == Format::Jump || f == Format::Branch || f == Format::Table ||
+         f == Format::Resumption;
+}
+
+TEST(IrOpcodes, FormatsAndFlagsAgree) {
   for (Op op : kOps) {
     const OpInfo& info = opInfo(op);
     const bool terminator = (info.flags & Terminator) != 0;
-    EXPECT_EQ(terminator, info.cls == OpClass::Control) << info.mnemonic;
+    if (takesTargets(info.format) || info.format == Format::Alarm) {
+      EXPECT_TRUE(terminator) << info.mnemonic;
+    }
+    if (terminator) {
+      EXPECT_EQ(info.result, Type::None) << info.mnemonic;
+    }
     if (info.flags & Commutative) {
       EXPECT_TRUE(info.flags & Cseable) << info.mnemonic;
       EXPECT_EQ(info.operands, 2) << info.mnemonic;
     }
     if (info.flags & Cseable) {
       // One value may stand for another only if nothing else decides it.
-      EXPECT_EQ(info.cls, OpClass::Value) << info.mnemonic;
-      EXPECT_FALSE(info.flags & (ReadsState | ReadsVars | SideEffect))
+      EXPECT_FALSE(info.flags & (ReadsState | ReadsVars | WritesVars |
+                                 SideEffect | Terminator))
           << info.mnemonic;
       EXPECT_NE(info.result, Type::None) << info.mnemonic;
-    }
-    if (info.cls == OpClass::Variable) {
-      EXPECT_TRUE(info.flags & (ReadsVars | WritesVars)) << info.mnemonic;
+      // cse keys a value by its op, operands and fn's builtin: no other
+      // payload would tell two such values apart.
+      EXPECT_TRUE(info.format == Format::Plain ||
+                  info.format == Format::Function)
+          << info.mnemonic;
     }
   }
+}
+
+// A new instruction starts with the payload its row names, and only that
+// one fits.
+TEST(IrOpcodes, PayloadOfFitsItsOpAlone) {
+  for (Op op : kOps) {
+    const Payload p = payloadOf(op);
+    EXPECT_TRUE(payloadFits(op, p)) << opInfo(op).mnemonic;
+    const Payload other =
+        std::holds_alternative<NoData>(p) ? Payload{Number{}} : Payload{};
+    EXPECT_FALSE(payloadFits(op, other)) << opInfo(op).mnemonic;
+  }
+  EXPECT_TRUE(std::holds_alternative<Words>(payloadOf(Op::CallMacro)));
+  EXPECT_TRUE(std::holds_alternative<SequenceCases>(payloadOf(Op::Resume)));
 }
 
 } // namespace

@@ -181,7 +181,7 @@ TEST(IrText, TestsUseEveryOperation) {
       }
     }
   }
-#define OP(Name, Mnemonic, Result, Operands, Flags, Class, Math)               \
+#define OP(Name, Mnemonic, Result, Operands, Takes, Flags, Math, Format)       \
   EXPECT_TRUE(used.count(Op::Name)) << Mnemonic;
 #include "ir/opcodes.def"
 }
@@ -207,7 +207,7 @@ b0:
   EXPECT_EQ(f.insts[0].type, Type::None);
   EXPECT_EQ(f.insts[7].type, Type::Num);
   EXPECT_EQ(f.insts[8].op, Op::StVar);
-  EXPECT_EQ(f.insts[8].attr, 1);
+  EXPECT_EQ(f.insts[8].get<VarNumber>().number, 1);
 }
 
 TEST(IrText, FillsFieldsAsIrHDescribes) {
@@ -218,20 +218,23 @@ TEST(IrText, FillsFieldsAsIrHDescribes) {
   EXPECT_EQ(m.functions[1].name, "<DRILL_CYCLE>");
   const Inst& call = f.insts[17];
   EXPECT_EQ(call.ops, (std::vector<ValueId>{14, 15, 16, 11}));
-  EXPECT_EQ(call.cases,
-            (std::vector<std::int64_t>{0, 0, packWord('A', WordKind::Dec),
-                                       packWord('B', WordKind::Val)}));
+  EXPECT_EQ(
+      call.get<Words>().words,
+      (std::vector<AddressWord>{{'A', WordKind::Dec}, {'B', WordKind::Val}}));
   const Inst& resume = f.insts[f.blocks[3].insts.back()];
   EXPECT_EQ(resume.targets, (std::vector<BlockId>{4, 5}));
-  EXPECT_EQ(resume.cases, (std::vector<std::int64_t>{10}));
-  const Inst& dprnt = f.insts[f.blocks[3].insts[2]];
-  ASSERT_EQ(dprnt.cases.size(), 4U);
-  EXPECT_EQ(m.strings[dprnt.cases[0] >> 1], "X");
-  EXPECT_EQ(dprnt.cases[1], packFormat(5, 3));
-  EXPECT_EQ(m.strings[dprnt.cases[2] >> 1], "*Y\"Q\"");
-  const Inst& stind = f.insts[f.blocks[5].insts[5]];
-  ASSERT_NE(stind.str, 0U);
-  EXPECT_EQ(m.strings[stind.str - 1], "MSG \\ DONE");
+  EXPECT_EQ(resume.get<SequenceCases>().numbers,
+            (std::vector<std::int64_t>{10}));
+  EXPECT_FALSE(resume.get<SequenceCases>().landing);
+  const std::vector<PrintItem>& items =
+      f.insts[f.blocks[3].insts[2]].get<PrintItems>().items;
+  ASSERT_EQ(items.size(), 4U);
+  EXPECT_EQ(m.strings[items[0].text - 1], "X");
+  EXPECT_EQ(items[1], (PrintItem{0, 5, 3}));
+  EXPECT_EQ(m.strings[items[2].text - 1], "*Y\"Q\"");
+  const StringRef message = f.insts[f.blocks[5].insts[5]].get<Message>().text;
+  ASSERT_NE(message, 0U);
+  EXPECT_EQ(m.strings[message - 1], "MSG \\ DONE");
 }
 
 TEST(IrText, LinesFollowTheLastBegin) {

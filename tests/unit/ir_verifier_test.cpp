@@ -62,7 +62,7 @@ b0:
   EXPECT_EQ(verify(m), Messages{});
   for (Inst& inst : m.functions[0].insts) {
     if (inst.op == Op::Raise) {
-      inst.attr = static_cast<std::int64_t>(mbc::AlarmId::MacroAlarm);
+      inst.get<AlarmRaise>().alarm = mbc::AlarmId::MacroAlarm;
     }
   }
   const Messages messages = verify(m);
@@ -154,9 +154,20 @@ TEST(IrVerifier, WrongOperandCount) {
 TEST(IrVerifier, WordDescriptorsMatchOperands) {
   Module m = parseText("func @O1 \"\" {\nb0:\n  %1 = const 1\n"
                        "  %2 = nc X:int %1, Y:dec %1\n  resume %2, b0 []\n}\n");
-  m.functions[0].insts[2].cases.pop_back();
-  EXPECT_EQ(verify(m), Messages{"@O1 b0: %2 = nc X:int %1, ?:int %1: 1 word "
-                                "descriptors for 2 operands"});
+  m.functions[0].insts[2].get<Words>().words.pop_back();
+  EXPECT_EQ(verify(m), Messages{"@O1 b0: %2 = nc X:int %1, ?:int %1: expected "
+                                "1 operand(s) for the words, got 2"});
+}
+
+// Each op has the payload opcodes.def names: a ldvar holding a builtin is
+// caught before anything reads it.
+TEST(IrVerifier, PayloadIsTheOneTheOpHas) {
+  Module m = parseText("func @O1 \"\" {\nb0:\n  %1 = ldvar #1\n  ret\n}\n");
+  EXPECT_EQ(verify(m), Messages{});
+  m.functions[0].insts[1].data = BuiltinFn{Builtin::Sqrt};
+  EXPECT_EQ(verify(m),
+            Messages{"@O1 b0: %1 = ldvar <payload?>: the payload is not the "
+                     "one ldvar has (opcodes.def)"});
 }
 
 TEST(IrVerifier, PrintItemsMatchOperands) {
