@@ -1,6 +1,6 @@
-// Context lifetime, sinks, run bookkeeping (blocks, limits, trace, finish,
-// statistics) and alarms with their report text: the parts of the C ABI that
-// are not about variables, calls, NC blocks or output.
+// Context lifetime, sinks and run bookkeeping (blocks, limits, finish,
+// statistics): the parts of the C ABI that are not about variables, calls,
+// NC blocks, alarms or output.
 #include "context.h"
 
 #include <mbc/read_file.h>
@@ -125,71 +125,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   takeDateAndTime(ctx);
 }
 
-std::string alarmMessage(const PendingAlarm& alarm) {
-  if (alarm.id == AlarmId::MacroAlarm) {
-    return alarm.detail;
-  }
-  std::string message = alarmInfo(alarm.id).message;
-  if (!alarm.detail.empty()) {
-    message += ": " + alarm.detail;
-  }
-  return message;
-}
-
-std::string location(const std::string& file, int line) {
-  return file.empty() ? "" : fmt::format("{}:{}: ", file, line);
-}
-
 } // namespace
-
-mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
-                  int macroNumber) {
-  PendingAlarm& alarm = ctx.alarm;
-  if (alarm.id != AlarmId::None || id == AlarmId::None) {
-    return static_cast<mbrt_status>(id);
-  }
-  alarm.id = id;
-  alarm.macroNumber = macroNumber;
-  alarm.detail = detail;
-  alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
-  alarm.line = ctx.block.line;
-  alarm.stack.clear();
-  for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
-    alarm.stack.push_back(CallSite{
-        call->program, call->file != nullptr ? call->file : "", call->line});
-  }
-  if (ctx.alarmSink.fn != nullptr) {
-    std::string report(mbrt_alarm_report(&ctx, nullptr, 0), '\0');
-    mbrt_alarm_report(&ctx, report.data(), report.size() + 1);
-    ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
-  }
-  return static_cast<mbrt_status>(id);
-}
-
-void sendMessage(mbrt_ctx& ctx, std::string_view text) {
-  if (ctx.messageSink.fn == nullptr) {
-    return;
-  }
-  const std::string line =
-      location(ctx.block.file != nullptr ? ctx.block.file : "",
-               ctx.block.line) +
-      fmt::format("message: {}\n", text);
-  sendText(ctx, ctx.messageSink, line);
-}
-
-int parseProgramNumber(const char* name) {
-  if (name == nullptr || name[0] != 'O' || name[1] == '\0') {
-    return 0;
-  }
-  int number = 0;
-  for (const char* digit = name + 1; *digit != '\0'; ++digit) {
-    if (*digit < '0' || *digit > '9' || number > kMaxProgramNumber) {
-      return 0;
-    }
-    number = number * 10 + (*digit - '0');
-  }
-  return number;
-}
 
 } // namespace mbc::rt
 
@@ -332,57 +268,12 @@ mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
                            ctx->maxBlocks));
 }
 
-int mbrt_tracing(const mbrt_ctx* ctx) {
-  return ctx->traceSink.fn != nullptr;
-}
-
-void mbrt_trace(mbrt_ctx* ctx, const char* text) {
-  if (ctx->traceSink.fn == nullptr) {
-    return;
-  }
-  const std::string line =
-      location(ctx->block.file != nullptr ? ctx->block.file : "",
-               ctx->block.line) +
-      (text != nullptr ? text : "") + "\n";
-  sendText(*ctx, ctx->traceSink, line);
-}
-
 void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
   if (end_kind == MBRT_END_M02_M30) {
     ctx->partsCount += 1.0;
   } else if (end_kind == MBRT_END_MAIN_M99) {
     ctx->mainM99 = true;
   }
-}
-
-mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail) {
-  const auto id = static_cast<AlarmId>(alarm_id);
-  return raise(*ctx, id, detail != nullptr ? detail : "");
-}
-
-int mbrt_alarm(const mbrt_ctx* ctx) {
-  return static_cast<int>(ctx->alarm.id);
-}
-
-size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
-  const PendingAlarm& alarm = ctx->alarm;
-  std::string report;
-  if (alarm.id != AlarmId::None) {
-    const std::string message = alarmMessage(alarm);
-    report = fmt::format("{}alarm {}{}{}\n", location(alarm.file, alarm.line),
-                         alarmCode(alarm.id, alarm.macroNumber),
-                         message.empty() ? "" : ": ", message);
-    for (const CallSite& site : alarm.stack) {
-      report += fmt::format("  in {} called from {}:{}\n", site.program,
-                            site.file, site.line);
-    }
-  }
-  if (buf != nullptr && size > 0) {
-    const size_t n = std::min(report.size(), size - 1);
-    std::memcpy(buf, report.data(), n);
-    buf[n] = '\0';
-  }
-  return report.size();
 }
 
 void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {

@@ -329,6 +329,10 @@ namespace mbc::rt {
 mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail = {},
                   int macroNumber = 0);
 
+/// "file:line: ", or "" without a file: how alarms, messages and trace
+/// lines name the block.
+std::string locationPrefix(const std::string& file, int line);
+
 /// Sends "file:line: message: text\n" to the message sink.
 void sendMessage(mbrt_ctx& ctx, std::string_view text);
 

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "look_ahead.h"
+#include "g_codes.h"
 
 namespace mbc::rt {
 

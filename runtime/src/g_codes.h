@@ -12,6 +12,18 @@ struct GCodeInfo {
   const char* name;
 };
 
+/// The look-ahead, AI contour control, smoothing and servo switches
+/// (look_ahead.h), in tenths: group 00 codes whose words are settings, not
+/// a move.
+inline constexpr int kG05 = 50;
+inline constexpr int kG051 = 51;
+inline constexpr int kG054 = 54;
+inline constexpr int kG08 = 80;
+
+inline constexpr bool isLookAheadCode(int tenths) {
+  return tenths == kG05 || tenths == kG051 || tenths == kG054 || tenths == kG08;
+}
+
 /// The FANUC G code with this number in tenths, or nullptr if there is none.
 const GCodeInfo* findGCode(int tenths);
 

@@ -9,11 +9,6 @@ namespace mbc::rt {
 
 namespace {
 
-constexpr int kG05 = 50;
-constexpr int kG051 = 51;
-constexpr int kG054 = 54;
-constexpr int kG08 = 80;
-
 mbrt_status badSwitch(mbrt_ctx& ctx, int tenths, char letter,
                       const std::optional<double>& value, const char* allowed) {
   return raise(ctx, AlarmId::ImproperNcAddress,
@@ -24,10 +19,6 @@ mbrt_status badSwitch(mbrt_ctx& ctx, int tenths, char letter,
 }
 
 } // namespace
-
-bool isLookAheadCode(int tenths) {
-  return tenths == kG05 || tenths == kG051 || tenths == kG054 || tenths == kG08;
-}
 
 mbrt_status switchLookAhead(mbrt_ctx& ctx, int tenths,
                             const LookAheadWords& words) {

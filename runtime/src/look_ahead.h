@@ -11,9 +11,6 @@
 
 namespace mbc::rt {
 
-/// True for G05, G05.1, G05.4 and G08 (tenths).
-bool isLookAheadCode(int tenths);
-
 /// The words such a block switches with, as written.
 struct LookAheadWords {
   std::optional<double> p;

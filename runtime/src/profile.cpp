@@ -4,6 +4,7 @@
 #include "profile.h"
 
 #include <mbc/calling_codes.h>
+#include <mbc/sysvars.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,7 +14,6 @@
 
 #include "parameters.h"
 #include "profile_json.h"
-#include "sysvars.h"
 
 namespace mbc::rt {
 

@@ -2,21 +2,9 @@
 // work offsets, #3000-series, modal information and positions.
 #pragma once
 
-#include <cmath>
-
 #include "context.h"
 
 namespace mbc::rt {
-
-/// The input signals: #1000-#1031 one each, #1032-#1035 32 at a time.
-inline constexpr int kFirstInputSignal = 1000;
-inline constexpr int kFirstInputWord = 1032;
-inline constexpr int kLastInputWord = 1035;
-
-/// A value 32 signals can hold: a whole signed 32-bit number.
-inline bool isSignalWord(double v) {
-  return v == std::trunc(v) && v >= -2147483648.0 && v <= 2147483647.0;
-}
 
 /// Sets an input signal (#1000-#1031: 0 or 1) or word (#1032-#1035) from
 /// outside the program: the profile or a preset. False for any other number

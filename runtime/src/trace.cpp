@@ -107,3 +107,18 @@ void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
       numeric(repeat));
   mbrt_trace_words(ctx, head.c_str(), words, count);
 }
+
+int mbrt_tracing(const mbrt_ctx* ctx) {
+  return ctx->traceSink.fn != nullptr;
+}
+
+void mbrt_trace(mbrt_ctx* ctx, const char* text) {
+  if (ctx->traceSink.fn == nullptr) {
+    return;
+  }
+  const std::string line =
+      locationPrefix(ctx->block.file != nullptr ? ctx->block.file : "",
+                     ctx->block.line) +
+      (text != nullptr ? text : "") + "\n";
+  sendText(*ctx, ctx->traceSink, line);
+}

@@ -5,6 +5,8 @@
 
 #include <mbc/limits.h>
 
+#include <cmath>
+
 namespace mbc {
 
 enum class VarAccess { Missing, ReadOnly, ReadWrite };
@@ -15,5 +17,15 @@ VarAccess variableAccess(int n);
 /// #n exists on some machines only, as their profile says (#200-#499, the
 /// D offsets #2401-#2800 of 6000#3 V15).
 bool dependsOnProfile(int n);
+
+/// The input signals: #1000-#1031 one each, #1032-#1035 32 at a time.
+inline constexpr int kFirstInputSignal = 1000;
+inline constexpr int kFirstInputWord = 1032;
+inline constexpr int kLastInputWord = 1035;
+
+/// A value 32 signals can hold: a whole signed 32-bit number.
+inline bool isSignalWord(double v) {
+  return v == std::trunc(v) && v >= -2147483648.0 && v <= 2147483647.0;
+}
 
 } // namespace mbc

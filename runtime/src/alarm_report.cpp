@@ -1,0 +1,100 @@
+// A run's alarm: recording the first one with its block and call stack,
+// the report text every engine prints, and operator messages.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "context.h"
+
+namespace mbc::rt {
+
+namespace {
+
+std::string alarmMessage(const PendingAlarm& alarm) {
+  if (alarm.id == AlarmId::MacroAlarm) {
+    return alarm.detail;
+  }
+  std::string message = alarmInfo(alarm.id).message;
+  if (!alarm.detail.empty()) {
+    message += ": " + alarm.detail;
+  }
+  return message;
+}
+
+} // namespace
+
+std::string locationPrefix(const std::string& file, int line) {
+  return file.empty() ? "" : fmt::format("{}:{}: ", file, line);
+}
+
+mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
+                  int macroNumber) {
+  PendingAlarm& alarm = ctx.alarm;
+  if (alarm.id != AlarmId::None || id == AlarmId::None) {
+    return static_cast<mbrt_status>(id);
+  }
+  alarm.id = id;
+  alarm.macroNumber = macroNumber;
+  alarm.detail = detail;
+  alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
+  alarm.line = ctx.block.line;
+  alarm.stack.clear();
+  for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
+    alarm.stack.push_back(CallSite{
+        call->program, call->file != nullptr ? call->file : "", call->line});
+  }
+  if (ctx.alarmSink.fn != nullptr) {
+    std::string report(mbrt_alarm_report(&ctx, nullptr, 0), '\0');
+    mbrt_alarm_report(&ctx, report.data(), report.size() + 1);
+    ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
+  }
+  return static_cast<mbrt_status>(id);
+}
+
+void sendMessage(mbrt_ctx& ctx, std::string_view text) {
+  if (ctx.messageSink.fn == nullptr) {
+    return;
+  }
+  const std::string line =
+      locationPrefix(ctx.block.file != nullptr ? ctx.block.file : "",
+                     ctx.block.line) +
+      fmt::format("message: {}\n", text);
+  sendText(ctx, ctx.messageSink, line);
+}
+
+} // namespace mbc::rt
+
+using namespace mbc;
+using namespace mbc::rt;
+
+mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail) {
+  const auto id = static_cast<AlarmId>(alarm_id);
+  return raise(*ctx, id, detail != nullptr ? detail : "");
+}
+
+int mbrt_alarm(const mbrt_ctx* ctx) {
+  return static_cast<int>(ctx->alarm.id);
+}
+
+size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
+  const PendingAlarm& alarm = ctx->alarm;
+  std::string report;
+  if (alarm.id != AlarmId::None) {
+    const std::string message = alarmMessage(alarm);
+    report =
+        fmt::format("{}alarm {}{}{}\n", locationPrefix(alarm.file, alarm.line),
+                    alarmCode(alarm.id, alarm.macroNumber),
+                    message.empty() ? "" : ": ", message);
+    for (const CallSite& site : alarm.stack) {
+      report += fmt::format("  in {} called from {}:{}\n", site.program,
+                            site.file, site.line);
+    }
+  }
+  if (buf != nullptr && size > 0) {
+    const size_t n = std::min(report.size(), size - 1);
+    std::memcpy(buf, report.data(), n);
+    buf[n] = '\0';
+  }
+  return report.size();
+}
