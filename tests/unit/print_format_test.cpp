@@ -1,10 +1,10 @@
 // Unit tests of DPRNT/BPRNT formatting (print_format.h, spec §7.3, §7.4),
 // including the worked examples of the spec.
+#include "runtime/src/output/print_format.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include "print_format.h"
 
 namespace mbc::rt {
 namespace {

@@ -1,4 +1,4 @@
-// Canned cycles (runtime/src/canned_cycles.cpp): the moves of one hole, the
+// Canned cycles (runtime/src/machine/canned_cycles.cpp): the moves of one hole, the
 // modal drilling data and the alarms.
 #include "runtime_test_support.h"
 

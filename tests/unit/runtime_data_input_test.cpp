@@ -1,4 +1,4 @@
-// G10 programmable data input (runtime/src/data_input.cpp).
+// G10 programmable data input (runtime/src/machine/data_input.cpp).
 #include "runtime_test_support.h"
 
 namespace mbc::test {

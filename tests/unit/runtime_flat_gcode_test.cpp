@@ -1,4 +1,4 @@
-// The flattened program (runtime/src/flat_gcode.cpp): how words print,
+// The flattened program (runtime/src/output/flat_gcode.cpp): how words print,
 // which words calls take away, and the G10 blocks of offset writes.
 #include "runtime_test_support.h"
 

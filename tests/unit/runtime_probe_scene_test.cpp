@@ -1,10 +1,10 @@
-// The probe scene (runtime/src/probe_scene.cpp): where a stylus ball first
-// touches each kind of shape.
+// The probe scene (runtime/src/profile/probe_scene.cpp): where a stylus ball
+// first touches each kind of shape.
+#include "runtime/src/profile/probe_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "probe_scene.h"
 
 namespace mbc::test {
 
