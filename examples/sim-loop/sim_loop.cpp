@@ -60,8 +60,10 @@ void onMotion(void* user, const mbrt_motion* m) {
 // 6, 8 or 10 mm tools; every 1000th asks for a 40 mm tool in a 10 mm
 // pocket, which the cycle refuses with alarm 3004.
 mbrt_status pocket(mbrt_ctx* ctx, long long i) {
-  const double radius = (i % 1000 == 999) ? 10.0 : 10.0 + (i % 40) * 0.5;
-  const double tool = (i % 1000 == 999) ? 40.0 : 6.0 + (i % 3) * 2.0;
+  const double radius =
+      (i % 1000 == 999) ? 10.0 : 10.0 + static_cast<double>(i % 40) * 0.5;
+  const double tool =
+      (i % 1000 == 999) ? 40.0 : 6.0 + static_cast<double>(i % 3) * 2.0;
   const mbrt_word args[] = {
       {'X', MBRT_WORD_VALUE, static_cast<double>(i % 5) * 100.0},
       {'Y', MBRT_WORD_VALUE, 0.0},

@@ -106,7 +106,9 @@ mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
     const bool fromLiteral = (level.adp_mask >> (n - 1)) & 1;
     // The argument was literal / scale with an integer literal, so this
     // gives the literal back exactly.
-    *out = fromLiteral ? roundHalfAway(value * argumentScale(*ctx, n)) : value;
+    *out = fromLiteral
+               ? roundHalfAway(value * argumentScale(*ctx, static_cast<int>(n)))
+               : value;
     return 0;
   }
   return mbrt_read_var(ctx, number, out);
