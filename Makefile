@@ -66,10 +66,11 @@ bench: build
 	  --out bench/RESULTS.md
 
 # The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer;
-# any report fails its test.
+# any report fails its test. A Debug build: assertions on, and the IR
+# verified after every pass of every compile (driver/ir_pipeline.cpp).
 ASAN_BUILD_DIR ?= build-asan
 test-asan: deps
-	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=Debug \
 	  -DMBC_SANITIZE=address,undefined
 	cmake --build $(ASAN_BUILD_DIR) -j$(JOBS)
 	cd $(ASAN_BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
