@@ -12,15 +12,13 @@ namespace mbc {
 namespace {
 
 struct KindRow {
-  const char* name;
   Severity severity;
   AlarmId alarm;
   const char* format;
 };
 
 constexpr std::array kKinds = {
-#define DIAG(Id, Sev, Alarm, Text)                                             \
-  KindRow{#Id, Severity::Sev, AlarmId::Alarm, Text},
+#define DIAG(Id, Sev, Alarm, Text) KindRow{Severity::Sev, AlarmId::Alarm, Text},
 #include "frontend/diagnostic_kinds.def"
 };
 
@@ -149,10 +147,6 @@ Severity severityOf(DiagKind kind) {
 
 AlarmId runTimeAlarm(DiagKind kind) {
   return kKinds[static_cast<int>(kind)].alarm;
-}
-
-const char* kindName(DiagKind kind) {
-  return kKinds[static_cast<int>(kind)].name;
 }
 
 const char* formatOf(DiagKind kind) {

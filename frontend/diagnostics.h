@@ -43,7 +43,6 @@ Severity severityOf(DiagKind kind);
 /// The alarm a block with this error raises when it runs (AlarmId::None:
 /// the run goes on).
 AlarmId runTimeAlarm(DiagKind kind);
-const char* kindName(DiagKind kind);
 const char* formatOf(DiagKind kind);
 
 class DiagnosticEngine {

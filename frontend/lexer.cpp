@@ -90,15 +90,6 @@ bool isBlank(char c) {
 
 } // namespace
 
-const char* keywordName(Keyword k) {
-  for (const WordRow& w : kWords) {
-    if (!w.isFunction && w.keyword == k) {
-      return w.spelling.data();
-    }
-  }
-  return "?";
-}
-
 std::string describe(const Token& t) {
   switch (t.kind) {
     case Tok::EndOfBlock:
@@ -229,14 +220,6 @@ void Lexer::skipSpaces() {
   while (pos_ < end_ && isBlank(text_[pos_]) && !isLoneCr(pos_)) {
     ++pos_;
   }
-}
-
-std::string_view Lexer::restOfBlock() const {
-  std::uint32_t i = pos_;
-  while (i < end_ && text_[i] != '\n' && !isLoneCr(i)) {
-    ++i;
-  }
-  return text_.substr(pos_, i - pos_);
 }
 
 void Lexer::skipBlock() {

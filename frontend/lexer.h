@@ -22,9 +22,6 @@ public:
   /// Skips to the end of the current block (error recovery).
   void skipBlock();
 
-  /// The text from the lexer's position to the end of the block, unread.
-  std::string_view restOfBlock() const;
-
   /// True once the closing '%' (or the end of the file) was reached.
   bool atEnd() const { return pos_ >= end_; }
 

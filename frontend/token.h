@@ -67,6 +67,5 @@ struct Token {
 
 /// A human name for diagnostics ("']'", "end of block", "address X").
 std::string describe(const Token& t);
-const char* keywordName(Keyword k);
 
 } // namespace mbc

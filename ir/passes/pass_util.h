@@ -13,10 +13,6 @@
 
 namespace mbc::ir {
 
-inline bool isTerminator(Op op) {
-  return (opInfo(op).flags & Terminator) != 0;
-}
-
 /// Whether a read of #n can never alarm, whatever the machine profile: #0,
 /// locals and the commons every machine has. System variables are left out:
 /// some readers alarm (a tool offset beyond the profile's count).
