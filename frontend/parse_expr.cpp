@@ -2,6 +2,7 @@
 // then * / AND MOD, then + - OR XOR, then one comparison. AND/OR/XOR are
 // bitwise on numbers and logical on conditions.
 #include "frontend/parser.h"
+#include <mbc/addresses.h>
 #include <mbc/limits.h>
 
 #include <cmath>
@@ -219,7 +220,7 @@ void Parser::enterBracket(int depth, const Token& at) {
 
 void Parser::addressInExpression(const Token& t) {
   diags_.report(DiagKind::AddressInExpression, t.range, t.text);
-  if (int var = argumentVariable(t.text[0])) {
+  if (int var = argumentLocal(t.text[0])) {
     diags_.note(DiagKind::ArgumentVariableNote, t.range, t.text, var);
   }
   fail();

@@ -10,14 +10,6 @@
 
 namespace mbc::detail {
 
-// Specification I argument letters (spec §5.2): letter -> local variable.
-int argumentVariable(char letter) {
-  static constexpr int kMap[26] = {1,  2,  3,  7,  8,  9,  0,  11, 4,
-                                   5,  6,  0,  13, 0,  0,  0,  17, 18,
-                                   19, 20, 21, 22, 23, 24, 25, 26};
-  return (letter >= 'A' && letter <= 'Z') ? kMap[letter - 'A'] : 0;
-}
-
 namespace {
 
 // Addresses whose whole-number literals are in least-increment units.

@@ -28,9 +28,6 @@ void parseFile(const SourceManager& sources, std::uint32_t file,
 
 namespace detail {
 
-/// The local variable a G65 argument letter sets (specification I), or 0.
-int argumentVariable(char letter);
-
 /// Thrown after a diagnostic to abandon the current block.
 struct BlockError {};
 

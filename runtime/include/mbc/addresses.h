@@ -16,6 +16,16 @@ inline bool isWholeNumberAddress(char letter) {
   return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
+/// Specification I (spec §5.2): the local variable a G65 argument letter
+/// sets, 0 for the letters that cannot be arguments (G, L, N, O, P).
+constexpr int argumentLocal(char letter) {
+  constexpr int kLocal[26] = {
+      1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13, // A..M
+      0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, // N..Z
+  };
+  return letter >= 'A' && letter <= 'Z' ? kLocal[letter - 'A'] : 0;
+}
+
 /// The program number a call's P names, rounded half away from zero as the
 /// control rounds addresses; none when no program can have it (PS0076).
 inline std::optional<int> calledProgramNumber(double p) {

@@ -1,6 +1,8 @@
 // Calls: macro calls with their argument mapping (specification I and II,
 // spec §5.2-5.4; a G66.1 block's words), subprogram calls, returns and the
 // nesting limits (PS0122, PS0077).
+#include <mbc/addresses.h>
+
 #include <fmt/format.h>
 
 #include "context.h"
@@ -9,12 +11,6 @@ namespace mbc::rt {
 
 namespace {
 
-/// Specification I: the local each letter sets, 0 for letters that cannot
-/// be arguments.
-constexpr std::array<int, 26> kArgumentLocal = {
-    1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13, // A..M
-    0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, // N..Z
-};
 constexpr int kMaxIjkSets = 10;
 
 /// Tracks the I/J/K sets of specification II: a letter that does not follow
@@ -73,7 +69,7 @@ mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, bool everyBlock,
     }
     return 0;
   }
-  *local = letter >= 'A' && letter <= 'Z' ? kArgumentLocal[letter - 'A'] : 0;
+  *local = mbc::argumentLocal(letter);
   if (*local == 0) {
     return raise(ctx, AlarmId::MacroStatementFormat,
                  fmt::format("{} cannot be a macro argument", letter));
@@ -172,9 +168,8 @@ mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
 } // namespace
 
 double argumentScale(const mbrt_ctx& ctx, int local) {
-  for (std::size_t i = 0; i < kArgumentLocal.size(); ++i) {
-    const char letter = static_cast<char>('A' + i);
-    if (kArgumentLocal[i] == local && scalesLiteral(ctx, letter)) {
+  for (char letter = 'A'; letter <= 'Z'; ++letter) {
+    if (mbc::argumentLocal(letter) == local && scalesLiteral(ctx, letter)) {
       return addressCountsPerUnit(ctx, letter);
     }
   }
