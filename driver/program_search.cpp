@@ -2,6 +2,7 @@
 #include "driver/program_search.h"
 
 #include <mbc/addresses.h>
+#include <mbc/calling_codes.h>
 
 #include <fmt/format.h>
 
@@ -36,10 +37,10 @@ const Word* findWord(const std::vector<Word>& words, char letter) {
   return nullptr;
 }
 
-bool hasCode(const std::vector<Word>& words, char letter, double value) {
+/// Whether a literal word of the block is a code `is` accepts.
+bool hasCode(const std::vector<Word>& words, bool (*is)(char, double)) {
   for (const Word& w : words) {
-    if (w.letter == letter && w.value->kind == ExprKind::Number &&
-        w.value->number == value) {
+    if (w.value->kind == ExprKind::Number && is(w.letter, w.value->number)) {
       return true;
     }
   }
@@ -63,12 +64,12 @@ void calledByWords(const std::vector<Word>& words,
   if (!number) {
     return;
   }
-  if (hasCode(words, 'M', 98) || hasCode(words, 'M', 198)) {
+  if (hasCode(words, isSubprogramCall)) {
     out.insert(numbered(*number));
     if (*number > kMaxProgramNumber4Digits && !findWord(words, 'L')) {
       out.insert(numbered(*number % (kMaxProgramNumber4Digits + 1)));
     }
-  } else if (hasCode(words, 'G', 66) || hasCode(words, 'G', 66.1)) {
+  } else if (hasCode(words, isMacroCall)) { // G66, G66.1: G65 is no NC block
     out.insert(numbered(*number));
   }
 }

@@ -3,6 +3,7 @@
 #include "frontend/parser.h"
 #include <mbc/addresses.h>
 #include <mbc/alarm.h>
+#include <mbc/calling_codes.h>
 #include <mbc/g_codes.h>
 
 #include <algorithm>
@@ -404,8 +405,7 @@ Word Parser::parseCalledName(const Stmt& s) {
   const Word& code = s.words.back();
   const double n =
       code.value->kind == ExprKind::Number ? code.value->number : -1.0;
-  const bool calls = (code.letter == 'M' && (n == 98 || n == 198)) ||
-                     (code.letter == 'G' && (n == 65 || n == 66 || n == 66.1));
+  const bool calls = callsByP(code.letter, n);
   const bool hasP = std::any_of(s.words.begin(), s.words.end(),
                                 [](const Word& w) { return w.letter == 'P'; });
   if (!calls || hasP) {

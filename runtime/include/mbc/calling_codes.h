@@ -41,6 +41,23 @@ bool gCodeMayCall(int tenths, bool modalCalls);
 /// the ones that stop or end the program.
 bool mCodeMayCall(double m);
 
+/// M98 and M198: the subprogram calls whose P names the program (spec
+/// §5.1; M198 from the external device).
+inline constexpr bool isSubprogramCall(char letter, double value) {
+  return letter == 'M' && (value == 98 || value == 198);
+}
+
+/// G65, G66 and G66.1: the macro calls whose P names the program.
+inline constexpr bool isMacroCall(char letter, double value) {
+  return letter == 'G' && (value == 65 || value == 66 || value == 66.1);
+}
+
+/// The codes whose P (or a program name in its place) names the program
+/// they call.
+inline constexpr bool callsByP(char letter, double value) {
+  return isSubprogramCall(letter, value) || isMacroCall(letter, value);
+}
+
 /// T, S and B call O9000, O9029, O9028 when a profile says so (6001#5,
 /// 6007#5, 6007#4).
 inline constexpr bool letterMayCall(char letter) {

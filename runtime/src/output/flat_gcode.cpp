@@ -8,6 +8,7 @@
 #include "flat_gcode.h"
 
 #include <mbc/arith.h>
+#include <mbc/calling_codes.h>
 #include <mbc/toolpath_json.h>
 
 #include <fmt/format.h>
@@ -104,7 +105,7 @@ bool isCode(const mbrt_word& word, char letter, double value) {
 
 /// M98, M198 and M99: the calls and returns the flattened program has run.
 bool isTransfer(const mbrt_word& word) {
-  return isCode(word, 'M', 98) || isCode(word, 'M', 198) ||
+  return isSubprogramCall(word.letter, numeric(word.value)) ||
          isCode(word, 'M', 99);
 }
 

@@ -4,6 +4,7 @@
 // (assignments, IF, WHILE, END, GOTO) come as a template with values
 // (mbrt_trace_values), built by frontend/trace_text.h.
 #include <mbc/arith.h>
+#include <mbc/calling_codes.h>
 #include <mbc/value.h>
 
 #include <fmt/format.h>
@@ -27,12 +28,10 @@ const std::string* calledName(const mbrt_ctx& ctx, mbrt_num value) {
   return it == ctx.programNames.end() ? nullptr : &it->second;
 }
 
-/// Whether the block's P names a program: M98, M198, G66, G66.1.
-bool callsByP(const mbrt_word* words, size_t count) {
+/// Whether the block's P names a program.
+bool namesProgramByP(const mbrt_word* words, size_t count) {
   for (size_t i = 0; i < count; ++i) {
-    const double v = numeric(words[i].value);
-    if ((words[i].letter == 'M' && (v == 98 || v == 198)) ||
-        (words[i].letter == 'G' && (v == 66 || v == 66.1))) {
+    if (callsByP(words[i].letter, numeric(words[i].value))) {
       return true;
     }
   }
@@ -41,7 +40,7 @@ bool callsByP(const mbrt_word* words, size_t count) {
 
 void appendWords(const mbrt_ctx& ctx, std::string& out, const mbrt_word* words,
                  size_t count) {
-  const bool call = callsByP(words, count);
+  const bool call = namesProgramByP(words, count);
   for (size_t i = 0; i < count; ++i) {
     out += out.empty() ? "" : " ";
     const std::string* name = call && words[i].letter == 'P'
