@@ -1,6 +1,6 @@
-// The calls NC blocks ask for (runtime/src/machine/block_calls.cpp): G66/G66.1/G67,
-// custom G and M codes, M/T/S/B code subprograms, and the rules that keep a
-// code from calling inside its own program.
+// The calls NC blocks ask for (runtime/src/machine/block_calls.cpp):
+// G66/G66.1/G67, custom G and M codes, M/T/S/B code subprograms, and the rules
+// that keep a code from calling inside its own program.
 #include "runtime_test_support.h"
 
 namespace mbc::test {

@@ -1,5 +1,5 @@
-// Canned cycles (runtime/src/machine/canned_cycles.cpp): the moves of one hole, the
-// modal drilling data and the alarms.
+// Canned cycles (runtime/src/machine/canned_cycles.cpp): the moves of one hole,
+// the modal drilling data and the alarms.
 #include "runtime_test_support.h"
 
 namespace mbc::test {
