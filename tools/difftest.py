@@ -4,18 +4,18 @@
 Generates valid programs (bounded loops, IF/GOTO with computed and
 loop-leaving jumps, M99 P in the main program, G65/M98 nests with argument
 specification I and II, G66 and G66.1 modal calls, calls by G, M and T
-codes, indirection across variable ranges, vacant values, every function
-and operator with edge arguments, DPRNT, BPRNT, motion with work and tool
+codes, indirection across variable ranges, vacant values, every function and
+operator with edge arguments, DPRNT, BPRNT, motion with work and tool
 offsets, planes, canned cycles, dwell, reference returns, skip moves,
-G52/G92 shifts, scaling, rotation, mirror, G10 offsets, feed modes and
-units, #3006 messages, bounded backward GOTO loops, optional block skip,
-system variables read and written), each with the run options and machine
-profile it needs (--block-skip, --arg, --set, --machine), runs each under
-every engine and optimisation level, and compares everything a run writes
-with the interpreter's: exit status, stderr (alarms, the --trace record),
-toolpath, DPRNT and variables. A program that differs is reduced line by
-line to a small one that still differs the same way and written to --out
-(with its machine profile beside it, and its run options printed).
+G52/G92 shifts, scaling, rotation, mirror, polar coordinates, G10 offsets,
+feed modes and units, #3006 messages, bounded backward GOTO loops, optional
+block skip, system variables read and written), each with the run options
+and machine profile it needs (--block-skip, --arg, --set, --machine), runs
+each under every engine and optimisation level, and compares everything a
+run writes with the interpreter's: exit status, stderr (alarms, the --trace
+record), toolpath, DPRNT and variables. A program that differs is reduced
+line by line to a small one that still differs the same way and written to
+--out (with its machine profile beside it, and its run options printed).
 
     tools/difftest.py --mbc build/mbc [--engines build/tests/difftest_engines]
                       -n 1000 [--seed 1] [--jobs 2]
@@ -291,9 +291,11 @@ class Generator:
                                f"P{self.length(0.5, 2)}",
                                f"G51 P{self.rng.randint(50000, 200000)}",
                                "G50"))]
-        if roll < 0.73:
+        if roll < 0.69:
             return [self.pick((f"G68 {self.word('X')} Y0 {self.word('R')}",
                                f"G68 R{self.length(-90, 90)}", "G69"))]
+        if roll < 0.73:
+            return self.polar()
         if roll < 0.79:
             return [self.pick((f"G51.1 {self.word('X')}",
                                f"G51.1 Y{self.length(-5, 5)}", "G50.1 X0",
@@ -315,6 +317,20 @@ class Generator:
         if roll < 0.98:
             return [f"#3006 = {self.rng.randint(1, 9)} (CHECK)"]
         return [self.pick(("G20", "G21"))]
+
+    def polar(self):
+        """Moves in polar coordinates (G16): radius and angle words of a
+        plane, either left out, absolute or incremental, then G15."""
+        plane = self.pick(("G17", "G18", "G19"))
+        radius, angle = {"G17": "XY", "G18": "ZX", "G19": "YZ"}[plane]
+        lines = [f"{plane} G16"]
+        for _ in range(self.rng.randint(1, 3)):
+            words = [self.word(letter) for letter in (radius, angle)
+                     if self.chance(0.8)]
+            mode = self.pick(("", "G90 ", "G91 "))
+            lines.append(f"{mode}{self.pick(('G00', 'G01'))} {' '.join(words)}")
+        lines.append("G15")
+        return lines
 
     def canned_cycle(self):
         """A canned cycle block, the holes after it, mostly its G80."""

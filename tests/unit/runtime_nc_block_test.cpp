@@ -130,7 +130,7 @@ TEST(RuntimeNcBlock, UnsupportedGCodes) {
   EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
                         "G41 (cutter compensation left)\n");
   for (const char* block :
-       {"G12.1", "G68 X0 Y0 I0 J0 K1 R45.", "G16", "G05 P2", "G60 X1."}) {
+       {"G12.1", "G68 X0 Y0 I0 J0 K1 R45.", "G05 P2", "G60 X1."}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
   }

@@ -91,6 +91,7 @@ struct ModalState {
   int motion = 0; // 0 1 2 3
   int plane = 17;
   bool incremental = false;
+  bool polar = false; // G16: plane words are a radius and an angle
   bool inch = false;
   bool returnToR = false; // G99
   int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80

@@ -40,7 +40,7 @@ constexpr std::array kGCodes = {
     GCodeInfo{121, false, "polar coordinate interpolation mode"},
     GCodeInfo{131, false, "polar coordinate interpolation cancel mode"},
     GCodeInfo{150, true, "polar coordinates command cancel"},
-    GCodeInfo{160, false, "polar coordinates command"},
+    GCodeInfo{160, true, "polar coordinates command"},
     GCodeInfo{170, true, "XpYp plane selection"},
     GCodeInfo{180, true, "ZpXp plane selection"},
     GCodeInfo{190, true, "YpZp plane selection"},

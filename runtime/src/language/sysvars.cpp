@@ -326,7 +326,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 16:
       return ctx.frames.rotation ? 68 : 69;
     case 17:
-      return 15;
+      return modal.polar ? 16 : 15;
     case 18:
       return ctx.frames.mirrorMask != 0 ? 51.1 : 50.1;
     default:

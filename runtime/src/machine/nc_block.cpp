@@ -15,6 +15,7 @@
 #include "g_codes.h"
 #include "look_ahead.h"
 #include "motion.h"
+#include "polar.h"
 
 namespace mbc::rt {
 
@@ -166,8 +167,9 @@ bool setsOneField(double tenths) {
     case 640:
     case 980: // G98, G99
     case 990:
-    case 150: // G15, G40, G97: the one state mbc keeps
-    case 400:
+    case 150: // G15, G16
+    case 160:
+    case 400: // G40, G97: the one state mbc keeps
     case 970:
       return true;
     default:
@@ -253,8 +255,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 950: // feed per revolution
       next.feedMode = tenths / 10;
       return 0;
+    case 150: // G15, G16: polar coordinate command (polar.h)
+    case 160:
+      next.polar = tenths == 160;
+      return 0;
     // The one state mbc keeps these groups in (#4001.. reads them).
-    case 150: // G15
     case 400: // G40
     case 670: // G67
     case 970: // G97
@@ -592,6 +597,20 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
     }
     dwell(ctx, seconds);
     return 0;
+  }
+  // G53 positions in machine coordinates whatever G16 says; the
+  // intermediate point of G28, G29 and G30 in polar coordinates is not
+  // modelled yet.
+  if (ctx.modal.polar && block.nonModal != 530) {
+    if ((block.nonModal == 280 || block.nonModal == 290 ||
+         block.nonModal == 300) &&
+        writesPlaneWords(ctx, motion)) {
+      return raise(ctx, AlarmId::Unsupported,
+                   fmt::format("{} with plane axis words in polar coordinate "
+                               "mode (G16); give the point after G15",
+                               gCodeText(block.nonModal)));
+    }
+    polarToCartesian(ctx, block.motion);
   }
   if (block.nonModal == 280) {
     return returnToReference(ctx, motion, 1);
