@@ -73,11 +73,11 @@ llvm::Value* FunctionEmitter::commonSlot(llvm::Value* number) {
 }
 
 llvm::Value* FunctionEmitter::message(ir::StringRef ref) {
-  if (ref == 0 || ref > m_.ir.strings.size() ||
-      m_.ir.strings[ref - 1].empty()) {
+  const std::string* s = m_.ir.text(ref);
+  if (s == nullptr || s->empty()) {
     return llvm::ConstantPointerNull::get(abi_.ptr);
   }
-  return m_.cstring(m_.ir.strings[ref - 1]);
+  return m_.cstring(*s);
 }
 
 llvm::Value* FunctionEmitter::emitLoadVar(int number) {
@@ -317,7 +317,7 @@ void FunctionEmitter::emitPrint(const ir::Inst& inst) {
     if (item.isValue()) {
       value = values_[inst.ops[next++]];
     } else {
-      text = m_.cstring(m_.ir.strings[item.text - 1]);
+      text = m_.cstring(*m_.ir.text(item.text));
     }
     b_.CreateStore(text, b_.CreateStructGEP(abi_.printItem, slot, kItemText));
     b_.CreateStore(value, b_.CreateStructGEP(abi_.printItem, slot, kItemValue));

@@ -121,7 +121,7 @@ llvm::Value* FunctionEmitter::emitOp(const ir::Inst& inst) {
     case ir::Op::Raise: {
       const ir::AlarmRaise& r = inst.get<ir::AlarmRaise>();
       raise(static_cast<int>(r.alarm),
-            r.detail != 0 ? m_.ir.strings[r.detail - 1].c_str() : nullptr);
+            r.detail != 0 ? m_.ir.text(r.detail)->c_str() : nullptr);
       return nullptr;
     }
     case ir::Op::Unreachable:

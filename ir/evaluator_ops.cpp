@@ -157,9 +157,8 @@ mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
 }
 
 const char* Evaluator::text(StringRef ref) const {
-  return ref == 0 || ref > module_.strings.size()
-             ? nullptr
-             : module_.strings[ref - 1].c_str();
+  const std::string* s = module_.text(ref);
+  return s != nullptr ? s->c_str() : nullptr;
 }
 
 const char* Evaluator::message(StringRef ref) const {

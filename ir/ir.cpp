@@ -70,6 +70,16 @@ bool payloadFits(Op op, const Payload& p) {
   return false;
 }
 
+StringRef Module::intern(const std::string& s) {
+  for (std::size_t i = 0; i < strings.size(); ++i) {
+    if (strings[i] == s) {
+      return static_cast<StringRef>(i + 1);
+    }
+  }
+  strings.push_back(s);
+  return static_cast<StringRef>(strings.size());
+}
+
 bool opFromMnemonic(const std::string& mnemonic, Op& out) {
   for (std::size_t i = 0; i < kOps.size(); ++i) {
     if (mnemonic == kOps[i].mnemonic) {

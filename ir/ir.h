@@ -240,6 +240,14 @@ struct Function {
 struct Module {
   std::vector<Function> functions;
   std::vector<std::string> strings; // messages and print text
+
+  /// The reference of `s`, added once however often it is interned.
+  StringRef intern(const std::string& s);
+
+  /// The string `ref` names; nullptr for none or one out of range.
+  const std::string* text(StringRef ref) const {
+    return ref != 0 && ref <= strings.size() ? &strings[ref - 1] : nullptr;
+  }
 };
 
 } // namespace mbc::ir

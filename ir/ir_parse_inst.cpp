@@ -22,7 +22,6 @@ public:
 private:
   bool atOperandEnd() { return c_.atEol() || c_.peek() == '!'; }
 
-  StringRef intern(const std::string& s);
   char letter();
   AlarmId alarm();
   void valueList();
@@ -40,16 +39,6 @@ private:
   Module& module_;
   Inst& inst_;
 };
-
-StringRef OperandParser::intern(const std::string& s) {
-  for (std::size_t i = 0; i < module_.strings.size(); ++i) {
-    if (module_.strings[i] == s) {
-      return static_cast<StringRef>(i + 1);
-    }
-  }
-  module_.strings.push_back(s);
-  return static_cast<StringRef>(module_.strings.size());
-}
 
 // An address letter: one of A..Z.
 char OperandParser::letter() {
@@ -130,7 +119,7 @@ PrintItems OperandParser::items() {
   }
   do {
     if (c_.peek() == '"') {
-      p.items.push_back({intern(c_.string())});
+      p.items.push_back({module_.intern(c_.string())});
       continue;
     }
     inst_.ops.push_back(c_.value());
@@ -185,7 +174,7 @@ void OperandParser::caseTable(SequenceCases& into) {
 
 // message = ["," string] ;
 StringRef OperandParser::message() {
-  return c_.accept(',') ? intern(c_.string()) : 0;
+  return c_.accept(',') ? module_.intern(c_.string()) : 0;
 }
 
 void OperandParser::parse() {
@@ -248,7 +237,7 @@ void OperandParser::parse() {
       phi();
       return;
     case Format::Template:
-      data<Message>().text = intern(c_.string());
+      data<Message>().text = module_.intern(c_.string());
       while (c_.accept(',')) {
         inst_.ops.push_back(c_.value());
       }

@@ -27,7 +27,6 @@ private:
   ValueId emit(Op op, std::vector<ValueId> ops = {});
   void terminate(Op op, std::vector<BlockId> targets,
                  std::vector<ValueId> ops = {});
-  StringRef intern(const std::string& s);
   void lowerBlock(int index);
   void lowerStatement(const Stmt& s, int index);
   void lowerAssign(const Stmt& s);
@@ -85,16 +84,6 @@ void FunctionLowering::terminate(Op op, std::vector<BlockId> targets,
   fn_.insts[id].targets = std::move(targets);
 }
 
-StringRef FunctionLowering::intern(const std::string& s) {
-  for (std::size_t i = 0; i < module_.strings.size(); ++i) {
-    if (module_.strings[i] == s) {
-      return static_cast<StringRef>(i + 1);
-    }
-  }
-  module_.strings.push_back(s);
-  return static_cast<StringRef>(module_.strings.size());
-}
-
 ValueId FunctionLowering::constant(double v) {
   ValueId id = emit(Op::Const);
   fn_.insts[id].get<Number>().value = v;
@@ -143,7 +132,7 @@ void FunctionLowering::lowerBlock(int index) {
   fn_.insts[emit(Op::Begin)].data = SourceLine{line_};
   if (b.alarm != AlarmId::None) {
     fn_.insts[emit(Op::Raise)].data =
-        AlarmRaise{b.alarm, intern(b.alarmDetail)};
+        AlarmRaise{b.alarm, module_.intern(b.alarmDetail)};
     return;
   }
   lowerStatement(b.stmt, index);
@@ -241,7 +230,7 @@ void FunctionLowering::lowerAssign(const Stmt& s) {
   // reference or ADP of a vacant variable stores 0.
   ValueId v =
       s.value->isBareVariable() ? lowerExpr(*s.value) : lowerNum(*s.value);
-  StringRef message = s.message.empty() ? 0 : intern(s.message);
+  StringRef message = s.message.empty() ? 0 : module_.intern(s.message);
   if (s.target.index) {
     ValueId idx = lowerNum(*s.target.index);
     trace(s, {idx, v});
@@ -256,7 +245,8 @@ void FunctionLowering::trace(const Stmt& s, std::vector<ValueId> values,
                              bool taken) {
   if (options_.trace) {
     ValueId t = emit(Op::Trace, std::move(values));
-    fn_.insts[t].data = Message{intern(traceTemplate(program_, s, taken))};
+    fn_.insts[t].data =
+        Message{module_.intern(traceTemplate(program_, s, taken))};
   }
 }
 
@@ -359,7 +349,7 @@ void FunctionLowering::lowerPrint(const Stmt& s) {
       items.items.push_back({0, static_cast<std::uint8_t>(it.intDigits),
                              static_cast<std::uint8_t>(it.fracDigits)});
     } else {
-      items.items.push_back({intern(it.text)});
+      items.items.push_back({module_.intern(it.text)});
     }
   }
   ValueId p =

@@ -69,8 +69,8 @@ void OperandPrinter::target(std::size_t i) {
 }
 
 void OperandPrinter::string(StringRef ref) {
-  if (ref != 0 && ref <= module_.strings.size()) {
-    out_ += quoteString(module_.strings[ref - 1]);
+  if (const std::string* s = module_.text(ref)) {
+    out_ += quoteString(*s);
   } else {
     out_ += "?";
   }

@@ -100,11 +100,9 @@ Shape expectedShape(const Module& m, const Inst& inst) {
     case Format::PhiInputs:
       return {inst.ops.size(), -1};
     case Format::Template: {
-      StringRef t = inst.get<Message>().text;
+      const std::string* t = m.text(inst.get<Message>().text);
       return {0,
-              t == 0 || t > m.strings.size()
-                  ? -1
-                  : static_cast<std::ptrdiff_t>(traceHoles(m.strings[t - 1]))};
+              t == nullptr ? -1 : static_cast<std::ptrdiff_t>(traceHoles(*t))};
     }
     case Format::Jump:
       return {1, info.operands};
@@ -329,7 +327,7 @@ void FunctionVerifier::checkShape(BlockId b, ValueId id, const Inst& inst) {
 
 void FunctionVerifier::checkString(BlockId b, ValueId id, StringRef s,
                                    std::string_view what) {
-  if (s > module_.strings.size()) {
+  if (s != 0 && module_.text(s) == nullptr) {
     fail(b, id, fmt::format("{} {} names no string", what, s));
   }
 }
