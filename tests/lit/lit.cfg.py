@@ -2,7 +2,6 @@
 # the limits of tests/lit/robustness).
 # The build writes lit.site.cfg.py with the paths; ctest runs lit on it.
 import os
-import re
 import sys
 
 import lit.formats
@@ -16,12 +15,14 @@ config.substitutions.append(("%mbc", config.mbc_path))
 config.substitutions.append(("%python", sys.executable))
 
 # %only-NAME: the --disable-pass options that leave only pass NAME on, for
-# tests of one pass. The names come from ir/passes/passes.def.
-with open(os.path.join(config.test_source_root, "..", "..", "ir", "passes",
-                       "passes.def")) as f:
-    passes = re.findall(r'^PASS\(\w+, "([a-z0-9-]+)"', f.read(), re.M)
+# tests of one pass (only_pass.py).
+sys.dont_write_bytecode = True  # nothing written into the source tree
+sys.path.insert(0, config.test_source_root)
+from only_pass import only_pass, pass_names  # noqa: E402
+
+passes = pass_names()
 for name in passes:
-    others = " ".join("--disable-pass " + p for p in passes if p != name)
-    config.substitutions.append(("%only-" + name, others))
+    config.substitutions.append(
+        ("%only-" + name, " ".join(only_pass(name, passes))))
 config.environment["PATH"] = os.pathsep.join(
     [config.llvm_tools_dir, config.environment.get("PATH", "")])
