@@ -143,7 +143,7 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
     case Op::Unreachable:
       return internalError("unreachable code reached");
   }
-  return internalError(opInfo(inst.op).mnemonic);
+  return internalError("unknown operation"); // a value outside Op
 }
 
 mbrt_status Evaluator::execFn(const Inst& inst, const Frame& frame,
