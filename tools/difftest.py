@@ -294,8 +294,10 @@ class Generator:
         if roll < 0.69:
             return [self.pick((f"G68 {self.word('X')} Y0 {self.word('R')}",
                                f"G68 R{self.length(-90, 90)}", "G69"))]
-        if roll < 0.73:
+        if roll < 0.71:
             return self.polar()
+        if roll < 0.73:
+            return self.compensated_contour()
         if roll < 0.79:
             return [self.pick((f"G51.1 {self.word('X')}",
                                f"G51.1 Y{self.length(-5, 5)}", "G50.1 X0",
@@ -330,6 +332,29 @@ class Generator:
             mode = self.pick(("", "G90 ", "G91 "))
             lines.append(f"{mode}{self.pick(('G00', 'G01'))} {' '.join(words)}")
         lines.append("G15")
+        return lines
+
+    def compensated_contour(self):
+        """A contour under cutter compensation (G41/G42 D): lines and arcs,
+        sometimes a Z move or a D change in it, then the G40 move."""
+        number = self.rng.randint(1, 3)
+        lines = [f"G17 G10 L12 P{number} R{self.length(-3, 6)}",
+                 f"{self.pick(('G41', 'G42'))} D{number} G01 "
+                 f"{self.word('X')} {self.word('Y')} "
+                 f"F{self.rng.randint(100, 900)}"]
+        for _ in range(self.rng.randint(1, 5)):
+            roll = self.rng.random()
+            if roll < 0.55:
+                lines.append(f"G01 {self.word('X')} {self.word('Y')}")
+            elif roll < 0.8:
+                lines.append(f"{self.pick(('G02', 'G03'))} {self.word('X')} "
+                             f"{self.word('Y')} R{self.length(8, 40)}")
+            elif roll < 0.9:
+                lines.append(f"Z{self.length(-5, 0)}")
+            else:
+                lines.append(self.pick(("M08", f"D{self.rng.randint(0, 3)}",
+                                        "G42" if self.chance(0.5) else "G41")))
+        lines.append(f"G40 G01 {self.word('X')} {self.word('Y')}")
         return lines
 
     def canned_cycle(self):

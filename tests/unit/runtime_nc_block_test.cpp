@@ -126,11 +126,11 @@ TEST(RuntimeNcBlock, ExactStopMovesAsWritten) {
 
 TEST(RuntimeNcBlock, UnsupportedGCodes) {
   Machine m;
-  EXPECT_EQ(m.block("G41 D1", 3), status(AlarmId::Unsupported));
+  EXPECT_EQ(m.block("G12.1", 3), status(AlarmId::Unsupported));
   EXPECT_EQ(m.report(), "test.nc:3: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
-                        "G41 (cutter compensation left)\n");
+                        "G12.1 (polar coordinate interpolation mode)\n");
   for (const char* block :
-       {"G12.1", "G68 X0 Y0 I0 J0 K1 R45.", "G05 P2", "G60 X1."}) {
+       {"G07.1 C20.", "G68 X0 Y0 I0 J0 K1 R45.", "G05 P2", "G60 X1."}) {
     Machine u;
     EXPECT_EQ(u.block(block), status(AlarmId::Unsupported)) << block;
   }

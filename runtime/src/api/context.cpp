@@ -15,6 +15,7 @@
 #include <ctime>
 #include <new>
 
+#include "cutter_comp.h"
 #include "frames.h"
 #include "motion.h"
 #include "sysvars.h"
@@ -99,6 +100,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.skipPosition = AxisCounts{};
   ctx.intermediate = AxisCounts{};
   ctx.intermediateMask = 0;
+  ctx.compensation = CompensationState{};
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};
@@ -269,6 +271,7 @@ mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
 }
 
 void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
+  releaseHeldMoves(*ctx, false); // the last move of a compensated contour
   if (end_kind == MBRT_END_M02_M30) {
     ctx->partsCount += 1.0;
   } else if (end_kind == MBRT_END_MAIN_M99) {

@@ -91,7 +91,8 @@ struct ModalState {
   int motion = 0; // 0 1 2 3
   int plane = 17;
   bool incremental = false;
-  bool polar = false; // G16: plane words are a radius and an angle
+  bool polar = false;    // G16: plane words are a radius and an angle
+  int compensation = 40; // G40 G41 G42: cutter compensation (cutter_comp.h)
   bool inch = false;
   bool returnToR = false; // G99
   int cycle = 0;          // 73, 74, 76, 81..89; 0 for G80
@@ -127,6 +128,46 @@ struct Frames {
   Counts length = 0;   // the offset on that axis, signed
 
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
+};
+
+/// Where a move was programmed and how fast it goes: the block's data, kept
+/// with a move that cutter compensation holds while later blocks run.
+struct MoveOrigin {
+  const char* file = nullptr;
+  int line = 0;
+  const char* program = "";
+  double feed = 0.0;  // modal F
+  int feedMode = 94;  // G93 G94 G95
+  double spindle = 0; // S, for G95
+  int cycle = 0;      // the canned cycle a move belongs to
+};
+
+/// A programmed move as cutter compensation holds it (cutter_comp.h), in
+/// the workpiece frame. `still`: no motion in the compensation plane (a Z
+/// move, or a block without motion, which is not held).
+struct HeldMove {
+  bool still = false;
+  bool arc = false;
+  bool clockwise = false; // as it turns in the workpiece frame
+  bool rapid = false;
+  bool startUp =
+      false;          // the first move with the offset: no vector at its start
+  AxisCounts start{}; // programmed, workpiece frame
+  AxisCounts end{};
+  double center[2] = {0.0, 0.0}; // arcs: in the plane, workpiece counts
+  double offset = 0.0;           // the offset value, counts (0 or more)
+  int side = 1;                  // 1: tool left of the path, -1: right
+  MoveOrigin origin;   // origin.program is set from `program` as it leaves
+  std::string program; // the program it was read in
+};
+
+/// Cutter compensation C: the move whose end vector waits for the next move
+/// in the plane, and the moves without plane motion read after it.
+struct CompensationState {
+  bool engaged = false;         // the tool is offset from the programmed path
+  std::vector<HeldMove> held;   // held.front() moves in the plane
+  int stillBlocks = 0;          // blocks without plane motion since it
+  std::uint64_t planeMoves = 0; // moves in the plane read so far
 };
 
 /// What the summary tells about the toolpath (mbrt_stats), in mm.
@@ -230,6 +271,7 @@ struct mbrt_ctx {
   // in ModalState: that is copied for every block).
   mbc::rt::AxisCounts intermediate{};
   std::uint32_t intermediateMask = 0;
+  mbc::rt::CompensationState compensation;
 
   // The run: the block being executed and the count of blocks.
   // A signal handler or another thread lowers block.max_blocks to stop the

@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "block_calls.h"
+#include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frames.h"
 #include "motion.h"
@@ -303,7 +304,7 @@ double modalGroupValue(const mbrt_ctx& ctx, int group) {
     case 6:
       return modal.inch ? 20 : 21;
     case 7:
-      return 40;
+      return modal.compensation;
     case 8:
       return ctx.frames.lengthMode;
     case 9:
@@ -361,6 +362,16 @@ Counts blockEndPosition(const mbrt_ctx& ctx, int axis) {
   return programPosition(ctx)[axis];
 }
 
+/// #5021.., #5041..: the tool position stops the look-ahead, so a move
+/// cutter compensation holds leaves first (cutter_comp.h).
+template <Counts (*Position)(const mbrt_ctx&, int)>
+mbrt_status readToolPosition(mbrt_ctx& ctx, int axis, Num* out) {
+  if (const mbrt_status status = stopLookAhead(ctx)) {
+    return status;
+  }
+  return readPosition<Position>(ctx, axis, out);
+}
+
 Counts machinePosition(const mbrt_ctx& ctx, int axis) {
   return ctx.machine[axis];
 }
@@ -389,6 +400,10 @@ mbrt_status readOffset(mbrt_ctx& ctx, int offset, int axis, Num* out) {
 mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
   if (axis >= ctx.axisCount()) {
     return 0;
+  }
+  if (const mbrt_status status =
+          refuseUnderCompensation(ctx, "writing a work offset")) {
+    return status;
   }
   const double counts = roundToCounts(numeric(value), ctx.axisScale(axis));
   if (!fitsAddress(counts)) {
@@ -467,8 +482,8 @@ constexpr std::array kSystemVariables = {
     SysVarRange{4201, 4230, readModalGroup, nullptr},
     SysVarRange{4301, 4330, readLastWord, nullptr},
     SysVarRange{5001, 5020, readPosition<blockEndPosition>, nullptr},
-    SysVarRange{5021, 5040, readPosition<machinePosition>, nullptr},
-    SysVarRange{5041, 5060, readPosition<currentPosition>, nullptr},
+    SysVarRange{5021, 5040, readToolPosition<machinePosition>, nullptr},
+    SysVarRange{5041, 5060, readToolPosition<currentPosition>, nullptr},
     SysVarRange{5061, 5080, readPosition<skipPosition>, nullptr},
     SysVarRange{5081, 5100, readPosition<toolLengthOffset>, nullptr},
     SysVarRange{5101, 5120, readZero, nullptr}, // servo deviation

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cutter_comp.h"
 #include "frames.h"
 
 namespace mbc::rt {
@@ -25,6 +26,10 @@ mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
     return raise(ctx, AlarmId::IllegalPInG10,
                  fmt::format("G10 L{} P{}: P must be {} to {}", l, p,
                              l == 2 ? 0 : 1, last));
+  }
+  if (const mbrt_status status = refuseUnderCompensation(
+          ctx, fmt::format("G10 L{} (a work offset)", l))) {
+    return status;
   }
   const int index = l == 2 ? kExternalOffset + static_cast<int>(p)
                            : kFirstG541Offset + static_cast<int>(p) - 1;

@@ -9,8 +9,10 @@
 
 #include <numbers>
 
+#include "cutter_comp.h"
 #include "data_input.h"
 #include "frames.h"
+#include "g_codes.h"
 
 namespace mbc::rt {
 
@@ -248,8 +250,31 @@ bool isFrameCode(int tenths) {
          tenths == 510 || tenths == 511 || tenths == 501 || tenths == 680;
 }
 
+namespace {
+
+/// What of a block's frame words mbc does not model under cutter
+/// compensation, or "" (G10 offset data is fine).
+std::string frameChangeName(const FrameWords& words) {
+  if (words.code != 0 && words.code != 100) {
+    return gCodeText(words.code);
+  }
+  if (words.cancelScaling || words.cancelRotation) {
+    return words.cancelScaling ? "G50" : "G69";
+  }
+  return words.lengthCode != 0 || words.word('H') != nullptr
+             ? "a tool length offset change"
+             : "";
+}
+
+} // namespace
+
 mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
                             bool* lengthChanged) {
+  if (const std::string change = frameChangeName(words); !change.empty()) {
+    if (const mbrt_status status = refuseUnderCompensation(ctx, change)) {
+      return status;
+    }
+  }
   const bool frameChanged =
       words.code != 0 || words.cancelScaling || words.cancelRotation;
   ctx.frames.scaling = ctx.frames.scaling && !words.cancelScaling;

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <numbers>
 
+#include "cutter_comp.h"
 #include "frames.h"
+#include "plane_geometry.h"
 
 namespace mbc::rt {
 
@@ -26,12 +28,15 @@ PlaneAxes planeAxes(int plane) {
   }
 }
 
+MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
+  return {ctx.block.file, ctx.block.line,     ctx.programName(),
+          ctx.modal.feed, ctx.modal.feedMode, ctx.lastWords[kLastSIndex],
+          cycle};
+}
+
 namespace {
 
-struct Point {
-  double x;
-  double y;
-};
+using Point = PlanePoint;
 
 /// G90 on an axis that rolls over: the command within one rotation,
 /// reached the shorter way (a half turn goes positive), or with 1008#1 RAB
@@ -72,8 +77,6 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
   return target;
 }
 
-constexpr int kLastSIndex = 18; // #4119
-
 /// The simulated clocks #3001/#3002 and the cycle time of the summary.
 void passTime(mbrt_ctx& ctx, double seconds) {
   ctx.clockMs += seconds * 1000.0;
@@ -94,18 +97,18 @@ struct Travel {
 /// whatever the input unit (degrees at the same number when only rotary
 /// axes move). `timed`: the length F applies to, in input units, which for
 /// a helix is the arc in its plane (FANUC: F is the feed along the arc).
-void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid,
-                  double timed) {
+void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid, double timed,
+                  const MoveOrigin& origin) {
   double minutes = 0.0;
   if (rapid) {
     minutes =
         (travel.mm > 0.0 ? travel.mm : travel.units) / ctx.profile.rapidRate;
-  } else if (ctx.modal.feedMode == 93) {
-    minutes = 1.0 / ctx.modal.feed;
-  } else if (ctx.modal.feedMode == 95) {
-    minutes = timed / (ctx.modal.feed * ctx.lastWords[kLastSIndex]);
+  } else if (origin.feedMode == 93) {
+    minutes = 1.0 / origin.feed;
+  } else if (origin.feedMode == 95) {
+    minutes = timed / (origin.feed * origin.spindle);
   } else {
-    minutes = timed / ctx.modal.feed;
+    minutes = timed / origin.feed;
   }
   passTime(ctx, minutes * 60.0);
   (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += travel.mm;
@@ -130,7 +133,7 @@ void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
 /// The control point moves to `machine`, workpiece position `work`; the
 /// motion goes to the sink with its arc centre in workpiece counts.
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
-            const AxisCounts& machine, Point center, int cycle = 0) {
+            const AxisCounts& machine, Point center, const MoveOrigin& origin) {
   widenBox(ctx, work, ctx.moves == 0);
   const AxisCounts previous = ctx.machine;
   ctx.machine = machine;
@@ -152,17 +155,17 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
         countsToUnits(ctx.shown(axis, machine[axis]), axisScale);
     motion.start[axis] = countsToUnits(ctx.shown(axis, start[axis]), axisScale);
   }
-  motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : ctx.modal.feed;
+  motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : origin.feed;
   motion.plane = ctx.modal.plane;
   motion.center_axes[0] = plane.letters[0];
   motion.center_axes[1] = plane.letters[1];
   motion.center[0] = center.x / scale;
   motion.center[1] = center.y / scale;
   motion.decimals = ctx.decimals();
-  motion.file = ctx.block.file;
-  motion.line = ctx.block.line;
-  motion.program = ctx.programName();
-  motion.cycle = cycle;
+  motion.file = origin.file;
+  motion.line = origin.line;
+  motion.program = origin.program;
+  motion.cycle = origin.cycle;
   ctx.motionSink.fn(ctx.motionSink.user, &motion);
 }
 
@@ -182,20 +185,6 @@ Point centerFromRadius(Point start, Point end, double r, bool clockwise) {
   }
   return {start.x + dx / 2.0 - side * height * dy / chord,
           start.y + dy / 2.0 + side * height * dx / chord};
-}
-
-/// Sweep angle of the arc in (0, 2 pi]; start == end is a full circle.
-double sweepAngle(Point start, Point end, Point center, bool clockwise) {
-  if (start.x == end.x && start.y == end.y) {
-    return 2.0 * std::numbers::pi;
-  }
-  const double a0 = std::atan2(start.y - center.y, start.x - center.x);
-  const double a1 = std::atan2(end.y - center.y, end.x - center.x);
-  double sweep = clockwise ? a0 - a1 : a1 - a0;
-  if (sweep <= 0.0) {
-    sweep += 2.0 * std::numbers::pi;
-  }
-  return sweep;
 }
 
 /// PS0020 when the start and end radii differ by more than parameter 3410.
@@ -250,6 +239,8 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
   }
 }
 
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid);
+
 Point planePoint(const AxisValues& point, int p, int q) {
   return {point[p], point[q]};
 }
@@ -286,7 +277,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
     return raise(ctx, AlarmId::ArcNoRadius, "arc without R or I, J, K");
   } else {
     // Parameter 3403#5 CIR = 0 (FANUC's default): a straight feed move.
-    return moveStraight(ctx, target, false);
+    return moveLine(ctx, target, false);
   }
   const ArcFrame frame = arcFrame(ctx, p, q);
   if (!frame.supported) {
@@ -301,24 +292,36 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   Point workCenter = planePoint(transformPoint(ctx, centerPoint), p, q);
   workCenter.x += static_cast<double>(ctx.frames.local[p]);
   workCenter.y += static_cast<double>(ctx.frames.local[q]);
+  const bool turnsClockwise = clockwise != frame.reversed;
+  const AxisCounts work = programToWork(ctx, target);
+  if (compensating(ctx)) {
+    HeldMove move;
+    move.arc = true;
+    move.clockwise = turnsClockwise;
+    move.start = programToWork(ctx, start);
+    move.end = work;
+    move.center[0] = workCenter.x;
+    move.center[1] = workCenter.y;
+    ctx.program = target;
+    return compensateMove(ctx, std::move(move));
+  }
   const double radius =
       std::hypot(from.x - center.x, from.y - center.y) * frame.scale;
-  const double arc = radius * sweepAngle(from, to, center, clockwise);
-  const AxisCounts work = programToWork(ctx, target);
+  const double arc = radius * sweepBetween(from, to, center, clockwise);
   const AxisCounts machine = workToMachine(ctx, work);
+  const MoveOrigin origin = blockOrigin(ctx);
   advanceClock(ctx,
                travel(ctx, machine,
                       (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
-               false, arc / ctx.scale());
+               false, arc / ctx.scale(), origin);
   ctx.program = target;
-  const bool turnsClockwise = clockwise != frame.reversed;
   const AxisCounts workStart = machineToWork(ctx, ctx.machine);
   moveTo(ctx, turnsClockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
-         workCenter);
+         workCenter, origin);
   widenBoxByArc(
       ctx, p, q, workCenter,
       {static_cast<double>(workStart[p]), static_cast<double>(workStart[q])},
-      radius, sweepAngle(from, to, center, clockwise), turnsClockwise);
+      radius, sweepBetween(from, to, center, clockwise), turnsClockwise);
   return 0;
 }
 
@@ -409,10 +412,11 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
       return status;
     }
   }
+  const MoveOrigin origin = blockOrigin(ctx, cycle);
   const Travel length = travel(ctx, machine, 0, 0.0);
-  advanceClock(ctx, length, rapid, length.units);
+  advanceClock(ctx, length, rapid, length.units, origin);
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
-         {0, 0}, cycle);
+         {0, 0}, origin);
   return 0;
 }
 
@@ -438,6 +442,37 @@ mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
 
 const AxisCounts& programPosition(const mbrt_ctx& ctx) {
   return ctx.program;
+}
+
+void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
+                      const MoveOrigin& origin) {
+  const AxisCounts machine = workToMachine(ctx, work);
+  const Travel length = travel(ctx, machine, 0, 0.0);
+  advanceClock(ctx, length, rapid, length.units, origin);
+  moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
+         {0, 0}, origin);
+}
+
+void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
+                 bool clockwise, const MoveOrigin& origin) {
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const int p = ctx.axisOf(plane.letters[0]);
+  const int q = ctx.axisOf(plane.letters[1]);
+  const AxisCounts workStart = machineToWork(ctx, ctx.machine);
+  const Point from{static_cast<double>(workStart[p]),
+                   static_cast<double>(workStart[q])};
+  const Point to{static_cast<double>(work[p]), static_cast<double>(work[q])};
+  const double radius = std::hypot(from.x - center.x, from.y - center.y);
+  const double sweep = sweepBetween(from, to, center, clockwise);
+  const AxisCounts machine = workToMachine(ctx, work);
+  advanceClock(ctx,
+               travel(ctx, machine,
+                      (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
+                      radius * sweep),
+               false, radius * sweep / ctx.scale(), origin);
+  moveTo(ctx, clockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
+         center, origin);
+  widenBoxByArc(ctx, p, q, center, from, radius, sweep, clockwise);
 }
 
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
@@ -559,12 +594,34 @@ void dwell(mbrt_ctx& ctx, double seconds) {
   passTime(ctx, seconds);
 }
 
+namespace {
+
+/// A G00 or G01 move of the program, which cutter compensation may hold.
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
+  if (!compensating(ctx)) {
+    return moveStraight(ctx, target, rapid);
+  }
+  if (!rapid) {
+    if (const mbrt_status status = checkFeed(ctx, 0)) {
+      return status;
+    }
+  }
+  HeldMove move;
+  move.rapid = rapid;
+  move.start = programToWork(ctx, ctx.program);
+  move.end = programToWork(ctx, target);
+  ctx.program = target;
+  return compensateMove(ctx, std::move(move));
+}
+
+} // namespace
+
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1) {
-    return moveStraight(ctx, target, mode == 0);
+    return moveLine(ctx, target, mode == 0);
   }
   if (const mbrt_status status = checkFeed(ctx, 0)) {
     return status;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "context.h"
+#include "plane_geometry.h"
 
 namespace mbc::rt {
 
@@ -15,6 +16,12 @@ struct MotionWords {
   bool hasR = false;
   Counts r = 0;
 };
+
+inline constexpr int kLastSIndex = 18; // #4119: the last S
+
+/// The block data a move carries, taken now: the current block, feed and
+/// spindle speed; `cycle` names the canned cycle it belongs to.
+MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle = 0);
 
 /// The two axes of a plane (G17 X Y, G18 Z X, G19 Y Z) and the I/J/K index
 /// of each.
@@ -35,6 +42,14 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words);
 /// The position of every axis as the program commands it: local
 /// coordinates before mirror, scaling and rotation (frames.h).
 const AxisCounts& programPosition(const mbrt_ctx& ctx);
+
+/// Cutter compensation's moves (cutter_comp.h): the control point goes
+/// straight, or on an arc about `center` (the plane's axes), to a position
+/// in the workpiece frame, as the block of `origin` commanded.
+void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
+                      const MoveOrigin& origin);
+void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
+                 bool clockwise, const MoveOrigin& origin);
 
 /// A straight move to `target` (program coordinates): a rapid, or a feed
 /// at the modal F (PS0011 when F is 0). `cycle` marks a canned cycle's move.

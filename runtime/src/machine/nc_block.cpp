@@ -9,6 +9,7 @@
 
 #include "block_calls.h"
 #include "canned_cycles.h"
+#include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frame_codes.h"
 #include "frames.h"
@@ -73,11 +74,12 @@ struct Block {
   std::optional<Counts> q;
   std::optional<double> qWritten; // Q as written: G05.1's switch
   std::optional<double> k;        // the repeat count of a canned cycle
-  // G04 (40), G28 (280), G29, G30, G31, G53 (530) and the look-ahead
-  // switches G05, G05.1, G05.4, G08.
+  // G04 (40), G28 (280), G29, G30, G31, G39 (390), G53 (530) and the
+  // look-ahead switches G05, G05.1, G05.4, G08.
   int nonModal = 0;
-  bool selectsG541 = false;  // #4130 becomes its P
-  double dwellSeconds = 0.0; // G04 X
+  bool compensationCode = false; // G40, G41 or G42 in the block
+  bool selectsG541 = false;      // #4130 becomes its P
+  double dwellSeconds = 0.0;     // G04 X
   BlockCodes codes;
   FrameWords frames;
 };
@@ -169,8 +171,10 @@ bool setsOneField(double tenths) {
     case 990:
     case 150: // G15, G16
     case 160:
-    case 400: // G40, G97: the one state mbc keeps
-    case 970:
+    case 400: // G40-G42
+    case 410:
+    case 420:
+    case 970: // G97: the one state mbc keeps
       return true;
     default:
       return false;
@@ -194,6 +198,7 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 290: // G29 return from the reference position
     case 300: // G30 2nd to 4th reference position return
     case 310: // G31 skip
+    case 390: // G39 corner circular interpolation
     case 530: // G53 machine coordinates
       block.nonModal = tenths;
       return 0;
@@ -214,6 +219,12 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 170:
     case 180:
     case 190:
+      if (tenths / 10 != ctx.modal.plane && compensating(ctx)) {
+        return raise(ctx, AlarmId::PlaneChangeInCrc,
+                     fmt::format("G{} in cutter compensation mode (G{}); "
+                                 "cancel with G40 first",
+                                 tenths / 10, ctx.modal.compensation));
+      }
       next.plane = tenths / 10;
       return 0;
     case 200:
@@ -259,8 +270,13 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 160:
       next.polar = tenths == 160;
       return 0;
+    case 400: // G40, G41, G42: cutter compensation (cutter_comp.h)
+    case 410:
+    case 420:
+      next.compensation = tenths / 10;
+      block.compensationCode = true;
+      return 0;
     // The one state mbc keeps these groups in (#4001.. reads them).
-    case 400: // G40
     case 670: // G67
     case 970: // G97
       return 0;
@@ -320,8 +336,9 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       const int tenths = block.oneField[i];
       if (tenths <= 30) {
         ctx.modal.motion = tenths / 10; // most of them, cheaper than the call
-      } else {
-        applyGCode(ctx, ctx.modal, tenths, block);
+      } else if (const mbrt_status status =
+                     applyGCode(ctx, ctx.modal, tenths, block)) {
+        return status; // G17-G19 under compensation
       }
     }
     return 0;
@@ -346,6 +363,12 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   const int cycle = next.cycle;
   next.cycle = ctx.modal.cycle;
   const bool newOrigin = next.workOffset != ctx.modal.workOffset;
+  if (newOrigin || inch != ctx.modal.inch) {
+    if (const mbrt_status status = refuseUnderCompensation(
+            ctx, newOrigin ? "a work coordinate system change" : "G20/G21")) {
+      return status;
+    }
+  }
   ctx.modal = next;
   if (block.selectsG541) {
     ctx.lastWords[kLastPIndex] = block.hasP ? block.p : 1.0;
@@ -574,6 +597,30 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
   return 0;
 }
 
+/// What a block cannot do under cutter compensation: G31 (PS0035), and
+/// what mbc does not model yet (MBC0001).
+mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
+  if (block.nonModal == 310) {
+    return raise(ctx, AlarmId::SkipInCrc,
+                 "G31 skip in cutter compensation mode (G41/G42)");
+  }
+  if (block.nonModal == 280 || block.nonModal == 290 || block.nonModal == 300 ||
+      block.nonModal == 530) {
+    return refuseUnderCompensation(ctx, gCodeText(block.nonModal));
+  }
+  if (ctx.modal.cycle != 0) {
+    return refuseUnderCompensation(
+        ctx, fmt::format("canned cycle G{}", ctx.modal.cycle));
+  }
+  if (block.compensationCode && block.motion.centerMask != 0 &&
+      ctx.modal.motion <= 1) {
+    return refuseUnderCompensation(
+        ctx, fmt::format("G{} with I, J or K (a vector direction)",
+                         ctx.modal.compensation));
+  }
+  return 0;
+}
+
 /// What the block's axis words do: dwell, G28, G53, a canned cycle or a
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
@@ -611,6 +658,14 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
                                gCodeText(block.nonModal)));
     }
     polarToCartesian(ctx, block.motion);
+  }
+  if (compensating(ctx)) {
+    if (const mbrt_status status = checkUnderCompensation(ctx, block)) {
+      return status;
+    }
+  }
+  if (block.nonModal == 390) {
+    return cornerArc(ctx, motion);
   }
   if (block.nonModal == 280) {
     return returnToReference(ctx, motion, 1);
@@ -719,9 +774,15 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     return status;
   }
   const std::uint64_t movesBefore = ctx.moves;
+  const std::uint64_t planeMovesBefore = ctx.compensation.planeMoves;
   // The axis words of G52, G92, G51, G51.1, G50.1 and G68 are their data.
   if (block.frames.code == 0) {
     if (const mbrt_status status = executeMotionWords(ctx, block)) {
+      return status;
+    }
+  }
+  if (compensating(ctx)) {
+    if (const mbrt_status status = compensateBlockEnd(ctx, planeMovesBefore)) {
       return status;
     }
   }

@@ -185,4 +185,13 @@ void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
                             unitsText(value, ctx.decimals())));
 }
 
+void flattenLookAheadStop(mbrt_ctx& ctx, int blocks) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  for (int i = 0; i < blocks; ++i) {
+    sendData(ctx, "G04 P0");
+  }
+}
+
 } // namespace mbc::rt

@@ -20,4 +20,9 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset);
 /// D geometry, L13 D wear.
 void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value);
 
+/// Cutter compensation's look-ahead was stopped by a macro statement (a
+/// read of the tool position): `blocks` dwells of 0, blocks without motion
+/// in the plane, stop it for a control as well.
+void flattenLookAheadStop(mbrt_ctx& ctx, int blocks);
+
 } // namespace mbc::rt

@@ -1,0 +1,579 @@
+// Cutter compensation C as a FANUC 0i-F / 30i-B does it (docs/language.md
+// "Cutter compensation"): the vector at the end of each move comes from the
+// corner it makes with the next move in the plane. Inner corners take the
+// intersection of the two offset paths; outer corners of 90 degrees or
+// more the intersection of the tangents; sharper ones two vectors, each
+// extended by the offset along its path and joined by a straight line. The
+// start-up move (type A or B, 5003#0 SUP) and the cancel move follow the
+// same figures, type A with a single vector perpendicular to the next or
+// the previous move.
+#include "cutter_comp.h"
+
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include <numbers>
+
+#include "flat_gcode.h"
+#include "frames.h"
+#include "g_codes.h"
+#include "plane_geometry.h"
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr int kLastDIndex = 6; // #4107: the last D
+
+/// The plane's axes as indexes into positions; -1 where the machine lacks
+/// one.
+struct PlaneIndex {
+  int p;
+  int q;
+};
+
+PlaneIndex planeIndex(const mbrt_ctx& ctx) {
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  return {ctx.axisOf(plane.letters[0]), ctx.axisOf(plane.letters[1])};
+}
+
+PlanePoint pointOf(const AxisCounts& position, PlaneIndex plane) {
+  return {static_cast<double>(position[plane.p]),
+          static_cast<double>(position[plane.q])};
+}
+
+/// Where the tool is, in the workpiece frame.
+AxisCounts toolPosition(const mbrt_ctx& ctx) {
+  return machineToWork(ctx, ctx.machine);
+}
+
+/// The move's end position with the plane axes at `point` (rounded to
+/// counts): what the other axes do, they do on every piece of the move.
+AxisCounts placeAt(const HeldMove& move, PlaneIndex plane, PlanePoint point) {
+  AxisCounts position = move.end;
+  position[plane.p] = static_cast<Counts>(roundHalfAway(point.x));
+  position[plane.q] = static_cast<Counts>(roundHalfAway(point.y));
+  return position;
+}
+
+PlanePoint centerOf(const HeldMove& move) {
+  return {move.center[0], move.center[1]};
+}
+
+/// The direction of travel at a point of the programmed move.
+PlanePoint tangentAt(const HeldMove& move, PlaneIndex plane, PlanePoint at) {
+  if (!move.arc) {
+    return unit(pointOf(move.end, plane) - pointOf(move.start, plane));
+  }
+  const PlanePoint radial = unit(at - centerOf(move));
+  return move.clockwise ? PlanePoint{radial.y, -radial.x} : leftOf(radial);
+}
+
+/// The vector from the path to the tool centre where the path runs along
+/// `tangent`: the offset to the side the move is compensated on.
+PlanePoint vectorAt(const HeldMove& move, PlanePoint tangent) {
+  return (move.offset * move.side) * leftOf(tangent);
+}
+
+/// The radius of the tool-centre path of an arc: the tool is inside the
+/// arc when it is left of a counter-clockwise arc or right of a clockwise.
+double offsetRadius(const HeldMove& move, PlaneIndex plane) {
+  const double radius = length(pointOf(move.start, plane) - centerOf(move));
+  const bool inside = (move.side > 0) != move.clockwise;
+  return inside ? radius - move.offset : radius + move.offset;
+}
+
+/// The tool-centre path of a move, without its ends: a line through its
+/// offset start or the circle of its offset radius.
+PlaneCurve offsetCurve(const HeldMove& move, PlaneIndex plane) {
+  PlaneCurve curve;
+  if (move.arc) {
+    curve.circle = true;
+    curve.center = centerOf(move);
+    curve.radius = offsetRadius(move, plane);
+    return curve;
+  }
+  const PlanePoint start = pointOf(move.start, plane);
+  curve.direction = tangentAt(move, plane, start);
+  curve.point = start + vectorAt(move, curve.direction);
+  return curve;
+}
+
+/// The intersection nearest the corner, if the two paths meet.
+std::optional<PlanePoint> nearestIntersection(const PlaneCurve& a,
+                                              const PlaneCurve& b,
+                                              PlanePoint corner) {
+  std::optional<PlanePoint> best;
+  for (const PlanePoint point : intersections(a, b)) {
+    if (!best || length(point - corner) < length(*best - corner)) {
+      best = point;
+    }
+  }
+  return best;
+}
+
+/// How the tool gets round the corner between `held` and `next`: the points
+/// it passes after the end of `held`. points[0] ends the held move's own
+/// path (on its offset circle when it is an arc); the others are joined by
+/// straight lines, and the last lies on the next move's offset path.
+struct Corner {
+  std::vector<PlanePoint> points;
+  bool noSolution = false; // PS0033: the offset paths do not meet
+};
+
+/// `next.offset`/`next.side` do not count here: the corner takes the vector
+/// of the held move's block (a new D acts at the end of its own block).
+Corner cornerBetween(const mbrt_ctx& ctx, const HeldMove& held,
+                     const HeldMove& next, bool cancel) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint corner = pointOf(held.end, plane);
+  const PlanePoint d1 = tangentAt(held, plane, corner);
+  const PlanePoint d2 = tangentAt(next, plane, corner);
+  HeldMove following = next;
+  following.offset = held.offset;
+  following.side = held.side;
+  const PlanePoint e1 = corner + vectorAt(held, d1);
+  const PlanePoint s2 = corner + vectorAt(following, d2);
+  const double turn = cross(d1, d2);
+  const double along = dot(d1, d2);
+  Corner result;
+  auto& points = result.points;
+  // A straight or tangent continuation: one vector, no corner.
+  if (std::fabs(turn) <= 1e-9 && along > 0.0) {
+    points = {e1};
+    return result;
+  }
+  const bool typeB = ctx.profile.parameterBit(5003, 0);
+  const bool inner = turn * held.side > 0.0;
+  if (inner) {
+    const std::optional<PlanePoint> meet = nearestIntersection(
+        offsetCurve(held, plane), offsetCurve(following, plane), corner);
+    if (!meet) {
+      result.noSolution = true;
+      return result;
+    }
+    points = {*meet};
+    return result;
+  }
+  // Outer corners. Type A (start-up and cancel): one vector,
+  // perpendicular to the next move at the start, to the last at the end.
+  if (!typeB && held.startUp) {
+    points = {s2};
+    return result;
+  }
+  if (!typeB && cancel) {
+    points = {e1};
+    return result;
+  }
+  // A straight move runs on to the first point below (its end vector lies
+  // on the way there); an arc ends at its vector first.
+  if (held.arc) {
+    points.push_back(e1);
+  }
+  if (along >= 0.0) {
+    PlaneCurve first;
+    first.point = e1;
+    first.direction = d1;
+    PlaneCurve second;
+    second.point = s2;
+    second.direction = d2;
+    const std::vector<PlanePoint> meet = intersections(first, second);
+    points.push_back(meet.empty() ? e1 : meet.front());
+  } else {
+    points.push_back(e1 + held.offset * d1);
+    points.push_back(s2 - held.offset * d2);
+  }
+  if (next.arc && !cancel) {
+    points.push_back(s2);
+  }
+  return result;
+}
+
+/// G41 to G42 or back: the intersection of the two offset paths when they
+/// cross, else straight from the end vector of one to the start vector of
+/// the other.
+Corner sideChange(const mbrt_ctx& ctx, const HeldMove& held,
+                  const HeldMove& next) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint corner = pointOf(held.end, plane);
+  const PlanePoint e1 = corner + vectorAt(held, tangentAt(held, plane, corner));
+  HeldMove following = next;
+  following.offset = held.offset;
+  const PlanePoint s2 =
+      corner + vectorAt(following, tangentAt(next, plane, corner));
+  if (!held.arc && !next.arc) {
+    const PlanePoint from = pointOf(toolPosition(ctx), plane);
+    const PlanePoint to = pointOf(next.end, plane) +
+                          vectorAt(following, tangentAt(next, plane, corner));
+    const double det = cross(e1 - from, to - s2);
+    if (std::fabs(det) > 1e-9) {
+      const double t = cross(s2 - from, to - s2) / det;
+      const double u = cross(s2 - from, e1 - from) / det;
+      if (t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0) {
+        Corner crossing;
+        crossing.points = {from + t * (e1 - from)};
+        return crossing;
+      }
+    }
+  }
+  Corner apart;
+  apart.points = {e1, s2};
+  return apart;
+}
+
+/// FANUC's interference check (5008#3 CNV = 0) before a move leaves: a
+/// straight tool path that runs against its programmed direction (90 to
+/// 270 degrees; not with 5008#1 CNC), an arc whose tool path sweeps more
+/// than 180 degrees more or less than the programmed one.
+bool interferes(const mbrt_ctx& ctx, const HeldMove& move, PlanePoint from,
+                PlanePoint to) {
+  if (move.startUp || ctx.profile.parameterBit(5008, 3)) {
+    return false;
+  }
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint start = pointOf(move.start, plane);
+  const PlanePoint end = pointOf(move.end, plane);
+  if (length(to - from) < 1.0) {
+    return false; // nothing left to run against
+  }
+  if (!move.arc) {
+    return !ctx.profile.parameterBit(5008, 1) &&
+           dot(end - start, to - from) < 0.0;
+  }
+  const PlanePoint center = centerOf(move);
+  const double programmed = sweepBetween(start, end, center, move.clockwise);
+  const double tool = sweepBetween(from, to, center, move.clockwise);
+  return std::fabs(tool - programmed) > std::numbers::pi;
+}
+
+mbrt_status raiseAt(mbrt_ctx& ctx, const HeldMove& move, AlarmId id,
+                    std::string_view detail) {
+  const char* file = ctx.block.file;
+  const int line = ctx.block.line;
+  ctx.block.file = move.origin.file;
+  ctx.block.line = move.origin.line;
+  const mbrt_status status = raise(ctx, id, detail);
+  ctx.block.file = file;
+  ctx.block.line = line;
+  return status;
+}
+
+MoveOrigin originOf(const HeldMove& move) {
+  MoveOrigin origin = move.origin;
+  origin.program = move.program.c_str();
+  return origin;
+}
+
+/// A move without motion in the plane: the tool keeps its vector.
+void moveStill(mbrt_ctx& ctx, const HeldMove& move) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const AxisCounts target =
+      placeAt(move, plane, pointOf(toolPosition(ctx), plane));
+  if (target != toolPosition(ctx)) {
+    moveWorkStraight(ctx, target, move.rapid, originOf(move));
+  }
+}
+
+/// A move as programmed, without offset.
+void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
+  if (move.arc) {
+    moveWorkArc(ctx, move.end, centerOf(move), move.clockwise, originOf(move));
+  } else {
+    moveWorkStraight(ctx, move.end, move.rapid, originOf(move));
+  }
+}
+
+/// The held move leaves along `points` (Corner), then the moves without
+/// plane motion read after it; PS0041 instead when its tool path
+/// interferes (`check`), the tool standing at the end of the move before.
+mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
+                  bool check = true) {
+  CompensationState& state = ctx.compensation;
+  std::vector<HeldMove> held = std::move(state.held);
+  state.held.clear();
+  state.stillBlocks = 0;
+  const HeldMove& move = held.front();
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint from = pointOf(toolPosition(ctx), plane);
+  if (check && interferes(ctx, move, from, points.front())) {
+    if (ctx.profile.parameterBit(19607, 5)) {
+      return raiseAt(ctx, move, AlarmId::Unsupported,
+                     "interference avoidance (parameter 19607#5 CAV)");
+    }
+    return raiseAt(ctx, move, AlarmId::InterferenceInCrc,
+                   fmt::format("the tool path of this {} runs against the "
+                               "programmed direction with offset {}",
+                               move.arc ? "arc" : "move",
+                               move.offset / ctx.scale()));
+  }
+  const MoveOrigin origin = originOf(move);
+  const AxisCounts first = placeAt(move, plane, points.front());
+  const bool fullCircle =
+      move.arc && pointOf(move.start, plane).x == pointOf(move.end, plane).x &&
+      pointOf(move.start, plane).y == pointOf(move.end, plane).y;
+  if (move.arc) {
+    if (first != toolPosition(ctx) || fullCircle) {
+      moveWorkArc(ctx, first, centerOf(move), move.clockwise, origin);
+    }
+  } else if (first != toolPosition(ctx)) {
+    moveWorkStraight(ctx, first, move.rapid, origin);
+  }
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const AxisCounts link = placeAt(move, plane, points[i]);
+    if (link != toolPosition(ctx)) {
+      moveWorkStraight(ctx, link, move.rapid, origin);
+    }
+  }
+  for (std::size_t i = 1; i < held.size(); ++i) {
+    moveStill(ctx, held[i]);
+  }
+  return 0;
+}
+
+/// The offset value of the modal D (geometry + wear as the offset memory
+/// keeps it) in counts, and the side: G41 left, G42 right, swapped by a
+/// negative value and by a mirror image in the plane.
+mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
+  const double d = ctx.lastWords[kLastDIndex];
+  if (d < 0.0 || d > ctx.profile.toolOffsetCount) {
+    return raise(ctx, AlarmId::IllegalOffsetNumber,
+                 fmt::format("D{} (the machine has {})", d,
+                             ctx.profile.toolOffsetCount));
+  }
+  const ToolOffset& offset = ctx.toolOffsets[static_cast<std::size_t>(d)];
+  double value = 0.0;
+  switch (ctx.profile.toolOffsetMemory) {
+    case 'A':
+      value = offset.hGeometry;
+      break;
+    case 'B':
+      value = offset.hGeometry + offset.hWear;
+      break;
+    default:
+      value = offset.dGeometry + offset.dWear;
+      break;
+  }
+  const PlaneIndex plane = planeIndex(ctx);
+  const bool mirrored = arcFrame(ctx, plane.p, plane.q).reversed;
+  move.offset = roundToCounts(std::fabs(value), ctx.scale());
+  move.side = (ctx.modal.compensation == 41) == (value >= 0.0) ? 1 : -1;
+  if (mirrored) {
+    move.side = -move.side;
+  }
+  return 0;
+}
+
+/// G41 or G42 with an offset number other than D0.
+bool offsetOn(const mbrt_ctx& ctx) {
+  return ctx.modal.compensation != 40 && ctx.lastWords[kLastDIndex] != 0.0;
+}
+
+/// The blocks without plane motion the look-ahead tolerates between two
+/// moves: 19625 less two (a value outside 3 to 8 reads as 3).
+int stillBlocksAllowed(const mbrt_ctx& ctx) {
+  const double blocks = ctx.profile.parameter(19625);
+  return (blocks >= 3.0 && blocks <= 8.0 ? static_cast<int>(blocks) : 3) - 2;
+}
+
+/// The cancel move: from where the tool is straight to the programmed end.
+mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
+  CompensationState& state = ctx.compensation;
+  if (move.arc) {
+    return raise(ctx, AlarmId::NoCircleAtStartOrCancel,
+                 "the move that cancels cutter compensation must be G00 or "
+                 "G01");
+  }
+  if (!state.held.empty()) {
+    const Corner corner = cornerBetween(ctx, state.held.front(), move, true);
+    if (corner.noSolution) {
+      state.held.clear();
+      return raise(ctx, AlarmId::NoSolutionAtCrc,
+                   "the offset paths do not meet at the cancel move");
+    }
+    if (const mbrt_status status = leave(ctx, corner.points)) {
+      return status;
+    }
+  }
+  state.engaged = false;
+  moveWorkStraight(ctx, move.end, move.rapid, originOf(move));
+  return 0;
+}
+
+} // namespace
+
+mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
+  CompensationState& state = ctx.compensation;
+  const PlaneIndex plane = planeIndex(ctx);
+  if (plane.p < 0 || plane.q < 0) {
+    const PlaneAxes axes = planeAxes(ctx.modal.plane);
+    return raise(ctx, AlarmId::IllegalPlaneSelect,
+                 fmt::format("cutter compensation in G{} needs axes {} and {}",
+                             ctx.modal.plane, axes.letters[0],
+                             axes.letters[1]));
+  }
+  move.origin = blockOrigin(ctx);
+  move.program = move.origin.program;
+  move.still = !move.arc &&
+               pointOf(move.start, plane).x == pointOf(move.end, plane).x &&
+               pointOf(move.start, plane).y == pointOf(move.end, plane).y;
+  if (move.still) {
+    if (state.held.empty()) {
+      moveStill(ctx, move);
+    } else {
+      state.held.push_back(std::move(move));
+    }
+    return 0;
+  }
+  ++state.planeMoves;
+  if (!offsetOn(ctx)) {
+    if (!state.engaged) {
+      moveAsProgrammed(ctx, move);
+      return 0;
+    }
+    return cancel(ctx, move);
+  }
+  if (const mbrt_status status = readOffset(ctx, move)) {
+    return status;
+  }
+  if (!state.engaged && move.arc) {
+    return raise(ctx, AlarmId::NoCircleAtStartOrCancel,
+                 "the move that starts cutter compensation must be G00 or "
+                 "G01");
+  }
+  if (move.arc && offsetRadius(move, plane) <= 0.0) {
+    // The tool stops at the end of the move before, which has no corner.
+    if (const mbrt_status status = releaseHeldMoves(ctx)) {
+      return status;
+    }
+    return raise(
+        ctx, AlarmId::InterferenceInCrc,
+        fmt::format("the arc's radius {} is not larger than the "
+                    "offset {} on its inside",
+                    length(pointOf(move.start, plane) - centerOf(move)) /
+                        ctx.scale(),
+                    move.offset / ctx.scale()));
+  }
+  if (!state.engaged) {
+    move.startUp = true;
+    state.engaged = true;
+    state.held.push_back(std::move(move));
+    state.stillBlocks = 0;
+    return 0;
+  }
+  if (!state.held.empty()) {
+    const HeldMove& held = state.held.front();
+    const Corner corner = held.side != move.side && !held.startUp
+                              ? sideChange(ctx, held, move)
+                              : cornerBetween(ctx, held, move, false);
+    if (corner.noSolution) {
+      const HeldMove failed = held;
+      state.held.clear();
+      return raiseAt(ctx, failed, AlarmId::NoSolutionAtCrc,
+                     "the offset paths of this move and the next do not "
+                     "meet");
+    }
+    if (const mbrt_status status = leave(ctx, corner.points)) {
+      return status;
+    }
+  }
+  state.held.push_back(std::move(move));
+  return 0;
+}
+
+mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
+  CompensationState& state = ctx.compensation;
+  if (state.held.empty()) {
+    return 0;
+  }
+  const HeldMove& move = state.held.front();
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint end = pointOf(move.end, plane);
+  const PlanePoint point = end + vectorAt(move, tangentAt(move, plane, end));
+  return leave(ctx, {point}, check);
+}
+
+mbrt_status stopLookAhead(mbrt_ctx& ctx) {
+  if (ctx.compensation.held.empty()) {
+    return 0;
+  }
+  flattenLookAheadStop(ctx, stillBlocksAllowed(ctx) + 1);
+  return releaseHeldMoves(ctx);
+}
+
+mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore) {
+  CompensationState& state = ctx.compensation;
+  if (state.planeMoves != planeMovesBefore || !state.engaged) {
+    return 0;
+  }
+  if (!offsetOn(ctx)) {
+    return releaseHeldMoves(ctx); // G40 alone: the vector goes with the next
+                                  // move in the plane
+  }
+  if (!state.held.empty() && ++state.stillBlocks > stillBlocksAllowed(ctx)) {
+    return releaseHeldMoves(ctx);
+  }
+  return 0;
+}
+
+mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
+  CompensationState& state = ctx.compensation;
+  if (!state.engaged || !offsetOn(ctx)) {
+    return raise(ctx, AlarmId::ImproperGCode,
+                 "G39 corner arc outside cutter compensation (G41/G42)");
+  }
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  // The direction in program coordinates, then through the frames.
+  AxisCounts toward = ctx.program;
+  if (words.centerMask != 0) {
+    toward[plane.p] += words.center[axes.centerIndex[0]];
+    toward[plane.q] += words.center[axes.centerIndex[1]];
+  } else {
+    for (const int axis : {plane.p, plane.q}) {
+      if ((words.axisMask >> axis & 1) != 0) {
+        toward[axis] = ctx.modal.incremental ? toward[axis] + words.axis[axis]
+                                             : words.axis[axis];
+      }
+    }
+  }
+  const AxisCounts here = programToWork(ctx, ctx.program);
+  const PlanePoint direction =
+      unit(pointOf(programToWork(ctx, toward), plane) - pointOf(here, plane));
+  if (length(direction) == 0.0) {
+    return raise(ctx, AlarmId::ImproperCommand,
+                 "G39 needs a direction: X Y or I J away from the corner");
+  }
+  ++state.planeMoves;
+  HeldMove arc;
+  arc.end = here;
+  if (const mbrt_status status = readOffset(ctx, arc)) {
+    return status;
+  }
+  if (const mbrt_status status = releaseHeldMoves(ctx)) {
+    return status;
+  }
+  const PlanePoint corner = pointOf(here, plane);
+  const AxisCounts target =
+      placeAt(arc, plane, corner + vectorAt(arc, direction));
+  AxisCounts tool = toolPosition(ctx);
+  for (const int axis : {plane.p, plane.q}) {
+    tool[axis] = target[axis];
+  }
+  if (tool != toolPosition(ctx)) {
+    moveWorkArc(ctx, tool, corner, arc.side > 0, blockOrigin(ctx));
+  }
+  return 0;
+}
+
+mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what) {
+  if (!compensating(ctx)) {
+    return 0;
+  }
+  return raise(ctx, AlarmId::Unsupported,
+               fmt::format("{} in cutter compensation mode (G41/G42); "
+                           "give it after G40",
+                           what));
+}
+
+} // namespace mbc::rt

@@ -1,0 +1,53 @@
+// Cutter compensation C (G40, G41, G42 and G39; docs/language.md "Cutter
+// compensation"): the tool centre runs at the offset value beside the
+// programmed path, in the plane of G17/G18/G19, computed in the workpiece
+// frame. A move in the plane is held until the next one tells how its end
+// meets it (intersection, or the FANUC vectors of an outer corner); the
+// blocks without motion in the plane read meanwhile count against the
+// look-ahead of parameter 19625, past which the held move ends with a
+// vector perpendicular to it, as the control does.
+#pragma once
+
+#include <string_view>
+
+#include "context.h"
+#include "motion.h"
+
+namespace mbc::rt {
+
+/// Whether moves go through compensation: G41 or G42 in force, or the tool
+/// still offset after G40 until the next move in the plane.
+inline bool compensating(const mbrt_ctx& ctx) {
+  return ctx.modal.compensation != 40 || ctx.compensation.engaged;
+}
+
+/// A programmed move (G00-G03, start and end in the workpiece frame;
+/// ctx.program already at its end): the start-up, a move in offset mode,
+/// the cancel move, or a move without motion in the plane.
+mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move);
+
+/// After every NC block under compensation: a block without motion in the
+/// plane counts against the look-ahead, and G40 or D0 in such a block ends
+/// the held move with a perpendicular vector.
+mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore);
+
+/// G39 corner circular interpolation: an arc of the offset value about the
+/// programmed point, to the vector perpendicular to the direction the
+/// block's plane words (X Y, or I J) give.
+mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words);
+
+/// The held moves leave, the one in the plane with a vector perpendicular
+/// to its end; at the end of the run `check` is false: no interference
+/// check, whose alarm would come after the program ended.
+mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check = true);
+
+/// A read of the tool position (#5021, #5041) stops the look-ahead: the
+/// held moves leave, and the flattened program gets as many blocks without
+/// motion as stop the control's look-ahead.
+mbrt_status stopLookAhead(mbrt_ctx& ctx);
+
+/// MBC0001 for what mbc does not model under compensation, or 0 when
+/// compensation is off.
+mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what);
+
+} // namespace mbc::rt

@@ -1,0 +1,12 @@
+; Cutter compensation cannot start on an arc (PS0034).
+%
+O5301(ARC START-UP)
+G17G21G40G90
+G10L12P1R5.
+G0X0Y0
+G1Z-1.F200.
+G41D1G3X20.Y0R10.
+G1Y20.
+G40X0Y0
+M30
+%

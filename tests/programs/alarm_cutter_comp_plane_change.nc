@@ -1,0 +1,12 @@
+; The plane cannot change while compensation is on (PS0037).
+%
+O5304(PLANE CHANGE IN CRC)
+G17G21G40G90
+G10L12P1R5.
+G0X0Y0
+G41D1G1X10.Y5.F300.
+X30.
+G18
+Z-5.
+M30
+%

@@ -1,0 +1,77 @@
+; Cutter compensation in offset mode: D changed between blocks (the new
+; value acts at the end of its block), a negative offset swapping sides,
+; G41 to G42, a G39 corner arc, blocks without motion in the plane (one is
+; tolerated, two end the move on a perpendicular vector and overcut the
+; inner corner), macro statements between moves, G40 alone then a Z move,
+; polar coordinates under compensation and compensation in G18.
+%
+O5400(COMPENSATION MODES)
+G17G21G40G90
+G10L12P1R5.
+G10L12P2R3.
+G10L12P3R-5.
+G0X-10.Y-10.
+G1Z-2.F500.
+(D CHANGES FROM 5 TO 3 IN THE SECOND BLOCK)
+G41D1X0Y0
+Y20.
+D2X20.
+Y0
+G40X30.Y-10.
+(A NEGATIVE OFFSET: G41 RUNS ON THE RIGHT)
+G41D3X40.Y0
+Y20.
+X60.
+G40X70.Y30.
+(G41 TO G42: THE PATHS DO NOT CROSS, THE TOOL STEPS OVER)
+G41D1X80.Y0
+X100.
+G42X120.Y20.
+X140.
+G40X150.Y30.
+(G39 CORNER ARC AT AN OUTER CORNER)
+G0X160.Y-10.
+G41D1G1X170.Y0
+X190.
+G39X190.Y-20.
+G1Y-20.
+G40X200.Y-30.
+(ONE BLOCK WITHOUT MOTION IS TOLERATED, TWO OVERCUT)
+G0X210.Y-10.
+G41D1G1X220.Y0
+X240.
+M8
+Y20.
+X220.
+M9
+Z-1.
+Y0
+#110=#4007
+#111=#111+1
+#112=#111*2
+G40X210.Y-10.
+(G40 ALONE KEEPS THE VECTOR FOR A Z MOVE)
+G41D1X250.Y0
+X270.
+G40
+G0Z5.
+X280.Y-10.
+Z-2.
+(POLAR POINTS UNDER COMPENSATION)
+G52X320.Y0
+G1G41D1X20.Y0
+G16
+X20.Y90.
+X20.Y180.
+G15
+G40X-10.Y-10.
+G52X0Y0
+(G18: Z AND X ARE THE PLANE)
+G0X0Y-20.Z0
+G18G42D2G1X10.Z0
+Z-10.
+X30.
+G40X40.Z5.
+G17
+M30
+%

@@ -1,0 +1,128 @@
+// Cutter compensation C (runtime/src/machine/cutter_comp.cpp): what the
+// block-by-block interface shows of the look-ahead, the alarms and the
+// refusals. Every expected point is worked out by hand; the corner rules
+// themselves are checked by the goldens and the oracle scripts.
+#include "runtime/src/machine/plane_geometry.h"
+
+#include "runtime_test_support.h"
+
+namespace mbc::test {
+
+using rt::PlaneCurve;
+using rt::PlanePoint;
+
+TEST(RuntimeCutterComp, TheMoveWaitsForTheNextOne) {
+  Machine m;
+  ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+  ASSERT_EQ(m.block("G90 G01 X-10. Y0 F500."), 0);
+  ASSERT_EQ(m.block("G41 D1 X0"), 0); // straight on: no corner yet
+  EXPECT_EQ(m.read(4007), 41.0);
+  const std::size_t before = m.motions().size();
+  ASSERT_EQ(m.block("X20."), 0);
+  // The start-up leaves now, perpendicular to the next move (type A).
+  ASSERT_EQ(m.motions().size(), before + 1);
+  EXPECT_EQ(m.motions().back().end[0], 0.0);
+  EXPECT_EQ(m.motions().back().end[1], 5.0);
+  EXPECT_EQ(m.read(5001), 20.0); // the programmed point
+  // Reading the tool position stops the look-ahead: X20. leaves on its
+  // perpendicular vector.
+  EXPECT_EQ(m.read(5042), 5.0);
+  EXPECT_EQ(m.read(5041), 20.0);
+  ASSERT_EQ(m.motions().size(), before + 2);
+}
+
+TEST(RuntimeCutterComp, NegativeOffsetSwapsTheSides) {
+  Machine m;
+  ASSERT_EQ(m.block("G10 L12 P2 R-3."), 0);
+  ASSERT_EQ(m.block("G90 G41 D2 G01 X10. F300."), 0);
+  ASSERT_EQ(m.read(5042), -3.0); // G41 with -3: right of the path
+}
+
+TEST(RuntimeCutterComp, D0CancelsLikeG40) {
+  Machine m;
+  ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+  ASSERT_EQ(m.block("G90 G41 D1 G01 X10. F300."), 0);
+  ASSERT_EQ(m.block("D0 X20."), 0); // type A cancel: perpendicular, then on
+  EXPECT_EQ(m.read(5041), 20.0);
+  EXPECT_EQ(m.read(5042), 0.0);
+  ASSERT_GE(m.motions().size(), 2U);
+  EXPECT_EQ(m.motions()[m.motions().size() - 2].end[1], 4.0);
+}
+
+TEST(RuntimeCutterComp, AlarmsOfTheControl) {
+  {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+    EXPECT_EQ(m.block("G31 X20."), status(AlarmId::SkipInCrc));
+  }
+  {
+    Machine m;
+    ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+    EXPECT_EQ(m.block("G19"), status(AlarmId::PlaneChangeInCrc));
+  }
+  {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+    EXPECT_EQ(m.block("G40 G02 X20. R5."),
+              status(AlarmId::NoCircleAtStartOrCancel));
+  }
+  {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    EXPECT_EQ(m.block("G39 X10."), status(AlarmId::ImproperGCode));
+    EXPECT_EQ(m.block("D1 G01 X1. F100."), 0);
+    EXPECT_EQ(m.block("G41 X10. D1000"), status(AlarmId::IllegalOffsetNumber));
+  }
+}
+
+TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
+  for (const char* block :
+       {"G28 X0", "G53 X0", "G81 X5. Z-1. R1.", "G52 X5.", "G92 X0",
+        "G68 X0 Y0 R30.", "G55", "G20", "G43 H1", "G10 L2 P1 X5.",
+        "G41 I1. J0 X30.", "G40 I1. J0 X30."}) {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+    EXPECT_EQ(m.block(block), status(AlarmId::Unsupported)) << block;
+  }
+  Machine m; // a work offset written by a macro
+  ASSERT_EQ(m.block("G42 D1 G01 X10. F300."), 0);
+  EXPECT_EQ(m.write(5221, 1.0), status(AlarmId::Unsupported));
+}
+
+TEST(PlaneGeometry, LinesAndCirclesMeet) {
+  PlaneCurve horizontal;
+  horizontal.point = {0.0, 5.0};
+  horizontal.direction = {1.0, 0.0};
+  PlaneCurve vertical;
+  vertical.point = {3.0, 0.0};
+  vertical.direction = {0.0, 1.0};
+  const auto corner = rt::intersections(horizontal, vertical);
+  ASSERT_EQ(corner.size(), 1U);
+  EXPECT_DOUBLE_EQ(corner[0].x, 3.0);
+  EXPECT_DOUBLE_EQ(corner[0].y, 5.0);
+  EXPECT_TRUE(rt::intersections(horizontal, horizontal).empty());
+
+  PlaneCurve circle;
+  circle.circle = true;
+  circle.center = {0.0, 0.0};
+  circle.radius = 13.0;
+  const auto chord = rt::intersections(horizontal, circle);
+  ASSERT_EQ(chord.size(), 2U); // 5-12-13
+  EXPECT_DOUBLE_EQ(chord[0].x, -12.0);
+  EXPECT_DOUBLE_EQ(chord[1].x, 12.0);
+  circle.radius = 4.0;
+  EXPECT_TRUE(rt::intersections(horizontal, circle).empty());
+
+  PlaneCurve other = circle;
+  other.center = {6.0, 0.0};
+  other.radius = 5.0; // circles of 4 and 5, 6 apart
+  const auto both = rt::intersections(circle, other);
+  ASSERT_EQ(both.size(), 2U);
+  EXPECT_NEAR(both[0].x, 9.0 / 4.0, 1e-12); // (36 + 16 - 25) / 12
+  EXPECT_NEAR(both[0].y, -both[1].y, 1e-12);
+}
+
+} // namespace mbc::test
