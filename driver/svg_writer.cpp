@@ -125,9 +125,58 @@ void SvgWriter::moveTo(bool rapid, double x, double y) {
 }
 
 std::size_t SvgWriter::add(const mbrt_motion& m) {
-  const std::size_t before = rapids_.size() + feeds_.size();
+  const std::size_t before =
+      rapids_.size() + feeds_.size() + programmed_.size();
   draw(m);
-  return rapids_.size() + feeds_.size() - before;
+  return rapids_.size() + feeds_.size() + programmed_.size() - before;
+}
+
+void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
+  const double px = m.programmed[x];
+  const double py = m.programmed[y];
+  if (!programmedPen_.open) {
+    programmed_ +=
+        fmt::format("M{} {}", number(m.start[x]), number(-m.start[y]));
+    lowX_ = highX_ = m.start[x];
+    lowY_ = highY_ = m.start[y];
+  }
+  compensated_ = compensated_ || px != m.end[x] || py != m.end[y];
+  lowX_ = std::min(lowX_, px);
+  highX_ = std::max(highX_, px);
+  lowY_ = std::min(lowY_, py);
+  highY_ = std::max(highY_, py);
+  const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
+  const Arc toolArc = arc ? arcOf(m) : Arc{};
+  const bool flat = arc && toolArc.p == x && toolArc.q == y;
+  const bool full = flat && std::fabs(toolArc.sweep) >= 2.0 * std::numbers::pi;
+  const bool moves = programmedPen_.x != px || programmedPen_.y != py;
+  if (flat && (moves || full)) {
+    // The programmed arc has the tool arc's centre and turn.
+    const double radius = std::hypot(px - m.center[0], py - m.center[1]);
+    const double begin = std::atan2(programmedPen_.y - m.center[1],
+                                    programmedPen_.x - m.center[0]);
+    const double end = std::atan2(py - m.center[1], px - m.center[0]);
+    constexpr double kTurn = 2.0 * std::numbers::pi;
+    const double sweep = std::fmod(
+        (toolArc.sweep > 0 ? end - begin : begin - end) + 2.0 * kTurn, kTurn);
+    const int sweepFlag = toolArc.sweep > 0 ? 0 : 1;
+    const std::string r = number(radius);
+    if (full) {
+      programmed_ += fmt::format("A{} {} 0 0 {} {} {}", r, r, sweepFlag,
+                                 number(2.0 * m.center[0] - px),
+                                 number(-(2.0 * m.center[1] - py)));
+    }
+    programmed_ +=
+        fmt::format("A{} {} 0 {} {} {} {}", r, r,
+                    static_cast<int>(!full && sweep > std::numbers::pi),
+                    sweepFlag, number(px), number(-py));
+  } else if (moves) {
+    // Rapids are no part of the contour: the pen lifts.
+    programmed_ +=
+        fmt::format("{}{} {}", m.kind == MBRT_MOTION_RAPID ? 'M' : 'L',
+                    number(px), number(-py));
+  }
+  programmedPen_ = {true, px, py};
 }
 
 void SvgWriter::draw(const mbrt_motion& m) {
@@ -137,6 +186,7 @@ void SvgWriter::draw(const mbrt_motion& m) {
     return;
   }
   unit_ = m.decimals == 4 ? "inch" : "mm";
+  drawProgrammed(m, x, y);
   const bool rapid = m.kind == MBRT_MOTION_RAPID;
   std::string& path = rapid ? rapids_ : feeds_;
   moveTo(rapid, m.start[x], m.start[y]);
@@ -177,16 +227,21 @@ void SvgWriter::draw(const mbrt_motion& m) {
 }
 
 std::string SvgWriter::document() const {
-  const double width = maxX_ - minX_;
-  const double height = maxY_ - minY_;
+  // Under a pocket's tool path lies its outline: the box takes it too.
+  const double minX = compensated_ ? std::min(minX_, lowX_) : minX_;
+  const double maxX = compensated_ ? std::max(maxX_, highX_) : maxX_;
+  const double minY = compensated_ ? std::min(minY_, lowY_) : minY_;
+  const double maxY = compensated_ ? std::max(maxY_, highY_) : maxY_;
+  const double width = maxX - minX;
+  const double height = maxY - minY;
   const double size = std::max({width, height, 1.0});
   const double margin = size * 0.05;
   const double font = size * 0.025;
   const double bar = niceLength(size / 4.0);
   // The scale sits under the drawing: in SVG coordinates below -minY.
-  const double barY = -minY_ + margin + font;
-  const double left = minX_ - margin;
-  const double top = -maxY_ - margin;
+  const double barY = -minY + margin + font;
+  const double left = minX - margin;
+  const double top = -maxY - margin;
   const double viewWidth = width + 2.0 * margin;
   const double viewHeight = height + 3.0 * margin + 2.0 * font;
   std::string svg = fmt::format(
@@ -203,17 +258,24 @@ std::string SvgWriter::document() const {
   svg += fmt::format("<path class=\"rapid\" {} stroke=\"#888\" "
                      "stroke-dasharray=\"{} {}\" d=\"{}\"/>\n",
                      stroke, number(6.0 * pixel), number(4.0 * pixel), rapids_);
+  if (compensated_) {
+    // The programmed contour, thin, under the tool centre's path.
+    svg += fmt::format("<path class=\"programmed\" fill=\"none\" "
+                       "stroke-width=\"{}\" stroke=\"#d2691e\" "
+                       "stroke-dasharray=\"{} {}\" d=\"{}\"/>\n",
+                       number(0.8 * pixel), number(2.0 * pixel),
+                       number(2.0 * pixel), programmed_);
+  }
   svg += fmt::format("<path class=\"feed\" {} stroke=\"#0057b8\" d=\"{}\"/>\n",
                      stroke, feeds_);
   svg += fmt::format("<path class=\"scale\" {} stroke=\"#000\" "
                      "d=\"M{} {}v{}h{}v{}\"/>\n",
-                     stroke, number(minX_), number(barY - font * 0.3),
+                     stroke, number(minX), number(barY - font * 0.3),
                      number(font * 0.3), number(bar), number(-font * 0.3));
-  svg +=
-      fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" "
-                  "font-family=\"sans-serif\">{} {}</text>\n",
-                  number(minX_ + bar + font * 0.5), number(barY + font * 0.3),
-                  number(font), number(bar), unit_);
+  svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" "
+                     "font-family=\"sans-serif\">{} {}</text>\n",
+                     number(minX + bar + font * 0.5), number(barY + font * 0.3),
+                     number(font), number(bar), unit_);
   svg += "</svg>\n";
   return svg;
 }

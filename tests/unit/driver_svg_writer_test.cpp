@@ -18,6 +18,8 @@ mbrt_motion move(int kind, double x0, double y0, double x1, double y1) {
   m.start[1] = y0;
   m.end[0] = x1;
   m.end[1] = y1;
+  m.programmed[0] = x1;
+  m.programmed[1] = y1;
   m.plane = 17;
   m.center_axes[0] = 'X';
   m.center_axes[1] = 'Y';
@@ -71,6 +73,26 @@ TEST(SvgWriter, ArcsInOtherPlanesAreLinesThroughTheirPoints) {
   const std::string svg = drawing({arc});
   EXPECT_NE(svg.find("L5 0\""), std::string::npos) << svg;
   EXPECT_EQ(svg.find(" A"), std::string::npos);
+}
+
+// Under cutter compensation the programmed contour is drawn beside the
+// tool centre: a boss corner R5 with the tool 2 outside it.
+TEST(SvgWriter, TheProgrammedContourBesideTheToolCentre) {
+  mbrt_motion line = move(MBRT_MOTION_LINEAR, 0, 12, 10, 12);
+  line.programmed[1] = 10; // the tool runs 2 above the programmed Y10
+  mbrt_motion corner = move(MBRT_MOTION_CW, 10, 12, 17, 5);
+  corner.center[0] = 10;
+  corner.center[1] = 5;
+  corner.programmed[0] = 15; // the programmed arc: radius 5
+  corner.programmed[1] = 5;
+  const std::string svg = drawing({line, corner});
+  EXPECT_NE(svg.find("class=\"programmed\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("d=\"M0 -12L10 -10A5 5 0 0 1 15 -5\""), std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("A7 7 0 0 1 17 -5"), std::string::npos) << svg;
+  // Without compensation there is no such path.
+  EXPECT_EQ(drawing({move(MBRT_MOTION_LINEAR, 0, 0, 5, 0)}).find("programmed"),
+            std::string::npos);
 }
 
 } // namespace

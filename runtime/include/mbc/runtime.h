@@ -70,6 +70,9 @@ typedef struct mbrt_motion {
   int cycle;           /* the canned cycle making the move (81 for G81), 0 */
   double machine[MBRT_MAX_AXES]; /* end point in machine coordinates */
   double start[MBRT_MAX_AXES];   /* where the move began, like `end` */
+  /* The block's end point as the program commands it, like `end`: under
+   * cutter compensation `end` is the tool centre, beside it. */
+  double programmed[MBRT_MAX_AXES];
 } mbrt_motion;
 
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);

@@ -140,6 +140,9 @@ struct MoveOrigin {
   int feedMode = 94;  // G93 G94 G95
   double spindle = 0; // S, for G95
   int cycle = 0;      // the canned cycle a move belongs to
+  // The block's programmed end point (workpiece frame) when the move's end
+  // is elsewhere: cutter compensation's tool centre.
+  const AxisCounts* programmed = nullptr;
 };
 
 /// A programmed move as cutter compensation holds it (cutter_comp.h), in

@@ -262,6 +262,7 @@ mbrt_status raiseAt(mbrt_ctx& ctx, const HeldMove& move, AlarmId id,
 MoveOrigin originOf(const HeldMove& move) {
   MoveOrigin origin = move.origin;
   origin.program = move.program.c_str();
+  origin.programmed = &move.end;
   return origin;
 }
 
@@ -561,7 +562,9 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
     tool[axis] = target[axis];
   }
   if (tool != toolPosition(ctx)) {
-    moveWorkArc(ctx, tool, corner, arc.side > 0, blockOrigin(ctx));
+    MoveOrigin origin = blockOrigin(ctx);
+    origin.programmed = &here;
+    moveWorkArc(ctx, tool, corner, arc.side > 0, origin);
   }
   return 0;
 }

@@ -154,6 +154,10 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
     motion.machine[axis] =
         countsToUnits(ctx.shown(axis, machine[axis]), axisScale);
     motion.start[axis] = countsToUnits(ctx.shown(axis, start[axis]), axisScale);
+    const Counts programmed =
+        origin.programmed != nullptr ? (*origin.programmed)[axis] : work[axis];
+    motion.programmed[axis] =
+        countsToUnits(ctx.shown(axis, programmed), axisScale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : origin.feed;
   motion.plane = ctx.modal.plane;
