@@ -115,7 +115,15 @@ TEST(PlaneGeometry, LinesAndCirclesMeet) {
   EXPECT_DOUBLE_EQ(chord[1].x, 12.0);
   circle.radius = 4.0;
   EXPECT_TRUE(rt::intersections(horizontal, circle).empty());
+  // Points are in counts: a tangent join that rounding makes miss by a
+  // fraction of a count touches at the foot of the perpendicular.
+  circle.radius = 4.8;
+  const auto touch = rt::intersections(horizontal, circle);
+  ASSERT_EQ(touch.size(), 1U);
+  EXPECT_DOUBLE_EQ(touch[0].x, 0.0);
+  EXPECT_DOUBLE_EQ(touch[0].y, 5.0);
 
+  circle.radius = 4.0;
   PlaneCurve other = circle;
   other.center = {6.0, 0.0};
   other.radius = 5.0; // circles of 4 and 5, 6 apart

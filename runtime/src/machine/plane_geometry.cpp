@@ -19,6 +19,9 @@ namespace {
 
 /// Directions closer than this (as the sine of their angle) are parallel.
 constexpr double kParallel = 1e-12;
+/// Curves that miss each other by less than half a count touch: tangent
+/// joins, exact in the program, miss by rounding in double.
+constexpr double kTouch = 0.5;
 
 std::vector<PlanePoint> lineLine(const PlaneCurve& a, const PlaneCurve& b) {
   const double det = cross(a.direction, b.direction);
@@ -36,11 +39,11 @@ std::vector<PlanePoint> lineCircle(const PlaneCurve& line,
   const PlanePoint foot =
       line.point + dot(toCenter, line.direction) * line.direction;
   const double distance = length(circle.center - foot);
-  if (distance > circle.radius) {
+  if (distance > circle.radius + kTouch) {
     return {};
   }
-  const double half =
-      std::sqrt(circle.radius * circle.radius - distance * distance);
+  const double half = std::sqrt(
+      std::max(0.0, circle.radius * circle.radius - distance * distance));
   if (half == 0.0) {
     return {foot};
   }
@@ -50,8 +53,8 @@ std::vector<PlanePoint> lineCircle(const PlaneCurve& line,
 std::vector<PlanePoint> circleCircle(const PlaneCurve& a, const PlaneCurve& b) {
   const PlanePoint between = b.center - a.center;
   const double d = length(between);
-  if (d == 0.0 || d > a.radius + b.radius ||
-      d < std::fabs(a.radius - b.radius)) {
+  if (d == 0.0 || d > a.radius + b.radius + kTouch ||
+      d < std::fabs(a.radius - b.radius) - kTouch) {
     return {};
   }
   const double along =
