@@ -92,6 +92,16 @@ TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
   EXPECT_EQ(m.write(5221, 1.0), status(AlarmId::Unsupported));
 }
 
+TEST(RuntimeCutterComp, ParametersItDoesNotModelStopTheRun) {
+  for (const char* parameters :
+       {R"({"parameters": {"5003": 2}})", R"({"parameters": {"19607": 4}})"}) {
+    Machine m(parameters);
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    EXPECT_EQ(m.block("G41 D1 G01 X10. F300."), status(AlarmId::Unsupported))
+        << parameters;
+  }
+}
+
 TEST(PlaneGeometry, LinesAndCirclesMeet) {
   PlaneCurve horizontal;
   horizontal.point = {0.0, 5.0};

@@ -456,6 +456,16 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
                     move.offset / ctx.scale()));
   }
   if (!state.engaged) {
+    // Parameters that would change the path mbc draws: stop, never guess.
+    if (ctx.profile.parameterBit(5003, 1) ||
+        ctx.profile.parameterBit(19607, 2)) {
+      return raise(ctx, AlarmId::Unsupported,
+                   ctx.profile.parameterBit(5003, 1)
+                       ? "cutter compensation with 5003#1 SUV (the vector of "
+                         "a start-up or cancel without motion)"
+                       : "cutter compensation with 19607#2 CCC (circular "
+                         "connection of outer corners)");
+    }
     move.startUp = true;
     state.engaged = true;
     state.held.push_back(std::move(move));

@@ -32,7 +32,7 @@ constexpr std::array kParameters = {
     ParameterSpec{3403, 3403, 0, 255, 0, true},           // #5 CIR
     ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
     ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
-    ParameterSpec{5003, 5003, 0, 255, 0, true},     // #0 SUP: start-up type B
+    ParameterSpec{5003, 5003, 0, 255, 0, true},     // #0 SUP, #1 SUV: CRC start
     ParameterSpec{5008, 5008, 0, 255, 0, true},     // #1 CNC, #3 CNV: CRC check
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift
     ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // G73 retract, G83 gap
@@ -46,8 +46,8 @@ constexpr std::array kParameters = {
     ParameterSpec{6001, 6001, 0, 255, 0, true},          // #1 PRT, #5 TCS
     ParameterSpec{6004, 6004, 0, 255, 0, true},          // #0 NAT
     ParameterSpec{6007, 6007, 0, 255, 0, true},          // #4 BCS, #5 SCS
-    ParameterSpec{19607, 19607, 0, 255, 0, true},        // #5 CAV: avoidance
-    ParameterSpec{19625, 19625, 0, 8, 3, true}, // CRC look-ahead blocks
+    ParameterSpec{19607, 19607, 0, 255, 0, true}, // #2 CCC, #5 CAV: CRC corners
+    ParameterSpec{19625, 19625, 0, 8, 3, true},   // CRC look-ahead blocks
     // G codes calling O9010..O9019; negative: a modal (G66-like) call.
     codeTableSpec(kCustomGCodes, -9999, 9999),
     codeTableSpec(kSubprogramMCodes, 0, kMaxCode),
