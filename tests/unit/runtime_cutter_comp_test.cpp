@@ -31,6 +31,22 @@ TEST(RuntimeCutterComp, TheMoveWaitsForTheNextOne) {
   ASSERT_EQ(m.motions().size(), before + 2);
 }
 
+// FANUC: G41/G42 given again in offset mode makes the vector at the end
+// of the move before perpendicular to it, instead of the intersection.
+TEST(RuntimeCutterComp, G41AgainEndsTheMoveBeforePerpendicular) {
+  for (const char* again : {"G41 Y20.", "G41"}) {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+    ASSERT_EQ(m.block("G90 G01 X-10. Y0 F500."), 0);
+    ASSERT_EQ(m.block("G41 D1 X0"), 0);
+    ASSERT_EQ(m.block("X20."), 0); // held: an inner corner follows
+    ASSERT_EQ(m.block(again), 0);
+    ASSERT_FALSE(m.motions().empty());
+    EXPECT_EQ(m.motions().back().end[0], 20.0) << again; // not 15
+    EXPECT_EQ(m.motions().back().end[1], 5.0) << again;
+  }
+}
+
 TEST(RuntimeCutterComp, NegativeOffsetSwapsTheSides) {
   Machine m;
   ASSERT_EQ(m.block("G10 L12 P2 R-3."), 0);

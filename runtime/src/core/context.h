@@ -171,6 +171,7 @@ struct CompensationState {
   std::vector<HeldMove> held;   // held.front() moves in the plane
   int stillBlocks = 0;          // blocks without plane motion since it
   std::uint64_t planeMoves = 0; // moves in the plane read so far
+  bool codeInBlock = false;     // the block has G40, G41 or G42
 };
 
 /// What the summary tells about the toolpath (mbrt_stats), in mm.

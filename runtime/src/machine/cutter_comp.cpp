@@ -276,6 +276,13 @@ void moveStill(mbrt_ctx& ctx, const HeldMove& move) {
   }
 }
 
+/// The tool centre at the end of a move on a vector perpendicular to it.
+PlanePoint perpendicularEnd(const mbrt_ctx& ctx, const HeldMove& move) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint end = pointOf(move.end, plane);
+  return end + vectorAt(move, tangentAt(move, plane, end));
+}
+
 /// A move as programmed, without offset.
 void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
   if (move.arc) {
@@ -474,9 +481,16 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   }
   if (!state.held.empty()) {
     const HeldMove& held = state.held.front();
-    const Corner corner = held.side != move.side && !held.startUp
-                              ? sideChange(ctx, held, move)
-                              : cornerBetween(ctx, held, move, false);
+    Corner corner;
+    if (held.side != move.side && !held.startUp) {
+      corner = sideChange(ctx, held, move);
+    } else if (state.codeInBlock && !held.startUp) {
+      // G41/G42 given again: the vector at the end of the move before is
+      // perpendicular to it, inner corner or outer.
+      corner.points = {perpendicularEnd(ctx, held)};
+    } else {
+      corner = cornerBetween(ctx, held, move, false);
+    }
     if (corner.noSolution) {
       const HeldMove failed = held;
       state.held.clear();
@@ -497,11 +511,7 @@ mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
   if (state.held.empty()) {
     return 0;
   }
-  const HeldMove& move = state.held.front();
-  const PlaneIndex plane = planeIndex(ctx);
-  const PlanePoint end = pointOf(move.end, plane);
-  const PlanePoint point = end + vectorAt(move, tangentAt(move, plane, end));
-  return leave(ctx, {point}, check);
+  return leave(ctx, {perpendicularEnd(ctx, state.held.front())}, check);
 }
 
 mbrt_status stopLookAhead(mbrt_ctx& ctx) {
@@ -517,9 +527,10 @@ mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore) {
   if (state.planeMoves != planeMovesBefore || !state.engaged) {
     return 0;
   }
-  if (!offsetOn(ctx)) {
-    return releaseHeldMoves(ctx); // G40 alone: the vector goes with the next
-                                  // move in the plane
+  // G40 alone: the vector goes with the next move in the plane. G41/G42
+  // alone: the vector at the end of the move before is perpendicular.
+  if (!offsetOn(ctx) || state.codeInBlock) {
+    return releaseHeldMoves(ctx);
   }
   if (!state.held.empty() && ++state.stillBlocks > stillBlocksAllowed(ctx)) {
     return releaseHeldMoves(ctx);

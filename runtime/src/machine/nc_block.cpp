@@ -77,9 +77,8 @@ struct Block {
   // G04 (40), G28 (280), G29, G30, G31, G39 (390), G53 (530) and the
   // look-ahead switches G05, G05.1, G05.4, G08.
   int nonModal = 0;
-  bool compensationCode = false; // G40, G41 or G42 in the block
-  bool selectsG541 = false;      // #4130 becomes its P
-  double dwellSeconds = 0.0;     // G04 X
+  bool selectsG541 = false;  // #4130 becomes its P
+  double dwellSeconds = 0.0; // G04 X
   BlockCodes codes;
   FrameWords frames;
 };
@@ -274,7 +273,7 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 410:
     case 420:
       next.compensation = tenths / 10;
-      block.compensationCode = true;
+      ctx.compensation.codeInBlock = true;
       return 0;
     // The one state mbc keeps these groups in (#4001.. reads them).
     case 670: // G67
@@ -612,7 +611,7 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
     return refuseUnderCompensation(
         ctx, fmt::format("canned cycle G{}", ctx.modal.cycle));
   }
-  if (block.compensationCode && block.motion.centerMask != 0 &&
+  if (ctx.compensation.codeInBlock && block.motion.centerMask != 0 &&
       ctx.modal.motion <= 1) {
     return refuseUnderCompensation(
         ctx, fmt::format("G{} with I, J or K (a vector direction)",
@@ -735,6 +734,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   Block block;
   scanWords(words, count, block);
   ctx.feedInBlock = false;
+  ctx.compensation.codeInBlock = false;
   ctx.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
   block.frames.words = words;
