@@ -95,7 +95,7 @@ TEST(RuntimeCutterComp, AlarmsOfTheControl) {
 
 TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
   for (const char* block :
-       {"G28 X0", "G53 X0", "G81 X5. Z-1. R1.", "G52 X5.", "G92 X0",
+       {"G91 G28 Z0", "G53 X0", "G81 X5. Z-1. R1.", "G52 X5.", "G92 X0",
         "G68 X0 Y0 R30.", "G55", "G20", "G43 H1", "G10 L2 P1 X5.",
         "G41 I1. J0 X30.", "G40 I1. J0 X30."}) {
     Machine m;

@@ -506,6 +506,23 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   return 0;
 }
 
+mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
+  const PlaneIndex plane = planeIndex(ctx);
+  move.origin = blockOrigin(ctx);
+  move.program = move.origin.program;
+  const PlanePoint start = pointOf(move.start, plane);
+  const PlanePoint end = pointOf(move.end, plane);
+  if (start.x != end.x || start.y != end.y) {
+    ++ctx.compensation.planeMoves;
+    return cancel(ctx, move);
+  }
+  // Where the vector goes on a reference return of other axes alone (the
+  // manuals show the plane's axes) is not modelled.
+  return raise(ctx, AlarmId::Unsupported,
+               "a reference return without the plane's axes in cutter "
+               "compensation mode (G41/G42); give it after G40");
+}
+
 mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
   CompensationState& state = ctx.compensation;
   if (state.held.empty()) {

@@ -26,6 +26,11 @@ inline bool compensating(const mbrt_ctx& ctx) {
 /// the cancel move, or a move without motion in the plane.
 mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move);
 
+/// The tool leaves the offset on `move` (G28/G30 to the intermediate
+/// point) as a cancel move does; MBC0001 when it does not move in the
+/// plane.
+mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move);
+
 /// After every NC block under compensation: a block without motion in the
 /// plane counts against the look-ahead, and G40 or D0 in such a block ends
 /// the held move with a perpendicular vector.

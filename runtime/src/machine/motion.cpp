@@ -245,6 +245,27 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
 
 mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid);
 
+/// A straight move from the program position to `target` as cutter
+/// compensation takes it; the program position is then `target`.
+HeldMove straightTo(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
+  HeldMove move;
+  move.rapid = rapid;
+  move.start = programToWork(ctx, ctx.program);
+  move.end = programToWork(ctx, target);
+  ctx.program = target;
+  return move;
+}
+
+/// G28, G29 and G30 under cutter compensation: the tool leaves the offset
+/// on its way to the intermediate point `target` (program coordinates), as
+/// a cancel move does; the next move in the plane starts it again.
+mbrt_status leaveOffsetAt(mbrt_ctx& ctx, const AxisCounts& target) {
+  if (!ctx.compensation.engaged) {
+    return 0;
+  }
+  return cancelCompensation(ctx, straightTo(ctx, target, true));
+}
+
 Point planePoint(const AxisValues& point, int p, int q) {
   return {point[p], point[q]};
 }
@@ -505,6 +526,9 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
   }
   ctx.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
+  if (const mbrt_status status = leaveOffsetAt(ctx, intermediate)) {
+    return status;
+  }
   if (workToMachine(ctx, work) != ctx.machine) {
     if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
       return status;
@@ -529,13 +553,17 @@ mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words) {
       through[axis] = ctx.intermediate[axis];
     }
   }
+  if (const mbrt_status status = leaveOffsetAt(ctx, through)) {
+    return status;
+  }
   if (through != ctx.program) {
     if (const mbrt_status status = moveStraight(ctx, through, true)) {
       return status;
     }
   }
-  // In G91 the words count from the intermediate point.
-  return moveStraight(ctx, workTarget(ctx, words, ctx.program), true);
+  // In G91 the words count from the intermediate point. Under cutter
+  // compensation this move starts it again.
+  return moveLine(ctx, workTarget(ctx, words, ctx.program), true);
 }
 
 namespace {
@@ -610,12 +638,7 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
       return status;
     }
   }
-  HeldMove move;
-  move.rapid = rapid;
-  move.start = programToWork(ctx, ctx.program);
-  move.end = programToWork(ctx, target);
-  ctx.program = target;
-  return compensateMove(ctx, std::move(move));
+  return compensateMove(ctx, straightTo(ctx, target, rapid));
 }
 
 } // namespace

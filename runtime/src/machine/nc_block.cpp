@@ -603,8 +603,7 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
     return raise(ctx, AlarmId::SkipInCrc,
                  "G31 skip in cutter compensation mode (G41/G42)");
   }
-  if (block.nonModal == 280 || block.nonModal == 290 || block.nonModal == 300 ||
-      block.nonModal == 530) {
+  if (block.nonModal == 530) {
     return refuseUnderCompensation(ctx, gCodeText(block.nonModal));
   }
   if (ctx.modal.cycle != 0) {
