@@ -47,6 +47,33 @@ TEST(RuntimeCutterComp, G41AgainEndsTheMoveBeforePerpendicular) {
   }
 }
 
+// G40 X Y I J: the held move ends where its offset path meets the offset
+// of a virtual path along I J from its end, inner corner or outer.
+TEST(RuntimeCutterComp, G40WithIJMeetsTheVirtualPath) {
+  const struct {
+    const char* cancel;
+    double x;
+  } cases[] = {{"G40 X40. Y-10. I0 J1.", 25.0},  // inner: x = 30 - 5
+               {"G40 X40. Y-10. I0 J-1.", 35.0}, // outer: x = 30 + 5
+               {"G40 X40. Y-10. I1. J0", 30.0}}; // parallel: perpendicular
+
+  for (const auto& c : cases) {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+    ASSERT_EQ(m.block("G90 G01 X-10. Y0 F500."), 0);
+    ASSERT_EQ(m.block("G41 D1 X0"), 0);
+    ASSERT_EQ(m.block("X30."), 0);
+    ASSERT_EQ(m.block(c.cancel), 0) << c.cancel;
+    const auto& moves = m.motions();
+    ASSERT_GE(moves.size(), 2U);
+    EXPECT_EQ(moves[moves.size() - 2].end[0], c.x) << c.cancel;
+    EXPECT_EQ(moves[moves.size() - 2].end[1], 5.0) << c.cancel;
+    EXPECT_EQ(moves.back().end[0], 40.0);
+    EXPECT_EQ(moves.back().end[1], -10.0);
+    EXPECT_EQ(m.read(4007), 40.0);
+  }
+}
+
 TEST(RuntimeCutterComp, NegativeOffsetSwapsTheSides) {
   Machine m;
   ASSERT_EQ(m.block("G10 L12 P2 R-3."), 0);
@@ -94,10 +121,9 @@ TEST(RuntimeCutterComp, AlarmsOfTheControl) {
 }
 
 TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
-  for (const char* block :
-       {"G91 G28 Z0", "G53 X0", "G81 X5. Z-1. R1.", "G52 X5.", "G92 X0",
-        "G68 X0 Y0 R30.", "G55", "G20", "G43 H1", "G10 L2 P1 X5.",
-        "G41 I1. J0 X30.", "G40 I1. J0 X30."}) {
+  for (const char* block : {"G91 G28 Z0", "G53 X0", "G81 X5. Z-1. R1.",
+                            "G52 X5.", "G92 X0", "G68 X0 Y0 R30.", "G55", "G20",
+                            "G43 H1", "G10 L2 P1 X5.", "G41 I1. J0 X30."}) {
     Machine m;
     ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
     ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);

@@ -384,6 +384,21 @@ int stillBlocksAllowed(const mbrt_ctx& ctx) {
   return (blocks >= 3.0 && blocks <= 8.0 ? static_cast<int>(blocks) : 3) - 2;
 }
 
+/// G40 with I J K: the held move ends where its offset path meets that of
+/// a virtual path from its end along I J, inner corner or outer, or on its
+/// perpendicular vector where they do not meet.
+PlanePoint towardDirection(const mbrt_ctx& ctx, const HeldMove& held,
+                           const HeldMove& cancel) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint corner = pointOf(held.end, plane);
+  PlaneCurve path;
+  path.direction = unit({cancel.direction[0], cancel.direction[1]});
+  path.point = corner + vectorAt(held, path.direction);
+  const std::optional<PlanePoint> meet =
+      nearestIntersection(offsetCurve(held, plane), path, corner);
+  return meet ? *meet : perpendicularEnd(ctx, held);
+}
+
 /// The cancel move: from where the tool is straight to the programmed end.
 mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
   CompensationState& state = ctx.compensation;
@@ -392,7 +407,12 @@ mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
                  "the move that cancels cutter compensation must be G00 or "
                  "G01");
   }
-  if (!state.held.empty()) {
+  if (!state.held.empty() && move.hasDirection) {
+    if (const mbrt_status status =
+            leave(ctx, {towardDirection(ctx, state.held.front(), move)})) {
+      return status;
+    }
+  } else if (!state.held.empty()) {
     const Corner corner = cornerBetween(ctx, state.held.front(), move, true);
     if (corner.noSolution) {
       state.held.clear();

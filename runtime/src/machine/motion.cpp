@@ -243,7 +243,8 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
   }
 }
 
-mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid);
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                     const MotionWords* words = nullptr);
 
 /// A straight move from the program position to `target` as cutter
 /// compensation takes it; the program position is then `target`.
@@ -628,8 +629,32 @@ void dwell(mbrt_ctx& ctx, double seconds) {
 
 namespace {
 
+/// G40 X Y I J: the direction I J (K) gives, in the workpiece frame.
+void cancelDirection(const mbrt_ctx& ctx, const MotionWords& words,
+                     HeldMove& move) {
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  AxisValues from{};
+  AxisValues to{};
+  for (int i = 0; i < 2; ++i) {
+    const int axis = ctx.axisOf(plane.letters[i]);
+    if (axis >= 0) {
+      to[axis] = static_cast<double>(words.center[plane.centerIndex[i]]);
+    }
+  }
+  from = transformPoint(ctx, from);
+  to = transformPoint(ctx, to);
+  const int p = ctx.axisOf(plane.letters[0]);
+  const int q = ctx.axisOf(plane.letters[1]);
+  if (p >= 0 && q >= 0) {
+    move.hasDirection = true;
+    move.direction[0] = to[p] - from[p];
+    move.direction[1] = to[q] - from[q];
+  }
+}
+
 /// A G00 or G01 move of the program, which cutter compensation may hold.
-mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                     const MotionWords* words) {
   if (!compensating(ctx)) {
     return moveStraight(ctx, target, rapid);
   }
@@ -638,7 +663,12 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
       return status;
     }
   }
-  return compensateMove(ctx, straightTo(ctx, target, rapid));
+  HeldMove move = straightTo(ctx, target, rapid);
+  if (words != nullptr && words->centerMask != 0 &&
+      ctx.compensation.codeInBlock && ctx.modal.compensation == 40) {
+    cancelDirection(ctx, *words, move);
+  }
+  return compensateMove(ctx, std::move(move));
 }
 
 } // namespace
@@ -648,7 +678,7 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const AxisCounts start = ctx.program;
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1) {
-    return moveLine(ctx, target, mode == 0);
+    return moveLine(ctx, target, mode == 0, &words);
   }
   if (const mbrt_status status = checkFeed(ctx, 0)) {
     return status;
