@@ -55,7 +55,7 @@ struct CallRecord {
   int programNumber = 0;
   int kind = MBRT_CALL_SUB;   // mbrt_call_kind
   int modalId = 0;            // MBRT_CALL_MODAL: the G66 that called
-  const char *file = nullptr; // the calling block
+  const char* file = nullptr; // the calling block
   int line = 0;
 };
 
@@ -133,16 +133,16 @@ struct Frames {
 /// Where a move was programmed and how fast it goes: the block's data, kept
 /// with a move that cutter compensation holds while later blocks run.
 struct MoveOrigin {
-  const char *file = nullptr;
+  const char* file = nullptr;
   int line = 0;
-  const char *program = "";
+  const char* program = "";
   double feed = 0.0;  // modal F
   int feedMode = 94;  // G93 G94 G95
   double spindle = 0; // S, for G95
   int cycle = 0;      // the canned cycle a move belongs to
   // The block's programmed end point (workpiece frame) when the move's end
   // is elsewhere: cutter compensation's tool centre.
-  const AxisCounts *programmed = nullptr;
+  const AxisCounts* programmed = nullptr;
 };
 
 /// A programmed move as cutter compensation holds it (cutter_comp.h), in
@@ -169,11 +169,12 @@ struct HeldMove {
 /// Cutter compensation C: the move whose end vector waits for the next move
 /// in the plane, and the moves without plane motion read after it.
 struct CompensationState {
-  bool engaged = false;         // the tool is offset from the programmed path
-  std::vector<HeldMove> held;   // held.front() moves in the plane
-  int stillBlocks = 0;          // blocks without plane motion since it
-  std::uint64_t planeMoves = 0; // moves in the plane read so far
-  bool codeInBlock = false;     // the block has G40, G41 or G42
+  bool engaged = false;          // the tool is offset from the programmed path
+  std::vector<HeldMove> held;    // held.front() moves in the plane
+  std::vector<HeldMove> leaving; // the moves leaving now (cutter_comp.cpp)
+  int stillBlocks = 0;           // blocks without plane motion since it
+  std::uint64_t planeMoves = 0;  // moves in the plane read so far
+  bool codeInBlock = false;      // the block has G40, G41 or G42
 };
 
 /// What the summary tells about the toolpath (mbrt_stats), in mm.
@@ -209,7 +210,7 @@ struct BlockCall {
 struct OutputBudget {
   std::uint64_t written = 0;
   std::uint64_t limit = kDefaultMaxOutput;
-  const char *file = nullptr; // the block that passed the limit
+  const char* file = nullptr; // the block that passed the limit
   int line = 0;
 
   bool passed() const { return written > limit; }
@@ -217,7 +218,7 @@ struct OutputBudget {
 
 template <class Fn> struct Sink {
   Fn fn = nullptr;
-  void *user = nullptr;
+  void* user = nullptr;
 };
 
 } // namespace mbc::rt
@@ -360,9 +361,9 @@ struct mbrt_ctx {
   /// Counts per mm, for parameters given in mm whatever the input unit.
   double countsPerMm() const { return modal.inch ? 10000.0 / 25.4 : 1000.0; }
 
-  mbc::rt::LocalLevel &locals() { return levels.back(); }
+  mbc::rt::LocalLevel& locals() { return levels.back(); }
 
-  const char *programName() const {
+  const char* programName() const {
     return calls.empty() ? mainProgram.c_str() : calls.back().program.c_str();
   }
 
@@ -375,44 +376,44 @@ namespace mbc::rt {
 
 /// Records an alarm with the current block and call stack; the first alarm
 /// of a run is kept. Returns the id as an mbrt_status.
-mbrt_status raise(mbrt_ctx &ctx, AlarmId id, std::string_view detail = {},
+mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail = {},
                   int macroNumber = 0);
 
 /// "file:line: ", or "" without a file: how alarms, messages and trace
 /// lines name the block.
-std::string locationPrefix(const std::string &file, int line);
+std::string locationPrefix(const std::string& file, int line);
 
 /// Sends "file:line: message: text\n" to the message sink.
-void sendMessage(mbrt_ctx &ctx, std::string_view text);
+void sendMessage(mbrt_ctx& ctx, std::string_view text);
 
 /// Counts bytes written by the run against its output limit (--max-output).
-void countOutput(mbrt_ctx &ctx, std::uint64_t bytes);
+void countOutput(mbrt_ctx& ctx, std::uint64_t bytes);
 
 /// Sends text to one of the context's text sinks, if set, and counts it.
-void sendText(mbrt_ctx &ctx, const Sink<mbrt_text_fn> &sink,
+void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
               std::string_view text);
 
 /// Sets the block limit; atomic because mbrt_interrupt may store to it from
 /// a signal handler or another thread.
-inline void setBlockLimit(mbrt_ctx &ctx, std::uint64_t blocks) {
+inline void setBlockLimit(mbrt_ctx& ctx, std::uint64_t blocks) {
   std::atomic_ref(ctx.block.max_blocks)
       .store(blocks, std::memory_order_relaxed);
 }
 
 /// The alarm of a run whose output passed its limit, at the block that
 /// passed it.
-mbrt_status raiseOutputLimit(mbrt_ctx &ctx);
+mbrt_status raiseOutputLimit(mbrt_ctx& ctx);
 
 /// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
-int parseProgramNumber(const char *name);
+int parseProgramNumber(const char* name);
 
 /// Counts per unit of the address that sets local `local` (1-33) from a
 /// literal without decimal point: ADP gives the literal back with it.
-double argumentScale(const mbrt_ctx &ctx, int local);
+double argumentScale(const mbrt_ctx& ctx, int local);
 
 /// PS0074 for a program number the machine cannot have (more than four
 /// digits on a profile with program_number_digits 4).
-mbrt_status checkProgramNumber(mbrt_ctx &ctx, double number);
+mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number);
 
 /// Rounds `value` (input units) half away from zero to counts of the least
 /// increment. A decimal tie such as 2.0005 lands a few ulps off .5 after the
@@ -428,7 +429,7 @@ inline double roundToCounts(double value, double scale) {
 
 /// Least increments per unit of an address: 1000 or 10000 on axes, arc
 /// centres, Q and F, 10 for G codes (G54.1), 1 for the others.
-double addressCountsPerUnit(const mbrt_ctx &ctx, char letter);
+double addressCountsPerUnit(const mbrt_ctx& ctx, char letter);
 
 /// FANUC addresses take at most nine digits (PS0003 beyond).
 inline bool fitsAddress(double counts) {

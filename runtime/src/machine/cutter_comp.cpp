@@ -298,8 +298,10 @@ void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
 mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
                   bool check = true) {
   CompensationState& state = ctx.compensation;
-  std::vector<HeldMove> held = std::move(state.held);
-  state.held.clear();
+  // Swapped, not moved: both vectors keep their storage from move to move.
+  std::vector<HeldMove>& held = state.leaving;
+  held.clear();
+  held.swap(state.held);
   state.stillBlocks = 0;
   const HeldMove& move = held.front();
   const PlaneIndex plane = planeIndex(ctx);
