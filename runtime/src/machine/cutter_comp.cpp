@@ -14,10 +14,11 @@
 #include <fmt/format.h>
 
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "flat_gcode.h"
 #include "frames.h"
-#include "g_codes.h"
 #include "plane_geometry.h"
 
 namespace mbc::rt {
