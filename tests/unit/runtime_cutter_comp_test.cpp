@@ -111,6 +111,21 @@ TEST(RuntimeCutterComp, AlarmsOfTheControl) {
     EXPECT_EQ(m.block("G40 G02 X20. R5."),
               status(AlarmId::NoCircleAtStartOrCancel));
   }
+
+  // Inside arcs of the offset's radius and smaller: PS0038, PS0041.
+  const struct {
+    const char* arc;
+    AlarmId alarm;
+  } insideArcs[] = {{"G03 X30. Y4. R4.", AlarmId::InterferenceInCircle},
+                    {"G03 X30. Y3. R3.", AlarmId::InterferenceInCrc}};
+
+  for (const auto& inside : insideArcs) {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+    ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+    ASSERT_EQ(m.block("X26."), 0);
+    EXPECT_EQ(m.block(inside.arc), status(inside.alarm)) << inside.arc;
+  }
   {
     Machine m;
     ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);

@@ -472,18 +472,24 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
                  "the move that starts cutter compensation must be G00 or "
                  "G01");
   }
-  if (move.arc && offsetRadius(move, plane) <= 0.0) {
+  // An inside arc no larger than the offset: on the arc's centre the
+  // control stops with PS0038, inside out with PS0041.
+  if (move.arc && offsetRadius(move, plane) < 0.5) {
     // The tool stops at the end of the move before, which has no corner.
     if (const mbrt_status status = releaseHeldMoves(ctx)) {
       return status;
     }
-    return raise(
-        ctx, AlarmId::InterferenceInCrc,
-        fmt::format("the arc's radius {} is not larger than the "
-                    "offset {} on its inside",
-                    length(pointOf(move.start, plane) - centerOf(move)) /
-                        ctx.scale(),
-                    move.offset / ctx.scale()));
+    const double radius =
+        length(pointOf(move.start, plane) - centerOf(move)) / ctx.scale();
+    return offsetRadius(move, plane) > -0.5
+               ? raise(ctx, AlarmId::InterferenceInCircle,
+                       fmt::format("the tool centre would stand on the "
+                                   "arc's centre: radius {} = offset {}",
+                                   radius, move.offset / ctx.scale()))
+               : raise(ctx, AlarmId::InterferenceInCrc,
+                       fmt::format("the arc's radius {} is smaller than "
+                                   "the offset {} on its inside",
+                                   radius, move.offset / ctx.scale()));
   }
   if (!state.engaged) {
     // Parameters that would change the path mbc draws: stop, never guess.
