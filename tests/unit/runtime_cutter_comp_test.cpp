@@ -74,6 +74,35 @@ TEST(RuntimeCutterComp, G40WithIJMeetsTheVirtualPath) {
   }
 }
 
+// G41 X Y I J at the start-up: the start-up ends where the offset of a
+// virtual path along I J into its end meets the next move's offset path.
+TEST(RuntimeCutterComp, G41WithIJStartsAlongTheVirtualPath) {
+  const struct {
+    const char* startUp;
+    const char* next;
+    double x;
+    double y;
+  } cases[] = {{"G41 D1 X0 Y0", "Y20.", -5.0, 2.071}, // inner: intersection
+               {"G41 D1 X0 Y0 I1. J0", "Y20.", -5.0, 5.0}, // along +X: y = 5
+               {"G41 D1 X0 Y0", "X20.", 0.0, 5.0},         // outer, type A
+               {"G41 D1 X0 Y0 I0 J1.", "X20.", -5.0, 5.0}, // along +Y: x = -5
+               {"G41 D1 X0 Y0 I1. J0", "X20.", 0.0, 5.0}}; // parallel: type A
+
+  for (const auto& c : cases) {
+    Machine m;
+    ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+    ASSERT_EQ(m.block("G90 G01 X-10. Y-10. F500."), 0);
+    ASSERT_EQ(m.block(c.startUp), 0);
+    ASSERT_EQ(m.block(c.next), 0) << c.startUp;
+    EXPECT_EQ(m.motions().back().end[0], c.x) << c.startUp << " " << c.next;
+    EXPECT_EQ(m.motions().back().end[1], c.y) << c.startUp << " " << c.next;
+  }
+  Machine m; // in offset mode the I J form is not modelled
+  ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+  ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+  EXPECT_EQ(m.block("G41 X20. I1. J0"), status(AlarmId::Unsupported));
+}
+
 TEST(RuntimeCutterComp, NegativeOffsetSwapsTheSides) {
   Machine m;
   ASSERT_EQ(m.block("G10 L12 P2 R-3."), 0);

@@ -158,7 +158,7 @@ struct HeldMove {
   AxisCounts start{}; // programmed, workpiece frame
   AxisCounts end{};
   double center[2] = {0.0, 0.0}; // arcs: in the plane, workpiece counts
-  bool hasDirection = false;     // G40 I J K: the virtual path after it
+  bool hasDirection = false;     // G40/G41/G42 I J K: a virtual path
   double direction[2] = {0.0, 0.0};
   double offset = 0.0; // the offset value, counts (0 or more)
   int side = 1;        // 1: tool left of the path, -1: right

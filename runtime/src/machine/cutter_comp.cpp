@@ -402,6 +402,26 @@ PlanePoint towardDirection(const mbrt_ctx& ctx, const HeldMove& held,
   return meet ? *meet : perpendicularEnd(ctx, held);
 }
 
+/// G41/G42 X Y I J at the start-up: the start-up move ends where the
+/// offset of a virtual path along I J into its end meets the next move's
+/// offset path, inner corner or outer, or on the next move's perpendicular
+/// vector where they do not meet.
+PlanePoint startAlongDirection(const mbrt_ctx& ctx, const HeldMove& startUp,
+                               const HeldMove& next) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlanePoint corner = pointOf(startUp.end, plane);
+  HeldMove following = next;
+  following.offset = startUp.offset;
+  following.side = startUp.side;
+  PlaneCurve path;
+  path.direction = unit({startUp.direction[0], startUp.direction[1]});
+  path.point = corner + vectorAt(startUp, path.direction);
+  const std::optional<PlanePoint> meet =
+      nearestIntersection(path, offsetCurve(following, plane), corner);
+  return meet ? *meet
+              : corner + vectorAt(following, tangentAt(next, plane, corner));
+}
+
 /// The cancel move: from where the tool is straight to the programmed end.
 mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
   CompensationState& state = ctx.compensation;
@@ -513,6 +533,8 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
     Corner corner;
     if (held.side != move.side && !held.startUp) {
       corner = sideChange(ctx, held, move);
+    } else if (held.startUp && held.hasDirection) {
+      corner.points = {startAlongDirection(ctx, held, move)};
     } else if (state.codeInBlock && !held.startUp) {
       // G41/G42 given again: the vector at the end of the move before is
       // perpendicular to it, inner corner or outer.

@@ -629,8 +629,9 @@ void dwell(mbrt_ctx& ctx, double seconds) {
 
 namespace {
 
-/// G40 X Y I J: the direction I J (K) gives, in the workpiece frame.
-void cancelDirection(const mbrt_ctx& ctx, const MotionWords& words,
+/// G41/G42 or G40 with X Y I J: the direction I J (K) gives, in the
+/// workpiece frame.
+void vectorDirection(const mbrt_ctx& ctx, const MotionWords& words,
                      HeldMove& move) {
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
   AxisValues from{};
@@ -665,8 +666,8 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   }
   HeldMove move = straightTo(ctx, target, rapid);
   if (words != nullptr && words->centerMask != 0 &&
-      ctx.compensation.codeInBlock && ctx.modal.compensation == 40) {
-    cancelDirection(ctx, *words, move);
+      ctx.compensation.codeInBlock) {
+    vectorDirection(ctx, *words, move);
   }
   return compensateMove(ctx, std::move(move));
 }

@@ -610,10 +610,12 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
     return refuseUnderCompensation(
         ctx, fmt::format("canned cycle G{}", ctx.modal.cycle));
   }
-  if (ctx.compensation.codeInBlock && ctx.modal.compensation != 40 &&
-      block.motion.centerMask != 0 && ctx.modal.motion <= 1) {
+  if (ctx.compensation.codeInBlock && ctx.compensation.engaged &&
+      ctx.modal.compensation != 40 && block.motion.centerMask != 0 &&
+      ctx.modal.motion <= 1) {
     return refuseUnderCompensation(
-        ctx, fmt::format("G{} with I, J or K (a vector direction)",
+        ctx, fmt::format("G{} with I, J or K in offset mode (a vector "
+                         "direction)",
                          ctx.modal.compensation));
   }
   return 0;
