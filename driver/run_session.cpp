@@ -35,12 +35,18 @@ std::string clockText(double seconds) {
                    : fmt::format("{}:{:04.1f}", minutes, rest);
 }
 
+/// A box limit to print with 3 decimals: an arc's extreme a rounding error
+/// below zero (-1e-15) reads 0.000, not -0.000.
+double boxLimit(double value) {
+  return std::fabs(value) < 0.0005 ? 0.0 : value;
+}
+
 /// Path lengths, the estimated cycle time and the bounding box.
 std::string toolpathSummary(const mbrt_stats& st) {
   std::string box;
   for (int axis = 0; axis < st.axis_count; ++axis) {
     box += fmt::format(" {} {:.3f}..{:.3f}", st.axis_names[axis],
-                       st.box_min[axis], st.box_max[axis]);
+                       boxLimit(st.box_min[axis]), boxLimit(st.box_max[axis]));
   }
   return fmt::format(
       "mbc: toolpath ({}): feed {:.3f}, rapid {:.3f}, time {};{}\n", st.unit,
