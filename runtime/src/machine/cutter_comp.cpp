@@ -27,21 +27,28 @@ namespace {
 
 constexpr int kLastDIndex = 6; // #4107: the last D
 
-/// The plane's axes as indexes into positions; -1 where the machine lacks
-/// one.
-struct PlaneIndex {
-  int p;
-  int q;
-};
-
-PlaneIndex planeIndex(const mbrt_ctx& ctx) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
-  return {ctx.axisOf(plane.letters[0]), ctx.axisOf(plane.letters[1])};
-}
-
 PlanePoint pointOf(const AxisCounts& position, PlaneIndex plane) {
   return {static_cast<double>(position[plane.p]),
           static_cast<double>(position[plane.q])};
+}
+
+/// A direction of the program (on the plane's axes) in the workpiece frame:
+/// mirror, scaling and rotation turn it as they turn points.
+PlanePoint workDirection(const mbrt_ctx& ctx, PlanePoint direction) {
+  const PlaneIndex plane = planeIndex(ctx);
+  AxisValues tip{};
+  tip[plane.p] = direction.x;
+  tip[plane.q] = direction.y;
+  const AxisValues origin = transformPoint(ctx, AxisValues{});
+  tip = transformPoint(ctx, tip);
+  return {tip[plane.p] - origin[plane.p], tip[plane.q] - origin[plane.q]};
+}
+
+/// The I J K words of the plane, as a direction of the program.
+PlanePoint centerWords(const mbrt_ctx& ctx, const MotionWords& words) {
+  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  return {static_cast<double>(words.center[axes.centerIndex[0]]),
+          static_cast<double>(words.center[axes.centerIndex[1]])};
 }
 
 /// Where the tool is, in the workpiece frame.
@@ -613,23 +620,23 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
                  "G39 corner arc outside cutter compensation (G41/G42)");
   }
   const PlaneIndex plane = planeIndex(ctx);
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
   // The direction in program coordinates, then through the frames.
-  AxisCounts toward = ctx.program;
-  if (words.centerMask != 0) {
-    toward[plane.p] += words.center[axes.centerIndex[0]];
-    toward[plane.q] += words.center[axes.centerIndex[1]];
-  } else {
-    for (const int axis : {plane.p, plane.q}) {
-      if ((words.axisMask >> axis & 1) != 0) {
-        toward[axis] = ctx.modal.incremental ? toward[axis] + words.axis[axis]
-                                             : words.axis[axis];
-      }
+  PlanePoint programmed = centerWords(ctx, words);
+  if (words.centerMask == 0) {
+    const PlanePoint from = pointOf(ctx.program, plane);
+    PlanePoint toward = from;
+    if ((words.axisMask >> plane.p & 1) != 0) {
+      toward.x = static_cast<double>(words.axis[plane.p]) +
+                 (ctx.modal.incremental ? from.x : 0.0);
     }
+    if ((words.axisMask >> plane.q & 1) != 0) {
+      toward.y = static_cast<double>(words.axis[plane.q]) +
+                 (ctx.modal.incremental ? from.y : 0.0);
+    }
+    programmed = toward - from;
   }
   const AxisCounts here = programToWork(ctx, ctx.program);
-  const PlanePoint direction =
-      unit(pointOf(programToWork(ctx, toward), plane) - pointOf(here, plane));
+  const PlanePoint direction = unit(workDirection(ctx, programmed));
   if (length(direction) == 0.0) {
     return raise(ctx, AlarmId::ImproperCommand,
                  "G39 needs a direction: X Y or I J away from the corner");
@@ -656,6 +663,17 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
     moveWorkArc(ctx, tool, corner, arc.side > 0, origin);
   }
   return 0;
+}
+
+void readVectorDirection(const mbrt_ctx& ctx, const MotionWords& words,
+                         HeldMove& move) {
+  const PlaneIndex plane = planeIndex(ctx);
+  if (plane.p >= 0 && plane.q >= 0) {
+    const PlanePoint direction = workDirection(ctx, centerWords(ctx, words));
+    move.hasDirection = true;
+    move.direction[0] = direction.x;
+    move.direction[1] = direction.y;
+  }
 }
 
 mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what) {

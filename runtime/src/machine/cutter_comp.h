@@ -41,6 +41,11 @@ mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore);
 /// block's plane words (X Y, or I J) give.
 mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words);
 
+/// G40/G41/G42 X Y I J: the direction the plane's I J K give, in the
+/// workpiece frame, for the virtual path of the start-up or cancel move.
+void readVectorDirection(const mbrt_ctx& ctx, const MotionWords& words,
+                         HeldMove& move);
+
 /// The held moves leave, the one in the plane with a vector perpendicular
 /// to its end; at the end of the run `check` is false: no interference
 /// check, whose alarm would come after the program ended.

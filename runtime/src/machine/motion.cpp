@@ -34,6 +34,11 @@ MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
           cycle};
 }
 
+PlaneIndex planeIndex(const mbrt_ctx& ctx) {
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  return {ctx.axisOf(plane.letters[0]), ctx.axisOf(plane.letters[1])};
+}
+
 namespace {
 
 using Point = PlanePoint;
@@ -274,8 +279,7 @@ Point planePoint(const AxisValues& point, int p, int q) {
 mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                     const AxisCounts& start, const AxisCounts& target) {
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
-  const int p = ctx.axisOf(plane.letters[0]);
-  const int q = ctx.axisOf(plane.letters[1]);
+  const auto [p, q] = planeIndex(ctx);
   if (p < 0 || q < 0) {
     return raise(ctx, AlarmId::IllegalPlaneSelect,
                  fmt::format("G{} arcs need axes {} and {}", ctx.modal.plane,
@@ -481,9 +485,7 @@ void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
 
 void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
                  bool clockwise, const MoveOrigin& origin) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
-  const int p = ctx.axisOf(plane.letters[0]);
-  const int q = ctx.axisOf(plane.letters[1]);
+  const auto [p, q] = planeIndex(ctx);
   const AxisCounts workStart = machineToWork(ctx, ctx.machine);
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
@@ -629,30 +631,6 @@ void dwell(mbrt_ctx& ctx, double seconds) {
 
 namespace {
 
-/// G41/G42 or G40 with X Y I J: the direction I J (K) gives, in the
-/// workpiece frame.
-void vectorDirection(const mbrt_ctx& ctx, const MotionWords& words,
-                     HeldMove& move) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
-  AxisValues from{};
-  AxisValues to{};
-  for (int i = 0; i < 2; ++i) {
-    const int axis = ctx.axisOf(plane.letters[i]);
-    if (axis >= 0) {
-      to[axis] = static_cast<double>(words.center[plane.centerIndex[i]]);
-    }
-  }
-  from = transformPoint(ctx, from);
-  to = transformPoint(ctx, to);
-  const int p = ctx.axisOf(plane.letters[0]);
-  const int q = ctx.axisOf(plane.letters[1]);
-  if (p >= 0 && q >= 0) {
-    move.hasDirection = true;
-    move.direction[0] = to[p] - from[p];
-    move.direction[1] = to[q] - from[q];
-  }
-}
-
 /// A G00 or G01 move of the program, which cutter compensation may hold.
 mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                      const MotionWords* words) {
@@ -667,7 +645,7 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   HeldMove move = straightTo(ctx, target, rapid);
   if (words != nullptr && words->centerMask != 0 &&
       ctx.compensation.codeInBlock) {
-    vectorDirection(ctx, *words, move);
+    readVectorDirection(ctx, *words, move);
   }
   return compensateMove(ctx, std::move(move));
 }

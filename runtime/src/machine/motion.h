@@ -32,6 +32,15 @@ struct PlaneAxes {
 
 PlaneAxes planeAxes(int plane);
 
+/// The current plane's two axes as indexes into positions (-1 where the
+/// machine lacks one).
+struct PlaneIndex {
+  int p;
+  int q;
+};
+
+PlaneIndex planeIndex(const mbrt_ctx& ctx);
+
 /// G20/G21: re-expresses the position, the offsets and the frames in the
 /// new unit.
 void switchUnits(mbrt_ctx& ctx, bool inch);
