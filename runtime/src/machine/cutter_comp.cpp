@@ -79,32 +79,40 @@ PlanePoint tangentAt(const HeldMove& move, PlaneIndex plane, PlanePoint at) {
 }
 
 /// The vector from the path to the tool centre where the path runs along
-/// `tangent`: the offset to the side the move is compensated on.
+/// `tangent`: `offset` to the left (`side` 1) or the right (-1).
+PlanePoint vectorAt(double offset, int side, PlanePoint tangent) {
+  return (offset * side) * leftOf(tangent);
+}
+
+/// The vector of the side and offset the move is compensated with.
 PlanePoint vectorAt(const HeldMove& move, PlanePoint tangent) {
-  return (move.offset * move.side) * leftOf(tangent);
+  return vectorAt(move.offset, move.side, tangent);
 }
 
 /// The radius of the tool-centre path of an arc: the tool is inside the
 /// arc when it is left of a counter-clockwise arc or right of a clockwise.
-double offsetRadius(const HeldMove& move, PlaneIndex plane) {
+double offsetRadius(const HeldMove& move, PlaneIndex plane,
+                    const HeldMove& by) {
   const double radius = length(pointOf(move.start, plane) - centerOf(move));
-  const bool inside = (move.side > 0) != move.clockwise;
-  return inside ? radius - move.offset : radius + move.offset;
+  const bool inside = (by.side > 0) != move.clockwise;
+  return inside ? radius - by.offset : radius + by.offset;
 }
 
 /// The tool-centre path of a move, without its ends: a line through its
-/// offset start or the circle of its offset radius.
-PlaneCurve offsetCurve(const HeldMove& move, PlaneIndex plane) {
+/// offset start or the circle of its offset radius, offset by the side and
+/// value of `by` (a corner takes the vector of the move before it).
+PlaneCurve offsetCurve(const HeldMove& move, PlaneIndex plane,
+                       const HeldMove& by) {
   PlaneCurve curve;
   if (move.arc) {
     curve.circle = true;
     curve.center = centerOf(move);
-    curve.radius = offsetRadius(move, plane);
+    curve.radius = offsetRadius(move, plane, by);
     return curve;
   }
   const PlanePoint start = pointOf(move.start, plane);
   curve.direction = tangentAt(move, plane, start);
-  curve.point = start + vectorAt(move, curve.direction);
+  curve.point = start + vectorAt(by, curve.direction);
   return curve;
 }
 
@@ -138,11 +146,8 @@ Corner cornerBetween(const mbrt_ctx& ctx, const HeldMove& held,
   const PlanePoint corner = pointOf(held.end, plane);
   const PlanePoint d1 = tangentAt(held, plane, corner);
   const PlanePoint d2 = tangentAt(next, plane, corner);
-  HeldMove following = next;
-  following.offset = held.offset;
-  following.side = held.side;
   const PlanePoint e1 = corner + vectorAt(held, d1);
-  const PlanePoint s2 = corner + vectorAt(following, d2);
+  const PlanePoint s2 = corner + vectorAt(held, d2);
   const double turn = cross(d1, d2);
   const double along = dot(d1, d2);
   Corner result;
@@ -156,7 +161,7 @@ Corner cornerBetween(const mbrt_ctx& ctx, const HeldMove& held,
   const bool inner = turn * held.side > 0.0;
   if (inner) {
     const std::optional<PlanePoint> meet = nearestIntersection(
-        offsetCurve(held, plane), offsetCurve(following, plane), corner);
+        offsetCurve(held, plane, held), offsetCurve(next, plane, held), corner);
     if (!meet) {
       result.noSolution = true;
       return result;
@@ -206,14 +211,12 @@ Corner sideChange(const mbrt_ctx& ctx, const HeldMove& held,
   const PlaneIndex plane = planeIndex(ctx);
   const PlanePoint corner = pointOf(held.end, plane);
   const PlanePoint e1 = corner + vectorAt(held, tangentAt(held, plane, corner));
-  HeldMove following = next;
-  following.offset = held.offset;
-  const PlanePoint s2 =
-      corner + vectorAt(following, tangentAt(next, plane, corner));
+  const PlanePoint d2 = tangentAt(next, plane, corner);
+  const PlanePoint s2 = corner + vectorAt(held.offset, next.side, d2);
   if (!held.arc && !next.arc) {
     const PlanePoint from = pointOf(toolPosition(ctx), plane);
-    const PlanePoint to = pointOf(next.end, plane) +
-                          vectorAt(following, tangentAt(next, plane, corner));
+    const PlanePoint to =
+        pointOf(next.end, plane) + vectorAt(held.offset, next.side, d2);
     const double det = cross(e1 - from, to - s2);
     if (std::fabs(det) > 1e-9) {
       const double t = cross(s2 - from, to - s2) / det;
@@ -405,7 +408,7 @@ PlanePoint towardDirection(const mbrt_ctx& ctx, const HeldMove& held,
   path.direction = unit({cancel.direction[0], cancel.direction[1]});
   path.point = corner + vectorAt(held, path.direction);
   const std::optional<PlanePoint> meet =
-      nearestIntersection(offsetCurve(held, plane), path, corner);
+      nearestIntersection(offsetCurve(held, plane, held), path, corner);
   return meet ? *meet : perpendicularEnd(ctx, held);
 }
 
@@ -417,16 +420,13 @@ PlanePoint startAlongDirection(const mbrt_ctx& ctx, const HeldMove& startUp,
                                const HeldMove& next) {
   const PlaneIndex plane = planeIndex(ctx);
   const PlanePoint corner = pointOf(startUp.end, plane);
-  HeldMove following = next;
-  following.offset = startUp.offset;
-  following.side = startUp.side;
   PlaneCurve path;
   path.direction = unit({startUp.direction[0], startUp.direction[1]});
   path.point = corner + vectorAt(startUp, path.direction);
   const std::optional<PlanePoint> meet =
-      nearestIntersection(path, offsetCurve(following, plane), corner);
+      nearestIntersection(path, offsetCurve(next, plane, startUp), corner);
   return meet ? *meet
-              : corner + vectorAt(following, tangentAt(next, plane, corner));
+              : corner + vectorAt(startUp, tangentAt(next, plane, corner));
 }
 
 /// The cancel move: from where the tool is straight to the programmed end.
@@ -501,14 +501,14 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   }
   // An inside arc no larger than the offset: on the arc's centre the
   // control stops with PS0038, inside out with PS0041.
-  if (move.arc && offsetRadius(move, plane) < 0.5) {
+  if (move.arc && offsetRadius(move, plane, move) < 0.5) {
     // The tool stops at the end of the move before, which has no corner.
     if (const mbrt_status status = releaseHeldMoves(ctx)) {
       return status;
     }
     const double radius =
         length(pointOf(move.start, plane) - centerOf(move)) / ctx.scale();
-    return offsetRadius(move, plane) > -0.5
+    return offsetRadius(move, plane, move) > -0.5
                ? raise(ctx, AlarmId::InterferenceInCircle,
                        fmt::format("the tool centre would stand on the "
                                    "arc's centre: radius {} = offset {}",
