@@ -165,9 +165,9 @@ TEST(RuntimeCutterComp, AlarmsOfTheControl) {
 }
 
 TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
-  for (const char* block : {"G91 G28 Z0", "G53 X0", "G81 X5. Z-1. R1.",
-                            "G52 X5.", "G92 X0", "G68 X0 Y0 R30.", "G55", "G20",
-                            "G43 H1", "G10 L2 P1 X5.", "G41 I1. J0 X30."}) {
+  for (const char* block :
+       {"G53 X0", "G81 X5. Z-1. R1.", "G52 X5.", "G92 X0", "G68 X0 Y0 R30.",
+        "G55", "G20", "G10 L2 P1 X5.", "G41 I1. J0 X30."}) {
     Machine m;
     ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
     ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
@@ -178,6 +178,31 @@ TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
   EXPECT_EQ(m.write(5221, 1.0), status(AlarmId::Unsupported));
 }
 
+// 0i-MB manual: G53 (and a return of Z alone) ends the move before on its
+// perpendicular vector; with the plane's axes the vector goes, without
+// them it stays.
+TEST(RuntimeCutterComp, MachinePositioningEndsTheMoveBeforePerpendicular) {
+  Machine m;
+  ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+  ASSERT_EQ(m.block("G90 G01 X0 Y0 F500."), 0);
+  ASSERT_EQ(m.block("G41 D1 X20."), 0);
+  ASSERT_EQ(m.block("Y20."), 0);
+  ASSERT_EQ(m.block("G91 G28 Z0"), 0);
+  // Y20. left on its perpendicular vector, then Z to the reference.
+  EXPECT_EQ(m.read(5041), 15.0);
+  EXPECT_EQ(m.read(5042), 20.0);
+  EXPECT_EQ(m.read(5001), 20.0); // the programmed point
+  EXPECT_EQ(m.read(4007), 41.0);
+  ASSERT_EQ(m.block("G90 G53 X0 Y0"), 0);
+  EXPECT_EQ(m.read(5041), 0.0);
+  EXPECT_EQ(m.read(5042), 0.0);
+  // The next move in the plane is a start-up again (type A).
+  ASSERT_EQ(m.block("G01 X10."), 0);
+  ASSERT_EQ(m.block("Y10."), 0);
+  EXPECT_EQ(m.read(5041), 5.0);
+  EXPECT_EQ(m.read(5042), 10.0);
+}
+
 TEST(RuntimeCutterComp, ParametersItDoesNotModelStopTheRun) {
   for (const char* parameters :
        {R"({"parameters": {"5003": 2}})", R"({"parameters": {"19607": 4}})"}) {
@@ -186,6 +211,12 @@ TEST(RuntimeCutterComp, ParametersItDoesNotModelStopTheRun) {
     EXPECT_EQ(m.block("G41 D1 G01 X10. F300."), status(AlarmId::Unsupported))
         << parameters;
   }
+  // 5003#2 CCN: the FS15 vector after G28, G29, G30 and G53.
+  Machine m(R"({"parameters": {"5003": 4}})");
+  ASSERT_EQ(m.block("G10 L12 P1 R4."), 0);
+  ASSERT_EQ(m.block("G41 D1 G01 X10. F300."), 0);
+  ASSERT_EQ(m.block("Y10."), 0);
+  EXPECT_EQ(m.block("G53 X0 Y0"), status(AlarmId::Unsupported));
 }
 
 TEST(PlaneGeometry, LinesAndCirclesMeet) {

@@ -429,6 +429,17 @@ PlanePoint startAlongDirection(const mbrt_ctx& ctx, const HeldMove& startUp,
               : corner + vectorAt(startUp, tangentAt(next, plane, corner));
 }
 
+/// Parameter 5003#2 CCN = 1 restores the vector after G28, G29, G30 and G53
+/// as the FS15 does (an intersection vector), which mbc does not model.
+mbrt_status refuseFs15Restoration(mbrt_ctx& ctx) {
+  if (!ctx.profile.parameterBit(5003, 2)) {
+    return 0;
+  }
+  return raise(ctx, AlarmId::Unsupported,
+               "G28, G29, G30 or G53 in cutter compensation mode with "
+               "5003#2 CCN (the FS15 vector after them)");
+}
+
 /// The cancel move: from where the tool is straight to the programmed end.
 mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
   CompensationState& state = ctx.compensation;
@@ -565,6 +576,9 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
 }
 
 mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
+  if (const mbrt_status status = refuseFs15Restoration(ctx)) {
+    return status;
+  }
   const PlaneIndex plane = planeIndex(ctx);
   move.origin = blockOrigin(ctx);
   move.program = move.origin.program;
@@ -574,11 +588,36 @@ mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
     ++ctx.compensation.planeMoves;
     return cancel(ctx, move);
   }
-  // Where the vector goes on a reference return of other axes alone (the
-  // manuals show the plane's axes) is not modelled.
-  return raise(ctx, AlarmId::Unsupported,
-               "a reference return without the plane's axes in cutter "
-               "compensation mode (G41/G42); give it after G40");
+  // Other axes alone: the plane's axes stay on the vector the move before
+  // ends with, as under G53.
+  if (const mbrt_status status = releaseHeldMoves(ctx)) {
+    return status;
+  }
+  moveStill(ctx, move);
+  return 0;
+}
+
+mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask) {
+  if (!ctx.compensation.engaged || mask == 0) {
+    return 0;
+  }
+  if (const mbrt_status status = refuseFs15Restoration(ctx)) {
+    return status;
+  }
+  const PlaneIndex plane = planeIndex(ctx);
+  const unsigned planeAxes = (mask >> plane.p & 1U) + (mask >> plane.q & 1U);
+  if (planeAxes == 1) {
+    // The manual shows the plane's two axes, or neither.
+    return raise(ctx, AlarmId::Unsupported,
+                 "G53 with one axis of the compensation plane in cutter "
+                 "compensation mode (G41/G42); give both, or give it after "
+                 "G40");
+  }
+  if (const mbrt_status status = releaseHeldMoves(ctx)) {
+    return status;
+  }
+  ctx.compensation.engaged = planeAxes == 0;
+  return 0;
 }
 
 mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {

@@ -27,9 +27,15 @@ inline bool compensating(const mbrt_ctx& ctx) {
 mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move);
 
 /// The tool leaves the offset on `move` (G28/G30 to the intermediate
-/// point) as a cancel move does; MBC0001 when it does not move in the
-/// plane.
+/// point) as a cancel move does. A move without motion in the plane ends
+/// the held move on its perpendicular vector and keeps the vector.
 mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move);
+
+/// G53 positioning the axes in `mask` (0i-MB manual, "G53 ... in cutter
+/// compensation C mode"): the move before ends on its perpendicular
+/// vector; when the plane's axes move the vector goes with them and the
+/// next move in the plane starts it again, otherwise it stays.
+mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask);
 
 /// After every NC block under compensation: a block without motion in the
 /// plane counts against the look-ahead, and G40 or D0 in such a block ends

@@ -464,7 +464,15 @@ mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
   }
   const mbrt_status status =
       moveToMachine(ctx, machineToWork(ctx, machine), machine, true, 0);
+  const AxisCounts programmed = ctx.program;
   resyncProgram(ctx);
+  if (ctx.compensation.engaged) {
+    // The tool stands on its vector: in the plane the program position is
+    // still the programmed point.
+    const PlaneIndex plane = planeIndex(ctx);
+    ctx.program[plane.p] = programmed[plane.p];
+    ctx.program[plane.q] = programmed[plane.q];
+  }
   return status;
 }
 
@@ -529,10 +537,11 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
   }
   ctx.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
+  const bool compensated = ctx.compensation.engaged;
   if (const mbrt_status status = leaveOffsetAt(ctx, intermediate)) {
     return status;
   }
-  if (workToMachine(ctx, work) != ctx.machine) {
+  if (!compensated && workToMachine(ctx, work) != ctx.machine) {
     if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
       return status;
     }
@@ -621,6 +630,9 @@ mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words, double p) {
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.modal.incremental) {
     return 0;
+  }
+  if (const mbrt_status status = suspendCompensation(ctx, words.axisMask)) {
+    return status;
   }
   return rapidInMachineCoordinates(ctx, words.axisMask, words.axis);
 }

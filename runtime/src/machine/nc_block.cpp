@@ -603,9 +603,6 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
     return raise(ctx, AlarmId::SkipInCrc,
                  "G31 skip in cutter compensation mode (G41/G42)");
   }
-  if (block.nonModal == 530) {
-    return refuseUnderCompensation(ctx, gCodeText(block.nonModal));
-  }
   if (ctx.modal.cycle != 0) {
     return refuseUnderCompensation(
         ctx, fmt::format("canned cycle G{}", ctx.modal.cycle));
