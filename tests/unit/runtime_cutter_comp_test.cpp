@@ -178,15 +178,20 @@ TEST(RuntimeCutterComp, WhatIsNotModelledStopsTheRun) {
   EXPECT_EQ(m.write(5221, 1.0), status(AlarmId::Unsupported));
 }
 
+/// G41 with a 5 mm offset from X0 Y0 Z0 along X20., then Y20. held.
+void startSquare(Machine& m) {
+  ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
+  ASSERT_EQ(m.block("G90 G01 X0 Y0 Z0 F500."), 0);
+  ASSERT_EQ(m.block("G41 D1 X20."), 0);
+  ASSERT_EQ(m.block("Y20."), 0);
+}
+
 // 0i-MB manual: G53 (and a return of Z alone) ends the move before on its
 // perpendicular vector; with the plane's axes the vector goes, without
 // them it stays.
 TEST(RuntimeCutterComp, MachinePositioningEndsTheMoveBeforePerpendicular) {
   Machine m;
-  ASSERT_EQ(m.block("G10 L12 P1 R5."), 0);
-  ASSERT_EQ(m.block("G90 G01 X0 Y0 F500."), 0);
-  ASSERT_EQ(m.block("G41 D1 X20."), 0);
-  ASSERT_EQ(m.block("Y20."), 0);
+  startSquare(m);
   ASSERT_EQ(m.block("G91 G28 Z0"), 0);
   // Y20. left on its perpendicular vector, then Z to the reference.
   EXPECT_EQ(m.read(5041), 15.0);
@@ -201,6 +206,40 @@ TEST(RuntimeCutterComp, MachinePositioningEndsTheMoveBeforePerpendicular) {
   ASSERT_EQ(m.block("Y10."), 0);
   EXPECT_EQ(m.read(5041), 5.0);
   EXPECT_EQ(m.read(5042), 10.0);
+}
+
+// 16/18-MC manual: a tool length offset change under compensation counts
+// as a change of the offset value, from its own block on: the held move
+// keeps the length it was read with.
+TEST(RuntimeCutterComp, ToolLengthChangeActsFromItsBlock) {
+  Machine m;
+  ASSERT_EQ(m.block("G10 L10 P2 R10."), 0);
+  startSquare(m);
+  const std::size_t before = m.motions().size();
+  ASSERT_EQ(m.block("G43 H2 Z-5."), 0); // held behind Y20.
+  ASSERT_EQ(m.motions().size(), before);
+  ASSERT_EQ(m.block("X0"), 0);
+  // Y20. to the inner corner at its old length, then Z at the new one.
+  ASSERT_EQ(m.motions().size(), before + 2);
+  const mbrt_motion& corner = m.motions()[before];
+  EXPECT_EQ(corner.end[0], 15.0);
+  EXPECT_EQ(corner.end[1], 15.0);
+  EXPECT_EQ(corner.machine[2], 0.0);
+  EXPECT_EQ(m.motions().back().end[2], -5.0);
+  EXPECT_EQ(m.motions().back().machine[2], 5.0);
+  EXPECT_EQ(m.motions().back().end[1], 15.0);
+  // G49 alone: a move of Z alone, the tool staying on its vector.
+  ASSERT_EQ(m.block("G49"), 0);
+  ASSERT_EQ(m.block("Y0"), 0);
+  EXPECT_EQ(m.read(5043), -5.0);
+  EXPECT_EQ(m.read(5041), 5.0);
+  // Along an axis of the plane (G18: Z and X) it is not modelled.
+  Machine side;
+  ASSERT_EQ(side.block("G10 L12 P1 R5."), 0);
+  ASSERT_EQ(side.block("G10 L10 P2 R10."), 0);
+  ASSERT_EQ(side.block("G18 G90 G01 X0 Z0 F500."), 0);
+  ASSERT_EQ(side.block("G41 D1 X20."), 0);
+  EXPECT_EQ(side.block("G43 H2"), status(AlarmId::Unsupported));
 }
 
 TEST(RuntimeCutterComp, ParametersItDoesNotModelStopTheRun) {

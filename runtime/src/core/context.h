@@ -164,6 +164,8 @@ struct HeldMove {
   int side = 1;        // 1: tool left of the path, -1: right
   MoveOrigin origin;   // origin.program is set from `program` as it leaves
   std::string program; // the program it was read in
+  int lengthAxis = -1; // the tool length offset of the block it was read in
+  Counts length = 0;
 };
 
 /// Cutter compensation C: the move whose end vector waits for the next move

@@ -303,6 +303,33 @@ void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
   }
 }
 
+/// While a held move leaves, the tool length offset of the block it was
+/// read in: the control had converted it before a later G43, G44 or G49
+/// was read (16/18-MC manual: such a change counts as a change of the
+/// offset value, which acts from the block that gives it).
+class LengthOfMove {
+public:
+  LengthOfMove(mbrt_ctx& ctx, const HeldMove& move)
+      : frames_(ctx.frames), axis_(frames_.lengthAxis),
+        length_(frames_.length) {
+    frames_.lengthAxis = move.lengthAxis;
+    frames_.length = move.length;
+  }
+
+  LengthOfMove(const LengthOfMove&) = delete;
+  LengthOfMove& operator=(const LengthOfMove&) = delete;
+
+  ~LengthOfMove() {
+    frames_.lengthAxis = axis_;
+    frames_.length = length_;
+  }
+
+private:
+  Frames& frames_;
+  int axis_;
+  Counts length_;
+};
+
 /// The held move leaves along `points` (Corner), then the moves without
 /// plane motion read after it; PS0041 instead when its tool path
 /// interferes (`check`), the tool standing at the end of the move before.
@@ -328,6 +355,7 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
                                move.arc ? "arc" : "move",
                                move.offset / ctx.scale()));
   }
+  const LengthOfMove length(ctx, move);
   const MoveOrigin origin = originOf(move);
   const AxisCounts first = placeAt(move, plane, points.front());
   const bool fullCircle =
@@ -347,6 +375,7 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
     }
   }
   for (std::size_t i = 1; i < held.size(); ++i) {
+    const LengthOfMove stillLength(ctx, held[i]);
     moveStill(ctx, held[i]);
   }
   return 0;
@@ -483,6 +512,8 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   }
   move.origin = blockOrigin(ctx);
   move.program = move.origin.program;
+  move.lengthAxis = ctx.frames.lengthAxis;
+  move.length = ctx.frames.length;
   move.still = !move.arc &&
                pointOf(move.start, plane).x == pointOf(move.end, plane).x &&
                pointOf(move.start, plane).y == pointOf(move.end, plane).y;

@@ -261,9 +261,7 @@ std::string frameChangeName(const FrameWords& words) {
   if (words.cancelScaling || words.cancelRotation) {
     return words.cancelScaling ? "G50" : "G69";
   }
-  return words.lengthCode != 0 || words.word('H') != nullptr
-             ? "a tool length offset change"
-             : "";
+  return "";
 }
 
 } // namespace
@@ -297,6 +295,17 @@ mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
   }
   *lengthChanged = before.lengthAxis != ctx.frames.lengthAxis ||
                    before.length != ctx.frames.length;
+  // A length offset along an axis of the compensation plane would move
+  // the plane's vector too, which the manuals do not show.
+  const PlaneIndex plane = planeIndex(ctx);
+  const auto inPlane = [&](int axis) {
+    return axis >= 0 && (axis == plane.p || axis == plane.q);
+  };
+  if (*lengthChanged &&
+      (inPlane(before.lengthAxis) || inPlane(ctx.frames.lengthAxis))) {
+    return refuseUnderCompensation(
+        ctx, "a tool length offset along an axis of the compensation plane");
+  }
   return 0;
 }
 

@@ -519,6 +519,10 @@ mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
 }
 
 mbrt_status moveToFrame(mbrt_ctx& ctx) {
+  if (compensating(ctx)) { // a move without motion in the plane
+    return compensateMove(ctx,
+                          straightTo(ctx, ctx.program, ctx.modal.motion == 0));
+  }
   const AxisCounts work = programToWork(ctx, ctx.program);
   const AxisCounts machine = workToMachine(ctx, work);
   if (machine == ctx.machine) {

@@ -784,7 +784,10 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  if (lengthChanged && ctx.moves == movesBefore) {
+  // Under compensation a move may be held: the block's axis words say
+  // whether it moved.
+  if (lengthChanged && (compensating(ctx) ? block.motion.axisMask == 0
+                                          : ctx.moves == movesBefore)) {
     if (const mbrt_status status = moveToFrame(ctx)) {
       return status;
     }
