@@ -142,9 +142,9 @@ int batchCommand(const Options& o) {
         },
         [&] {
           // Whole rows on disk as they come, for whoever follows the batch.
-          std::fflush(results.get());
+          results.flush();
           if (o.combined) {
-            std::fflush(combined.get());
+            combined.flush();
           }
         });
   }

@@ -20,10 +20,27 @@ OutputFile::~OutputFile() {
   std::free(memory_);
 }
 
+void OutputFile::flushBuffer() {
+  std::fwrite(buffer_.data(), 1, buffer_.size(), file_);
+  buffer_.clear();
+}
+
+void OutputFile::flushWhenFull() {
+  if (direct_ || buffer_.size() >= kBufferBytes) {
+    flushBuffer();
+  }
+}
+
+bool OutputFile::flush() {
+  flushBuffer();
+  return std::fflush(file_) == 0;
+}
+
 bool OutputFile::finish() {
   if (file_ == nullptr) {
     return true;
   }
+  flushBuffer();
   const bool flushed = std::fflush(file_) == 0 && std::ferror(file_) == 0;
   const int flushError = errno;
   const bool closed = !owned_ || std::fclose(file_) == 0;
@@ -37,12 +54,19 @@ bool OutputFile::finish() {
 bool OutputFile::open(const std::string& path) {
   path_ = path;
   if (path == "-") {
-    file_ = stdout;
+    useStdout();
     return true;
   }
   file_ = std::fopen(path.c_str(), "wb");
   owned_ = file_ != nullptr;
+  direct_ = owned_ && isatty(fileno(file_)) != 0;
   return owned_;
+}
+
+void OutputFile::useStdout() {
+  file_ = stdout;
+  path_ = "-";
+  direct_ = true;
 }
 
 bool OutputFile::openMemory() {
@@ -62,13 +86,16 @@ std::string OutputFile::takeMemory() {
 
 void OutputFile::writeText(void* self, const char* data, std::size_t size) {
   auto* out = static_cast<OutputFile*>(self);
-  std::fwrite(data, 1, size, out->file_);
+  out->buffer_.append(data, size);
+  out->flushWhenFull();
 }
 
 std::size_t OutputFile::write(const mbrt_motion& motion) {
-  const std::string line = toolpathJsonLine(motion);
-  std::fwrite(line.data(), 1, line.size(), file_);
-  return line.size();
+  const std::size_t before = buffer_.size();
+  appendToolpathJson(buffer_, motion);
+  const std::size_t bytes = buffer_.size() - before;
+  flushWhenFull();
+  return bytes;
 }
 
 bool replaceFile(const std::string& path, const std::string& content) {

@@ -24,17 +24,19 @@ public:
   bool openMemory();
   std::string takeMemory();
 
-  void useStdout() {
-    file_ = stdout;
-    path_ = "-";
-  }
+  void useStdout();
 
   /// Flushes (and closes a file it opened); false when anything written
   /// since open was lost (a full disk), with errno telling why.
   bool finish();
 
+  /// Hands what was written so far to the file; false when that failed.
+  bool flush();
+
   const std::string& path() const { return path_; }
 
+  /// The stream, for a writer of its own: flush() before handing it on
+  /// when write() or writeText() wrote to it.
   std::FILE* get() const { return file_; }
 
   static void writeText(void* self, const char* data, std::size_t size);
@@ -42,7 +44,18 @@ public:
   std::size_t write(const mbrt_motion& motion);
 
 private:
+  // Records gather here and go out in blocks: one fwrite per record
+  // cost as much as formatting it.
+  static constexpr std::size_t kBufferBytes = 64 * 1024;
+
+  void flushBuffer();
+  void flushWhenFull();
+
   std::FILE* file_ = nullptr;
+  // Standard output (which other outputs may share, in order) and
+  // terminals get every record at once, through stdio's own buffer.
+  bool direct_ = false;
+  std::string buffer_;
   bool owned_ = false;
   std::string path_;
   char* memory_ = nullptr; // open_memstream's buffer

@@ -4,7 +4,7 @@
 // box takes every arc's extreme points.
 #include "driver/svg_writer.h"
 
-#include <mbc/toolpath_json.h>
+#include <mbc/number_text.h>
 
 #include <fmt/format.h>
 

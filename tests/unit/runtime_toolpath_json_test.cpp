@@ -2,6 +2,7 @@
 // independence from the C locale.
 #include <mbc/toolpath_json.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <clocale>
@@ -98,6 +99,17 @@ TEST(ToolpathJson, IgnoresTheCLocale) {
       line,
       "{\"motion\":\"linear\",\"x\":10,\"y\":-1.25,\"z\":0,\"mx\":-290,"
       "\"my\":-201.25,\"mz\":150.5,\"f\":200,\"line\":7,\"prog\":\"O1000\"}\n");
+}
+
+TEST(ToolpathJson, FeedsAreTheShortestText) {
+  mbrt_motion m = linearMotion();
+  for (const double feed : {0.0, -0.0, 600.0, 1500.5, 0.1, 1e15, 1e16,
+                            123456789012345.0, 1.0 / 3.0}) {
+    m.feed = feed;
+    const std::string line = toolpathJsonLine(m);
+    EXPECT_NE(line.find(fmt::format(",\"f\":{},", feed)), std::string::npos)
+        << line;
+  }
 }
 
 } // namespace

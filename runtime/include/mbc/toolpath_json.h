@@ -16,8 +16,7 @@ namespace mbc {
 /// trailing zeros dropped; independent of the C locale.
 std::string toolpathJsonLine(const mbrt_motion& m);
 
-/// `value` fixed with `decimals` digits, then trailing zeros and '.'
-/// dropped; "-0" becomes "0". Independent of the C locale.
-std::string trimmedFixed(double value, int decimals);
+/// toolpathJsonLine appended to `out`.
+void appendToolpathJson(std::string& out, const mbrt_motion& m);
 
 } // namespace mbc

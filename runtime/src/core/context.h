@@ -299,6 +299,7 @@ struct mbrt_ctx {
   bool mainM99 = false;
   mbc::rt::PendingAlarm alarm;
   std::string scratch;              // reused output buffer
+  std::string gcodeLine;            // the flattened block being written
   std::vector<mbrt_word> stepWords; // mbrt_nc_steps' words of one block
 
   mbc::rt::Sink<mbrt_text_fn> alarmSink;

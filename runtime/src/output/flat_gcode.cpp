@@ -9,7 +9,7 @@
 
 #include <mbc/arith.h>
 #include <mbc/calling_codes.h>
-#include <mbc/toolpath_json.h>
+#include <mbc/number_text.h>
 
 #include <fmt/format.h>
 
@@ -23,15 +23,19 @@ namespace mbc::rt {
 namespace {
 
 /// The shortest fixed-point text of `value` that parses back to it.
-std::string fixedText(double value) {
-  std::string text;
+void appendFixedText(std::string& out, double value) {
+  // 309 integer digits, the point and 20 decimals at most.
+  char text[340];
+  std::size_t size = 0;
   for (int digits = 0; digits <= 20; ++digits) {
-    text = fmt::format("{:.{}f}", value, digits);
-    if (std::strtod(text.c_str(), nullptr) == value) {
+    size =
+        fmt::format_to_n(text, sizeof text - 1, "{:.{}f}", value, digits).size;
+    text[size] = '\0';
+    if (std::strtod(text, nullptr) == value) {
       break;
     }
   }
-  return text;
+  out.append(text, size);
 }
 
 /// K is the repeat count of a canned cycle.
@@ -42,9 +46,12 @@ bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
 }
 
 /// "12.5", "12.": a coordinate that reads as one under any 3401#0 DPI.
-std::string unitsText(double value, int decimals) {
-  std::string text = trimmedFixed(value, decimals);
-  return text.find('.') == std::string::npos ? text + '.' : text;
+void appendUnitsText(std::string& out, double value, int decimals) {
+  const std::size_t start = out.size();
+  appendTrimmedFixed(out, value, decimals);
+  if (out.find('.', start) == std::string::npos) {
+    out += '.';
+  }
 }
 
 /// A rotary axis counts 0.001 degree whatever G20/G21.
@@ -52,7 +59,8 @@ int axisDecimals(const mbrt_ctx& ctx, int axis) {
   return axis >= 0 && ctx.isRotary(axis) ? 3 : ctx.decimals();
 }
 
-std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {
+void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
+                          const mbrt_word& word) {
   const int axis = ctx.axisOf(word.letter);
   const double scale = axis >= 0 ? ctx.axisScale(axis) : ctx.scale();
   const double value = numeric(word.value);
@@ -60,8 +68,8 @@ std::string coordinateText(const mbrt_ctx& ctx, const mbrt_word& word) {
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
           : roundToCounts(value, scale);
-  return fmt::format("{}{}", word.letter,
-                     unitsText(counts / scale, axisDecimals(ctx, axis)));
+  out += word.letter;
+  appendUnitsText(out, counts / scale, axisDecimals(ctx, axis));
 }
 
 /// G04, G51, G68 and the look-ahead switches: blocks whose coordinate
@@ -79,24 +87,26 @@ bool hasOtherMeanings(const mbrt_word* words, size_t count) {
   return false;
 }
 
-std::string wordText(const mbrt_word& word) {
+void appendWordText(std::string& out, const mbrt_word& word) {
   const double value = numeric(word.value);
+  out += word.letter;
   if (isWholeNumberAddress(word.letter)) {
     // The whole number the block used: M3. would be PS0007.
-    return fmt::format("{}{}", word.letter,
-                       static_cast<long long>(roundHalfAway(value)));
+    appendInteger(out, static_cast<long long>(roundHalfAway(value)));
+    return;
   }
-  std::string text = fixedText(value);
-  const bool integral = std::floor(value) == value;
   // G54.1 keeps its point; other G codes are whole.
   const bool code = word.letter == 'G';
-  if (word.kind != MBRT_WORD_INT_LITERAL && !code &&
-      text.find('.') == std::string::npos) {
-    text += '.';
-  } else if (code && integral) {
-    text = fmt::format("{}", static_cast<long long>(value));
+  if (code && std::floor(value) == value) {
+    appendInteger(out, static_cast<long long>(value));
+    return;
   }
-  return fmt::format("{}{}", word.letter, text);
+  const std::size_t start = out.size();
+  appendFixedText(out, value);
+  if (word.kind != MBRT_WORD_INT_LITERAL && !code &&
+      out.find('.', start) == std::string::npos) {
+    out += '.';
+  }
 }
 
 bool isCode(const mbrt_word& word, char letter, double value) {
@@ -138,7 +148,8 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   const auto [callLetter, callValue] = ctx.callingCode;
   const bool codeCall =
       flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
-  std::string line;
+  std::string& line = ctx.gcodeLine;
+  line.clear();
   for (size_t i = 0; i < count; ++i) {
     const mbrt_word& word = words[i];
     if (dropTransfer &&
@@ -150,13 +161,18 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
         isCode(word, 'G', 67)) {
       continue;
     }
-    line += line.empty() ? "" : " ";
-    line += !exact && isCoordinateLetter(ctx, word.letter)
-                ? coordinateText(ctx, word)
-                : wordText(word);
+    if (!line.empty()) {
+      line += ' ';
+    }
+    if (!exact && isCoordinateLetter(ctx, word.letter)) {
+      appendCoordinateText(line, ctx, word);
+    } else {
+      appendWordText(line, word);
+    }
   }
   if (!line.empty()) {
-    send(ctx, line + "\n");
+    line += '\n';
+    send(ctx, line);
   }
 }
 
@@ -169,10 +185,11 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
           ? fmt::format("G10 L2 P{}", offset - kExternalOffset)
           : fmt::format("G10 L20 P{}", offset - kFirstG541Offset + 1);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    data += fmt::format(" {}{}", ctx.profile.axes[axis],
-                        unitsText(countsToUnits(ctx.workOffsets[offset][axis],
-                                                ctx.axisScale(axis)),
-                                  axisDecimals(ctx, axis)));
+    data += ' ';
+    data += ctx.profile.axes[axis];
+    appendUnitsText(
+        data, countsToUnits(ctx.workOffsets[offset][axis], ctx.axisScale(axis)),
+        axisDecimals(ctx, axis));
   }
   sendData(ctx, data);
 }
@@ -181,8 +198,9 @@ void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
   if (ctx.gcodeSink.fn == nullptr) {
     return;
   }
-  sendData(ctx, fmt::format("G10 L{} P{} R{}", l, number,
-                            unitsText(value, ctx.decimals())));
+  std::string data = fmt::format("G10 L{} P{} R", l, number);
+  appendUnitsText(data, value, ctx.decimals());
+  sendData(ctx, data);
 }
 
 void flattenLookAheadStop(mbrt_ctx& ctx, int blocks) {

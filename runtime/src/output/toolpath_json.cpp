@@ -1,8 +1,12 @@
-// JSON lines for the toolpath. Numbers are written with fmt, which ignores
-// the C locale, so the output is the same on every machine.
+// JSON lines for the toolpath, numbers by number_text.h: the same bytes on
+// every machine, nothing allocated per number.
+#include <mbc/number_text.h>
 #include <mbc/toolpath_json.h>
 
 #include <fmt/format.h>
+
+#include <cmath>
+#include <iterator>
 
 namespace mbc {
 
@@ -21,10 +25,6 @@ const char* motionName(int kind) {
   }
 }
 
-void appendCoordinate(std::string& out, double value, int decimals) {
-  out += trimmedFixed(value, decimals);
-}
-
 void appendString(std::string& out, const char* text) {
   out += '"';
   for (const char* c = text != nullptr ? text : ""; *c != '\0'; ++c) {
@@ -33,7 +33,7 @@ void appendString(std::string& out, const char* text) {
       out += '\\';
       out += *c;
     } else if (byte < 0x20) {
-      out += fmt::format("\\u{:04x}", byte);
+      fmt::format_to(std::back_inserter(out), "\\u{:04x}", byte);
     } else {
       out += *c;
     }
@@ -42,56 +42,64 @@ void appendString(std::string& out, const char* text) {
 }
 
 void appendKey(std::string& out, char prefix, char axis) {
-  out += ",\"";
-  if (prefix != '\0') {
-    out += prefix;
-  }
   // Not std::tolower: the output must not depend on the C locale.
-  out +=
+  const char lower =
       axis >= 'A' && axis <= 'Z' ? static_cast<char>(axis - 'A' + 'a') : axis;
-  out += "\":";
+  const char key[] = {',', '"', prefix, lower, '"', ':'};
+  if (prefix != '\0') {
+    out.append(key, sizeof key);
+  } else {
+    out.append(key, 2);
+    out.append(key + 3, 3);
+  }
 }
 
 } // namespace
 
-std::string trimmedFixed(double value, int decimals) {
-  std::string text = fmt::format("{:.{}f}", value, decimals);
-  if (text.find('.') != std::string::npos) {
-    text.erase(text.find_last_not_of('0') + 1);
-    if (text.back() == '.') {
-      text.pop_back();
-    }
-  }
-  return text == "-0" ? "0" : text;
-}
-
-std::string toolpathJsonLine(const mbrt_motion& m) {
-  std::string out = "{\"motion\":\"";
+void appendToolpathJson(std::string& out, const mbrt_motion& m) {
+  out += "{\"motion\":\"";
   out += motionName(m.kind);
   out += '"';
   for (int axis = 0; axis < m.axis_count; ++axis) {
     appendKey(out, '\0', m.axis_names[axis]);
-    appendCoordinate(out, m.end[axis], m.decimals);
+    appendTrimmedFixed(out, m.end[axis], m.decimals);
   }
   for (int axis = 0; axis < m.axis_count; ++axis) {
     appendKey(out, 'm', m.axis_names[axis]);
-    appendCoordinate(out, m.machine[axis], m.decimals);
+    appendTrimmedFixed(out, m.machine[axis], m.decimals);
   }
   if (m.kind != MBRT_MOTION_RAPID) {
-    out += fmt::format(",\"f\":{}", m.feed);
+    out += ",\"f\":";
+    // A whole feed prints as its digits, as fmt's shortest form has it.
+    if (!std::signbit(m.feed) && m.feed < 1e15 &&
+        m.feed == std::floor(m.feed)) {
+      appendInteger(out, static_cast<long long>(m.feed));
+    } else {
+      char feed[40]; // the shortest text that reads back: 25 characters
+      out.append(feed, fmt::format_to_n(feed, sizeof feed, "{}", m.feed).out);
+    }
   }
   if (m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW) {
     for (int i = 0; i < 2; ++i) {
       appendKey(out, 'c', m.center_axes[i]);
-      appendCoordinate(out, m.center[i], m.decimals);
+      appendTrimmedFixed(out, m.center[i], m.decimals);
     }
   }
   if (m.cycle != 0) {
-    out += fmt::format(",\"cycle\":\"G{}\"", m.cycle);
+    out += ",\"cycle\":\"G";
+    appendInteger(out, m.cycle);
+    out += '"';
   }
-  out += fmt::format(",\"line\":{},\"prog\":", m.line);
+  out += ",\"line\":";
+  appendInteger(out, m.line);
+  out += ",\"prog\":";
   appendString(out, m.program);
   out += "}\n";
+}
+
+std::string toolpathJsonLine(const mbrt_motion& m) {
+  std::string out;
+  appendToolpathJson(out, m);
   return out;
 }
 

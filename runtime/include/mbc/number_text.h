@@ -1,0 +1,19 @@
+// Numbers as the output files print them: the same digits on every
+// machine, whatever the C locale, appended without a string per number.
+#pragma once
+
+#include <string>
+
+namespace mbc {
+
+/// `value` fixed with `decimals` digits, then trailing zeros and '.'
+/// dropped; "-0" becomes "0".
+std::string trimmedFixed(double value, int decimals);
+
+/// trimmedFixed appended to `out`.
+void appendTrimmedFixed(std::string& out, double value, int decimals);
+
+/// The decimal digits of `value`, with '-' when negative.
+void appendInteger(std::string& out, long long value);
+
+} // namespace mbc
