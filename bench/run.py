@@ -428,7 +428,9 @@ def main():
         "In-process CPU time of one operation of the runtime that every"
         " engine calls (bench/micro, Google Benchmark), median of"
         f" {args.runs} repetitions: an NC block with a straight move, the"
-        " same into a motion sink, a half-circle arc, a block without"
+        " same into a motion sink, written as a JSONL record and as a"
+        " flattened G-code block (the writers alone are the differences),"
+        " a half-circle arc, a block without"
         " motion, the start of a statement, a common variable access and"
         " functions of the language.", "",
         *(micro_table(operations) if operations

@@ -3,10 +3,12 @@
 // function costs, beside the whole-program timings of bench/run.py.
 #include <mbc/arith.h>
 #include <mbc/runtime.h>
+#include <mbc/toolpath_json.h>
 
 #include <benchmark/benchmark.h>
 #include <cstdint>
 #include <initializer_list>
+#include <string>
 
 namespace {
 
@@ -80,6 +82,50 @@ void LinearMoveToSink(benchmark::State& state) {
 }
 
 BENCHMARK(LinearMoveToSink);
+
+/// Text gathered the way the output files gather it, 64 KiB at a time.
+void gather(std::string& text) {
+  if (text.size() > 65536) {
+    text.clear();
+  }
+}
+
+/// The same moves as `--toolpath` JSONL records: the writer's cost is the
+/// difference from LinearMoveToSink.
+void LinearMoveToJsonl(benchmark::State& state) {
+  Context ctx;
+  std::string text;
+  mbrt_set_motion_sink(
+      ctx.get(),
+      [](void* user, const mbrt_motion* motion) {
+        auto& out = *static_cast<std::string*>(user);
+        gather(out);
+        mbc::appendToolpathJson(out, *motion);
+      },
+      &text);
+  runLinearMoves(state, ctx);
+  benchmark::DoNotOptimize(text.data());
+}
+
+BENCHMARK(LinearMoveToJsonl);
+
+/// The same moves as `--gcode` blocks: the difference from LinearMove.
+void LinearMoveToGcode(benchmark::State& state) {
+  Context ctx;
+  std::string text;
+  mbrt_set_gcode_sink(
+      ctx.get(),
+      [](void* user, const char* data, size_t size) {
+        auto& out = *static_cast<std::string*>(user);
+        gather(out);
+        out.append(data, size);
+      },
+      &text);
+  runLinearMoves(state, ctx);
+  benchmark::DoNotOptimize(text.data());
+}
+
+BENCHMARK(LinearMoveToGcode);
 
 /// Half circles G02 X20 I10 and back with I-10.
 void ArcMove(benchmark::State& state) {
