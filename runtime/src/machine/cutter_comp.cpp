@@ -426,6 +426,16 @@ int stillBlocksAllowed(const mbrt_ctx& ctx) {
   return (blocks >= 3.0 && blocks <= 8.0 ? static_cast<int>(blocks) : 3) - 2;
 }
 
+/// The offset path of a virtual line through `corner` along the I J K
+/// direction `along` carries, at the side and offset of `by`.
+PlaneCurve virtualPath(PlanePoint corner, const HeldMove& along,
+                       const HeldMove& by) {
+  PlaneCurve path;
+  path.direction = unit({along.direction[0], along.direction[1]});
+  path.point = corner + vectorAt(by, path.direction);
+  return path;
+}
+
 /// G40 with I J K: the held move ends where its offset path meets that of
 /// a virtual path from its end along I J, inner corner or outer, or on its
 /// perpendicular vector where they do not meet.
@@ -433,11 +443,9 @@ PlanePoint towardDirection(const mbrt_ctx& ctx, const HeldMove& held,
                            const HeldMove& cancel) {
   const PlaneIndex plane = planeIndex(ctx);
   const PlanePoint corner = pointOf(held.end, plane);
-  PlaneCurve path;
-  path.direction = unit({cancel.direction[0], cancel.direction[1]});
-  path.point = corner + vectorAt(held, path.direction);
   const std::optional<PlanePoint> meet =
-      nearestIntersection(offsetCurve(held, plane, held), path, corner);
+      nearestIntersection(offsetCurve(held, plane, held),
+                          virtualPath(corner, cancel, held), corner);
   return meet ? *meet : perpendicularEnd(ctx, held);
 }
 
@@ -449,11 +457,9 @@ PlanePoint startAlongDirection(const mbrt_ctx& ctx, const HeldMove& startUp,
                                const HeldMove& next) {
   const PlaneIndex plane = planeIndex(ctx);
   const PlanePoint corner = pointOf(startUp.end, plane);
-  PlaneCurve path;
-  path.direction = unit({startUp.direction[0], startUp.direction[1]});
-  path.point = corner + vectorAt(startUp, path.direction);
   const std::optional<PlanePoint> meet =
-      nearestIntersection(path, offsetCurve(next, plane, startUp), corner);
+      nearestIntersection(virtualPath(corner, startUp, startUp),
+                          offsetCurve(next, plane, startUp), corner);
   return meet ? *meet
               : corner + vectorAt(startUp, tangentAt(next, plane, corner));
 }
@@ -543,14 +549,15 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   }
   // An inside arc no larger than the offset: on the arc's centre the
   // control stops with PS0038, inside out with PS0041.
-  if (move.arc && offsetRadius(move, plane, move) < 0.5) {
+  const double toolRadius = move.arc ? offsetRadius(move, plane, move) : 0.0;
+  if (move.arc && toolRadius < 0.5) {
     // The tool stops at the end of the move before, which has no corner.
     if (const mbrt_status status = releaseHeldMoves(ctx)) {
       return status;
     }
     const double radius =
         length(pointOf(move.start, plane) - centerOf(move)) / ctx.scale();
-    return offsetRadius(move, plane, move) > -0.5
+    return toolRadius > -0.5
                ? raise(ctx, AlarmId::InterferenceInCircle,
                        fmt::format("the tool centre would stand on the "
                                    "arc's centre: radius {} = offset {}",

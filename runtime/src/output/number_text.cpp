@@ -68,10 +68,6 @@ void appendInteger(std::string& out, long long value) {
 }
 
 void appendTrimmedFixed(std::string& out, double value, int decimals) {
-  if (value == 0.0) {
-    out += '0';
-    return;
-  }
   if (appendIncrements(out, value, decimals)) {
     return;
   }
