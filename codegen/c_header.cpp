@@ -1,6 +1,6 @@
 #include "codegen/c_header.h"
 
-#include "codegen/emit_module.h"
+#include "codegen/entry_points.h"
 
 #include <fmt/format.h>
 

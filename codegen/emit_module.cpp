@@ -4,10 +4,10 @@
 #include "codegen/emit_module.h"
 
 #include "codegen/emitter.h"
+#include "codegen/entry_points.h"
 #include <mbc/addresses.h>
 #include <mbc/runtime.h>
 
-#include <fmt/format.h>
 #include <llvm/IR/Intrinsics.h>
 
 namespace mbc::codegen {
@@ -278,14 +278,6 @@ bool hasUnoptimizedBody(const ir::Module& module) {
     }
   }
   return false;
-}
-
-bool hasEntryPoint(const ir::Function& f) {
-  return f.number >= 0 && !isNamedProgramNumber(f.number);
-}
-
-std::string entryPointName(int number) {
-  return fmt::format("mbc_O{}", number);
 }
 
 std::unique_ptr<llvm::Module> emitModule(const ir::Module& module,

@@ -2,6 +2,7 @@
 #include "codegen/object_file.h"
 
 #include "codegen/abi.h"
+#include "codegen/emit_module.h"
 #include "codegen/link_objects.h"
 #include "codegen/native_target.h"
 #include "codegen/optimize.h"

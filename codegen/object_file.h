@@ -4,22 +4,12 @@
 // shared libraries alike).
 #pragma once
 
-#include "codegen/emit_module.h"
+#include "codegen/object_options.h"
 #include "ir/ir.h"
 
 #include <string>
 
 namespace mbc::codegen {
-
-enum class FileKind { LlvmIr, Assembly, Object };
-
-struct ObjectOptions {
-  EmitOptions emit;
-  int optLevel = 2;
-  /// The CPU to tune and select instructions for: "" for the architecture's
-  /// generic one, "native" for this machine's.
-  std::string cpu;
-};
 
 /// Writes `path` ("-" is standard output) through a temporary file renamed
 /// into place, so that a failed compile leaves no half-written output.

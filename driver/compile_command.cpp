@@ -1,31 +1,27 @@
 // `mbc compile` and `mbc build` (see compile_command.h). build links the
 // object with the run support and the runtime, compile --shared with the
-// runtime (static libraries, link_libraries.h), by the system C++ compiler
+// runtime (static libraries, own_libraries.h), by the system C++ compiler
 // driver ($CXX, default c++).
 #include "driver/compile_command.h"
 
 #include "codegen/c_header.h"
-#include "codegen/object_file.h"
+#include "driver/code_generator.h"
 #include "driver/ir_pipeline.h"
-#include "driver/link_libraries.h"
 #include "driver/output_files.h"
+#include "driver/own_libraries.h"
+#include "driver/run_process.h"
 #include "ir/printer.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "build_paths.h" // MBC_SANITIZE
-
-extern char** environ;
 
 namespace mbc::driver {
 
@@ -56,26 +52,6 @@ int reportFailure(const std::string& error) {
   return 4;
 }
 
-// Runs argv[0] (searched in PATH) and waits: its exit status, or -1.
-int runProcess(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) {
-    argv.push_back(const_cast<char*>(a.c_str()));
-  }
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) !=
-      0) {
-    return -1;
-  }
-  int status = 0;
-  pid_t done = 0;
-  do {
-    done = waitpid(pid, &status, 0);
-  } while (done < 0 && errno == EINTR);
-  return done == pid && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 /// What is linked with the object, given its path and the scratch
 /// directory it is in; empty when they could not be prepared.
 using LinkInputs = std::function<std::vector<std::string>(
@@ -96,8 +72,7 @@ int compileAndLink(const ir::Module& module, const codegen::ObjectOptions& opts,
   std::string error;
   std::vector<std::string> link;
   int status = 0;
-  if (!codegen::writeCompiled(module, opts, codegen::FileKind::Object, object,
-                              error)) {
+  if (!writeCompiled(module, opts, codegen::FileKind::Object, object, error)) {
     status = reportFailure(error);
   } else if (link = inputs(object, dir); link.empty()) {
     status = reportFailure("cannot write the linker's inputs in " + dir);
@@ -154,7 +129,7 @@ int compileCommand(const Options& o) {
     // The whole runtime goes in, since a ctypes user calls any of it; only
     // the C ABI is exported, so that the runtime's C++ symbols cannot clash
     // with the host process's.
-    const std::string runtime = linkLibraries().runtime;
+    const std::string runtime = ownLibraries().runtime;
     status = compileAndLink(
         module, opts, o,
         [&](const std::string& object, const std::string& dir) {
@@ -177,8 +152,7 @@ int compileCommand(const Options& o) {
     }
   } else {
     std::string error;
-    if (!codegen::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
-                                error)) {
+    if (!writeCompiled(module, opts, fileKind(o.emit), o.outputPath, error)) {
       status = reportFailure(error);
     }
   }
@@ -209,7 +183,7 @@ int buildCommand(const Options& options) {
   opts.emit.debugInfo = o.debugInfo;
   opts.optLevel = o.optLevel;
   opts.cpu = o.cpu;
-  const LinkLibraries libs = linkLibraries();
+  const OwnLibraries& libs = ownLibraries();
   return compileAndLink(
       module, opts, o, [&](const std::string& object, const std::string&) {
         return std::vector<std::string>{object, libs.runner, libs.runtime};

@@ -141,6 +141,8 @@ bool checkOptions(const Options& o, std::string& error) {
   } else if (o.emit != "obj" && o.emit != "asm" && o.emit != "llvm" &&
              o.emit != "ir") {
     error = fmt::format("unknown --emit '{}' (ir, llvm, asm or obj)", o.emit);
+  } else if (o.noCache && o.command != "run" && o.command != "batch") {
+    error = "--no-cache is only available with run and batch";
   } else if (o.shared && o.command != "compile") {
     error = "--shared is only available with compile";
   } else if (o.shared && o.emit != "obj") {
@@ -175,13 +177,14 @@ LoadOptions loadOptions(const Options& o) {
 
 std::string usageText() {
   return "usage: mbc run FILE... [--engine jit|interp|ir] [-O0..-O3]\n" +
-         runOptionsUsage(8) + "        [--strict]\n" +
+         runOptionsUsage(8) + "        [--strict] [--no-cache]\n" +
          "        [--no-opt] [--disable-pass NAME]... [--verify-each]\n"
          "       mbc batch FILE... --params TABLE.csv --out DIR [-j N]\n"
          "        [--shard I/N] [--combined] [--engine jit|interp|ir]\n"
          "        [-O0..-O3] [--main O1234] [--set '#N=V']...\n"
          "        [--arg A=1.5]... [--machine PATH] [--max-blocks N]\n"
          "        [--max-output SIZE] [--block-skip[=N]] [--trace] [--strict]\n"
+         "        [--no-cache]\n"
          "       mbc check FILE... [--machine PATH]\n"
          "       mbc emit-ir [-x nc|mbir] FILE... [--no-opt] [--trace]\n"
          "        [--disable-pass NAME]... [--verify-each] [--no-strict]\n"
@@ -227,6 +230,8 @@ std::optional<Options> parseOptions(int argc, char** argv, std::string& error) {
       o.verbose = true;
     } else if (a == "--shared") {
       o.shared = true;
+    } else if (a == "--no-cache") {
+      o.noCache = true;
     } else if (a == "--combined") {
       o.combined = true;
     } else if (a == "--strict" || a == "--no-strict") {

@@ -16,10 +16,11 @@ struct Options {
   std::vector<std::string> files;
   RunOptions run;
   std::string engine = "jit";
-  int optLevel = 2;                        // -O0 ... -O3: the LLVM pipeline
-  bool debugInfo = false;                  // -g
-  bool noOpt = false;                      // no IR passes
-  bool verifyEach = false;                 // verify the IR after every pass
+  int optLevel = 2;        // -O0 ... -O3: the LLVM pipeline
+  bool debugInfo = false;  // -g
+  bool noCache = false;    // --no-cache (run, batch): the JIT skips the cache
+  bool noOpt = false;      // no IR passes
+  bool verifyEach = false; // verify the IR after every pass
   std::vector<std::string> disabledPasses; // --disable-pass NAME
   std::string language = "nc";             // -x nc|mbir (emit-ir)
   std::string outputPath;                  // -o (compile, build)

@@ -2,11 +2,13 @@
 #include "driver/prepared_program.h"
 
 #include "driver/ir_pipeline.h"
+#include "driver/jit_compiler.h"
 #include "interp/interpreter.h"
 #include "ir/evaluator.h"
 #include <mbc/addresses.h>
 
 #include <cstdio>
+#include <optional>
 
 namespace mbc::driver {
 
@@ -53,6 +55,14 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
     }
   }
   start = std::chrono::steady_clock::now();
+  std::optional<JitCompiler> jit;
+  if (engine_ == "jit") {
+    jit.emplace(o, cu_.sources);
+    if ((code_ = jit->cached())) {
+      phases.emplace_back("cache", millisecondsSince(start));
+      return 0;
+    }
+  }
   if (engine_ != "interp") {
     if (!buildModule(cu_, o, module_) || !optimizeModule(module_, o)) {
       return 4;
@@ -60,14 +70,11 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
     phases.emplace_back("IR", millisecondsSince(start));
   }
   start = std::chrono::steady_clock::now();
-  if (engine_ == "jit") {
+  if (jit) {
     std::string error;
-    codegen::JitOptions jo;
-    jo.optLevel = o.optLevel;
-    jo.debugInfo = o.debugInfo;
-    jit_ = codegen::Jit::compile(module_, jo, error);
-    if (!jit_) {
-      std::fprintf(stderr, "mbc: internal error: %s\n", error.c_str());
+    code_ = jit->compile(module_, error);
+    if (!code_) {
+      std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
       return 4;
     }
     phases.emplace_back("code generation", millisecondsSince(start));
@@ -78,8 +85,8 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
 mbrt_status PreparedProgram::run(mbrt_ctx* ctx) const {
   const mbrt_program_table names{names_.data(), names_.size()};
   mbrt_name_programs(ctx, &names);
-  if (jit_) {
-    return mbrt_run_body(ctx, &jit_->programs()->programs[mainIndex_]);
+  if (code_) {
+    return mbrt_run_body(ctx, &code_->programs()->programs[mainIndex_]);
   }
   if (engine_ == "ir") {
     return ir::evaluate(module_, mainIndex_, ctx);

@@ -1,12 +1,12 @@
 // The input compiled for the chosen engine, ready to run its main program
 // any number of times, from any number of threads, each with its own
 // context: the AST for the interpreter, the IR module for the IR
-// evaluator, the JIT's code. `mbc run` runs it once, `mbc batch` once per
-// row of its table.
+// evaluator, the JIT's code (generated, or found in the cache). `mbc run` runs
+// it once, `mbc batch` once per row of its table.
 #pragma once
 
-#include "codegen/jit.h"
 #include "driver/compile_unit.h"
+#include "driver/native_code.h"
 #include "driver/options.h"
 #include "driver/run_session.h"
 #include "ir/ir.h"
@@ -38,7 +38,7 @@ private:
   std::string engine_;
   CompiledUnit cu_;
   ir::Module module_;
-  std::unique_ptr<codegen::Jit> jit_;
+  std::unique_ptr<NativeCode> code_;
   std::vector<mbrt_program> names_; // the named programs, for traces
   int mainIndex_ = -1;
 };

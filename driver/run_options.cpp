@@ -19,6 +19,25 @@ bool parseNumber(std::string_view text, double& out) {
          std::isfinite(out);
 }
 
+bool parseSize(std::string_view text, std::uint64_t& out) {
+  double unit = 1;
+  if (!text.empty()) {
+    const char suffix = text.back();
+    const std::string_view units = "KMGT";
+    const auto pos = units.find(static_cast<char>(suffix & ~0x20));
+    if (pos != std::string_view::npos) {
+      unit = static_cast<double>(std::uint64_t{1} << (10 * (pos + 1)));
+      text.remove_suffix(1);
+    }
+  }
+  double n = 0;
+  if (!parseNumber(text, n) || n * unit < 1 || n * unit > 0x1p63) {
+    return false;
+  }
+  out = static_cast<std::uint64_t>(n * unit);
+  return true;
+}
+
 namespace {
 
 // "#N=V" (the '#' is optional)
@@ -43,26 +62,6 @@ bool parseArg(std::string_view text, std::pair<char, double>& out) {
   }
   out.first = c;
   return c >= 'A' && c <= 'Z' && parseNumber(text.substr(2), out.second);
-}
-
-// "4096", "64K", "512M", "2G" (1024-based)
-bool parseSize(std::string_view text, std::uint64_t& out) {
-  double unit = 1;
-  if (!text.empty()) {
-    const char suffix = text.back();
-    const std::string_view units = "KMGT";
-    const auto pos = units.find(static_cast<char>(suffix & ~0x20));
-    if (pos != std::string_view::npos) {
-      unit = static_cast<double>(std::uint64_t{1} << (10 * (pos + 1)));
-      text.remove_suffix(1);
-    }
-  }
-  double n = 0;
-  if (!parseNumber(text, n) || n * unit < 1 || n * unit > 0x1p63) {
-    return false;
-  }
-  out = static_cast<std::uint64_t>(n * unit);
-  return true;
 }
 
 bool setValue(RunOptions& o, const std::string& name, const std::string& value,

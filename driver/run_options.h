@@ -41,4 +41,7 @@ std::string runOptionsUsage(int indent);
 /// Reads a number the way the C locale writes it, whatever the locale.
 bool parseNumber(std::string_view text, double& out);
 
+/// A size in bytes: "4096", "64K", "512M", "2G" (1024-based), at least 1.
+bool parseSize(std::string_view text, std::uint64_t& out);
+
 } // namespace mbc::driver

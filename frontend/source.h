@@ -29,6 +29,10 @@ public:
   /// Adds a file's text; returns its id.
   std::uint32_t add(std::string name, std::string text);
 
+  std::uint32_t fileCount() const {
+    return static_cast<std::uint32_t>(files_.size());
+  }
+
   const std::string& name(std::uint32_t file) const {
     return files_[file].name;
   }

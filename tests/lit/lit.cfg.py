@@ -26,3 +26,6 @@ for name in passes:
         ("%only-" + name, " ".join(only_pass(name, passes))))
 config.environment["PATH"] = os.pathsep.join(
     [config.llvm_tools_dir, config.environment.get("PATH", "")])
+# The suite's cache of compiled code (tests/CMakeLists.txt), not the user's.
+if "MBC_CACHE_DIR" in os.environ:
+    config.environment["MBC_CACHE_DIR"] = os.environ["MBC_CACHE_DIR"]

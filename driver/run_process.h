@@ -1,0 +1,13 @@
+// Running another program (the linker) and waiting for it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace mbc::driver {
+
+/// Runs args[0] (searched in PATH) with the rest as its arguments and
+/// waits: its exit status, or -1 when it could not run or did not exit.
+int runProcess(const std::vector<std::string>& args);
+
+} // namespace mbc::driver
