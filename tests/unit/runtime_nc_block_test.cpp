@@ -41,6 +41,22 @@ TEST(RuntimeNcBlock, AbsoluteAndIncrementalMoves) {
   EXPECT_EQ(stats.blocks, 3u);
 }
 
+// The box holds the points of both input units, in the profile's unit.
+TEST(RuntimeNcBlock, TheBoxSpansBothInputUnits) {
+  Machine m;
+  ASSERT_EQ(m.block("G21 G90 G00 X10. Y-5."), 0);
+  ASSERT_EQ(m.block("G20 X1. Y0.5"), 0);
+  ASSERT_EQ(m.block("G21 X-3."), 0);
+  mbrt_stats stats{};
+  mbrt_get_stats(m.ctx(), &stats);
+  EXPECT_NEAR(stats.box_min[0], -3.0, 1e-9);
+  EXPECT_NEAR(stats.box_max[0], 25.4, 1e-9);
+  EXPECT_NEAR(stats.box_min[1], -5.0, 1e-9);
+  EXPECT_NEAR(stats.box_max[1], 12.7, 1e-9);
+  EXPECT_EQ(stats.box_min[2], 0.0);
+  EXPECT_EQ(stats.box_max[2], 0.0);
+}
+
 TEST(RuntimeNcBlock, LiteralsWithoutDecimalPointAreIncrements) {
   Machine m;
   ASSERT_EQ(m.block("G01 X10 Y10. F100"), 0);

@@ -284,7 +284,8 @@ void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
   out->moves = ctx->moves;
   out->optional_stops = ctx->optionalStops;
   out->main_m99 = ctx->mainM99;
-  // Stats are kept in mm: the summary speaks the profile's unit.
+  // Lengths are kept in mm, the box in counts: the summary speaks the
+  // profile's unit.
   const double unit = ctx->profile.inch ? 25.4 : 1.0;
   const RunStats& stats = ctx->stats;
   out->unit = ctx->profile.inch ? "inch" : "mm";
@@ -294,8 +295,22 @@ void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
   out->axis_count = ctx->axisCount();
   out->axis_names = ctx->profile.axes.c_str();
   for (int axis = 0; axis < ctx->axisCount(); ++axis) {
+    double low = 0.0;
+    double high = 0.0;
+    bool any = false;
+    for (const bool inch : {false, true}) {
+      const CountsBox& box = stats.box[inch];
+      if (box.any) {
+        const double scale = ctx->boxScale(axis, inch);
+        low =
+            any ? std::min(low, box.low[axis] / scale) : box.low[axis] / scale;
+        high = any ? std::max(high, box.high[axis] / scale)
+                   : box.high[axis] / scale;
+        any = true;
+      }
+    }
     const double axisUnit = ctx->isRotary(axis) ? 1.0 : unit; // degrees
-    out->box_min[axis] = stats.low[axis] / axisUnit;
-    out->box_max[axis] = stats.high[axis] / axisUnit;
+    out->box_min[axis] = low / axisUnit;
+    out->box_max[axis] = high / axisUnit;
   }
 }

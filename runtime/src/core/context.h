@@ -179,13 +179,23 @@ struct CompensationState {
   bool codeInBlock = false;      // the block has G40, G41 or G42
 };
 
-/// What the summary tells about the toolpath (mbrt_stats), in mm.
+/// The toolpath's box in workpiece counts of one input unit (G20 and G21
+/// change what a count is). A move costs no division: the summary divides
+/// the extremes, and since dividing by a positive number keeps the order,
+/// that is the box of the divided points.
+struct CountsBox {
+  bool any = false;
+  AxisValues low{};
+  AxisValues high{};
+};
+
+/// What the summary tells about the toolpath (mbrt_stats): lengths in mm,
+/// the box in counts of G21 ([0]) and of G20 ([1]).
 struct RunStats {
   double feedLength = 0.0;
   double rapidLength = 0.0;
   double seconds = 0.0;
-  AxisValues low{};
-  AxisValues high{};
+  std::array<CountsBox, 2> box{};
 };
 
 /// A G66/G66.1 (or modal custom G code) in force: what it calls.
@@ -354,15 +364,20 @@ struct mbrt_ctx {
     return (counts % turn + turn) % turn;
   }
 
-  /// Counts per unit of an axis in the summary's box: mm, or degrees.
-  double boxScale(int axis) const {
-    return isRotary(axis) ? mbc::rt::kCountsPerDegree : countsPerMm();
+  /// Counts per unit of an axis in the summary's box, in G20 (`inch`) or
+  /// G21: mm, or degrees.
+  double boxScale(int axis, bool inch) const {
+    return isRotary(axis) ? mbc::rt::kCountsPerDegree : countsPerMm(inch);
   }
 
   int decimals() const { return modal.inch ? 4 : 3; }
 
   /// Counts per mm, for parameters given in mm whatever the input unit.
-  double countsPerMm() const { return modal.inch ? 10000.0 / 25.4 : 1000.0; }
+  double countsPerMm() const { return countsPerMm(modal.inch); }
+
+  static double countsPerMm(bool inch) {
+    return inch ? 10000.0 / 25.4 : 1000.0;
+  }
 
   mbc::rt::LocalLevel& locals() { return levels.back(); }
 

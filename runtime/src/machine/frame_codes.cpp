@@ -283,9 +283,9 @@ mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
   if (frameChanged) {
     resyncProgram(ctx);
   }
-  const int mode = words.lengthCode != 0        ? words.lengthCode
-                   : words.word('H') != nullptr ? ctx.frames.lengthMode
-                                                : 0;
+  const int mode = words.lengthCode != 0 ? words.lengthCode
+                   : words.hasH          ? ctx.frames.lengthMode
+                                         : 0;
   if (mode == 0 || (mode == 49 && ctx.frames.lengthMode == 49)) {
     return 0;
   }

@@ -22,6 +22,7 @@ struct FrameWords {
   bool cancelScaling = false;  // G50
   bool cancelRotation = false; // G69
   int lengthCode = 0;          // 43, 44, 49
+  bool hasH = false;           // an H word: a new tool length offset
   const MotionWords* axes = nullptr;
   const mbrt_word* words = nullptr; // the whole block
   std::size_t count = 0;
@@ -45,7 +46,7 @@ inline mbrt_status executeFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
                                      bool* lengthChanged) {
   *lengthChanged = false;
   if (words.code == 0 && !words.cancelScaling && !words.cancelRotation &&
-      words.lengthCode == 0 && words.word('H') == nullptr) {
+      words.lengthCode == 0 && !words.hasH) {
     return 0;
   }
   return applyFrameCodes(ctx, words, lengthChanged);

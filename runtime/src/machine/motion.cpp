@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <numbers>
 
 #include "cutter_comp.h"
@@ -119,19 +120,22 @@ void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid, double timed,
   (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += travel.mm;
 }
 
-/// Widens the toolpath's bounding box (mm; degrees on rotary axes) by a
-/// workpiece point (counts).
-void widenBox(mbrt_ctx& ctx, int axis, double counts, bool first) {
-  const double mm = counts / ctx.boxScale(axis);
-  RunStats& stats = ctx.stats;
-  stats.low[axis] = first ? mm : std::min(stats.low[axis], mm);
-  stats.high[axis] = first ? mm : std::max(stats.high[axis], mm);
+/// Widens the toolpath's bounding box by a coordinate of a workpiece point
+/// (counts) that follows the first.
+void widenBox(mbrt_ctx& ctx, int axis, double counts) {
+  CountsBox& box = ctx.stats.box[ctx.modal.inch];
+  box.low[axis] = std::min(box.low[axis], counts);
+  box.high[axis] = std::max(box.high[axis], counts);
 }
 
-void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
+void widenBox(mbrt_ctx& ctx, const AxisCounts& work) {
+  CountsBox& box = ctx.stats.box[ctx.modal.inch];
+  const bool first = !box.any;
+  box.any = true;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    widenBox(ctx, axis, static_cast<double>(ctx.shown(axis, work[axis])),
-             first);
+    const auto counts = static_cast<double>(ctx.shown(axis, work[axis]));
+    box.low[axis] = first ? counts : std::min(box.low[axis], counts);
+    box.high[axis] = first ? counts : std::max(box.high[axis], counts);
   }
 }
 
@@ -139,14 +143,14 @@ void widenBox(mbrt_ctx& ctx, const AxisCounts& work, bool first) {
 /// motion goes to the sink with its arc centre in workpiece counts.
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, const MoveOrigin& origin) {
-  widenBox(ctx, work, ctx.moves == 0);
-  const AxisCounts previous = ctx.machine;
-  ctx.machine = machine;
+  widenBox(ctx, work);
   ++ctx.moves;
   if (ctx.motionSink.fn == nullptr) {
+    ctx.machine = machine;
     return;
   }
-  const AxisCounts start = machineToWork(ctx, previous);
+  const AxisCounts start = machineToWork(ctx, ctx.machine);
+  ctx.machine = machine;
   const double scale = ctx.scale();
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
   mbrt_motion motion{};
@@ -236,14 +240,27 @@ Travel travel(const mbrt_ctx& ctx, const AxisCounts& machine,
 /// 0, 90, 180 or 270 degrees.
 void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
                    double radius, double sweep, bool clockwise) {
+  // The cosines and sines of the quarters as the C library gives them (cos
+  // pi/2 is not 0), computed once: they cost more than the rest per arc.
+  struct Quarter {
+    double angle, cos, sin;
+  };
+
+  static const std::array<Quarter, 4> kQuarters = [] {
+    std::array<Quarter, 4> quarters{};
+    for (int i = 0; i < 4; ++i) {
+      const double angle = i * std::numbers::pi / 2.0;
+      quarters[i] = {angle, std::cos(angle), std::sin(angle)};
+    }
+    return quarters;
+  }();
   const double begin = std::atan2(start.y - center.y, start.x - center.x);
-  for (int quarter = 0; quarter < 4; ++quarter) {
-    const double angle = quarter * std::numbers::pi / 2.0;
-    double travel = clockwise ? begin - angle : angle - begin;
+  for (const Quarter& quarter : kQuarters) {
+    double travel = clockwise ? begin - quarter.angle : quarter.angle - begin;
     travel = std::fmod(travel + 4.0 * std::numbers::pi, 2.0 * std::numbers::pi);
     if (travel <= sweep) {
-      widenBox(ctx, p, center.x + radius * std::cos(angle), false);
-      widenBox(ctx, q, center.y + radius * std::sin(angle), false);
+      widenBox(ctx, p, center.x + radius * quarter.cos);
+      widenBox(ctx, q, center.y + radius * quarter.sin);
     }
   }
 }
@@ -319,7 +336,9 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   AxisValues centerPoint{};
   centerPoint[p] = center.x;
   centerPoint[q] = center.y;
-  Point workCenter = planePoint(transformPoint(ctx, centerPoint), p, q);
+  Point workCenter = planePoint(
+      ctx.frames.transforms() ? transformPoint(ctx, centerPoint) : centerPoint,
+      p, q);
   workCenter.x += static_cast<double>(ctx.frames.local[p]);
   workCenter.y += static_cast<double>(ctx.frames.local[q]);
   const bool turnsClockwise = clockwise != frame.reversed;
@@ -337,7 +356,8 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   }
   const double radius =
       std::hypot(from.x - center.x, from.y - center.y) * frame.scale;
-  const double arc = radius * sweepBetween(from, to, center, clockwise);
+  const double sweep = sweepBetween(from, to, center, clockwise);
+  const double arc = radius * sweep;
   const AxisCounts machine = workToMachine(ctx, work);
   const MoveOrigin origin = blockOrigin(ctx);
   advanceClock(ctx,
@@ -351,7 +371,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   widenBoxByArc(
       ctx, p, q, workCenter,
       {static_cast<double>(workStart[p]), static_cast<double>(workStart[q])},
-      radius, sweepBetween(from, to, center, clockwise), turnsClockwise);
+      radius, sweep, turnsClockwise);
   return 0;
 }
 

@@ -702,7 +702,8 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   return executeBlockMotion(ctx, motion);
 }
 
-/// P, L and what kind of G codes the block holds, before anything executes.
+/// P, L, Q, H and what kind of G codes the block holds, before anything
+/// executes.
 void scanWords(const mbrt_word* words, size_t count, Block& block) {
   for (size_t i = 0; i < count; ++i) {
     const char letter = words[i].letter;
@@ -715,6 +716,8 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
           (letter == 'P' && words[i].kind == MBRT_WORD_DEC_LITERAL);
     } else if (letter == 'Q') {
       block.qWritten = numeric(words[i].value);
+    } else if (letter == 'H') {
+      block.frames.hasH = true;
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
       const double tenths = gTenths(words[i]);
       if (!setsOneField(tenths) || block.oneFieldCount == kMaxOneFieldCodes) {
