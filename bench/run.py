@@ -70,8 +70,11 @@ def measure(command, runs):
         phase_runs.append(phases_of(stderr))
         found = MOVES.search(stderr)
         moves = int(found.group(2)) if found else 0
+    # A first run that fills the cache of compiled code has phases the
+    # others do not: the medians are of the phases of every run.
     phases = {name: statistics.median(p[name] for p in phase_runs)
-              for name in phase_runs[0]}
+              for name in phase_runs[0]
+              if all(name in p for p in phase_runs)}
     return {"wall": statistics.median(walls), "peak": peak, "phases": phases,
             "moves": moves}
 
@@ -106,8 +109,10 @@ def hand_of(mbc, workload):
 def engines(mbc, workload, runs, exe):
     base = [mbc, "run", str(workload), "--time", "--dprnt", "/dev/null"]
     results = {}
-    for engine in ("interp", "ir", "jit"):
+    for engine in ("interp", "ir"):
         results[engine] = measure(base + ["--engine", engine], runs)
+    # Compiled each time: "jit incl. compile" is a first run's cost.
+    results["jit"] = measure(base + ["--engine", "jit", "--no-cache"], runs)
     results["aot"] = measure([str(exe), "--time", "--dprnt", "/dev/null"],
                              runs)
     if hand := hand_of(mbc, workload):
@@ -184,14 +189,54 @@ def startup(mbc, runs, work):
     subprocess.run([mbc, "build", str(example), "-o", str(exe)], check=True,
                    stderr=subprocess.DEVNULL)
     base = [mbc, "run", str(example), "--time", "--dprnt", "/dev/null"]
+    # The cache holds the -O2 code after its first run.
+    run_once(base)
     rows = {}
-    for name, command in (("interp", base + ["--engine", "interp"]),
-                          ("jit", base + ["--engine", "jit"]),
-                          ("jit -O0", base + ["--engine", "jit", "-O0"]),
-                          ("aot", [str(exe), "--time", "--dprnt",
-                                   "/dev/null"])):
-        rows[name] = measure(command, runs)
+    for name, command in (
+            ("interp", base + ["--engine", "interp"]),
+            ("ir", base + ["--engine", "ir"]),
+            ("jit, cold", base + ["--no-cache"]),
+            ("jit -O0, cold", base + ["--no-cache", "-O0"]),
+            ("jit, cache hit", base),
+            ("aot (mbc build)", [str(exe), "--time", "--dprnt", "/dev/null"])):
+        rows[name] = measure(command, max(runs, 15))
     return rows
+
+
+def end_to_end(mbc, workloads, runs, work):
+    """Whole-process wall s of `mbc run` (code in the cache) with no sink,
+    the JSONL toolpath and the JSONL toolpath compiled anew, and of rs274
+    on the twin, per toolpath workload."""
+    rows = {}
+    sink = str(Path(work) / "out.jsonl")
+    for workload in workloads:
+        ngc = HERE / "ngc" / f"{workload.stem}.ngc"
+        if not ngc.exists():
+            continue
+        base = [mbc, "run", str(workload), "--dprnt", "/dev/null"]
+        run_once(base)
+        rows[workload.stem] = {
+            "null": measure(base, runs)["wall"],
+            "jsonl": measure(base + ["--toolpath", sink], runs)["wall"],
+            "cold": measure(base + ["--toolpath", sink, "--no-cache"],
+                            runs)["wall"],
+            "rs274": statistics.median(
+                run_once(["rs274", "-g", str(ngc), "/dev/null"])[0]
+                for _ in range(3))}
+    return rows
+
+
+def end_to_end_table(rows):
+    lines = ["| workload | rs274 ms | mbc, null sink ms | mbc, JSONL ms |"
+             " mbc, JSONL, compiled anew ms | rs274 / null | rs274 / JSONL |"
+             " rs274 / JSONL anew |", "|---|---|---|---|---|---|---|---|"]
+    for name, r in rows.items():
+        lines.append(
+            f"| {name} | {r['rs274'] * 1000:.0f} | {r['null'] * 1000:.1f} | "
+            f"{r['jsonl'] * 1000:.1f} | {r['cold'] * 1000:.1f} | "
+            f"{ratio(r['rs274'], r['null'])} | {ratio(r['rs274'], r['jsonl'])}"
+            f" | {ratio(r['rs274'], r['cold'])} |")
+    return lines
 
 
 BATCH_ROWS = 10000
@@ -264,6 +309,17 @@ def micro_table(medians):
             *(f"| {name} | {ns:.1f} |" for name, ns in medians.items())]
 
 
+def writer_table(medians):
+    """The writers alone: ns per record less the same moves without them."""
+    pairs = (("JSONL toolpath record", "LinearMoveToJsonl",
+              "LinearMoveToSink"),
+             ("flattened G-code block", "LinearMoveToGcode", "LinearMove"))
+    return ["| writer | ns per move |", "|---|---|",
+            *(f"| {name} | {medians[with_] - medians[without]:.1f} |"
+              for name, with_, without in pairs
+              if with_ in medians and without in medians)]
+
+
 def ms(value):
     return f"{value:.1f}"
 
@@ -334,13 +390,13 @@ def compile_table(table, timeout):
 
 
 def startup_table(rows):
-    lines = ["| engine | process wall ms | code generation ms | run ms |",
-             "|---|---|---|---|"]
+    lines = ["| engine | process wall ms | code generation ms | cache ms |"
+             " run ms |", "|---|---|---|---|---|"]
     for name, r in rows.items():
-        generation = r["phases"].get("code generation")
-        lines.append(f"| {name} | {r['wall'] * 1000:.1f} | "
-                     f"{ms(generation) if generation is not None else '-'} | "
-                     f"{ms(r['phases']['run'])} |")
+        cells = [r["phases"].get(phase)
+                 for phase in ("code generation", "cache", "run")]
+        lines.append(f"| {name} | {r['wall'] * 1000:.1f} | " + " | ".join(
+            ms(c) if c is not None else "-" for c in cells) + " |")
     return lines
 
 
@@ -358,6 +414,8 @@ def main():
     has_valgrind = shutil.which("valgrind") is not None
     results, rs274, counts, modes = {}, {}, {}, {}
     with tempfile.TemporaryDirectory() as work:
+        # A cache of this run's own, empty at first, not the user's.
+        os.environ["MBC_CACHE_DIR"] = str(Path(work) / "cache")
         startup_rs274 = rs274_startup(args.runs, work) if has_rs274 else 0.0
         for workload in sorted((HERE / "workloads").glob("*.nc")):
             name = workload.stem
@@ -382,6 +440,9 @@ def main():
                 modes[name] = output_modes(mbc, workload, args.runs, work)
         compiles = compile_scaling(mbc, work, args.compile_timeout)
         small = startup(mbc, args.runs, work)
+        whole = end_to_end(mbc, [HERE / "workloads" / f"{name}.nc"
+                                 for name in modes], args.runs,
+                           work) if has_rs274 else {}
         batch = batch_throughput(mbc, args.runs, work)
         operations = micro(args.micro, args.runs) if args.micro else {}
     report = "\n".join([
@@ -410,9 +471,21 @@ def main():
         " calling 40-line subprograms): wall time and peak memory, one run"
         " each.", "",
         *compile_table(compiles, args.compile_timeout), "",
+        "## End to end", "",
+        "Whole processes as a user runs them, median of"
+        f" {args.runs} (rs274: of 3): `mbc run` of the workload with its"
+        " code in the cache (the second run of an unchanged program) with"
+        " no toolpath output and with the JSONL toolpath, the JSONL run"
+        " compiled anew (`--no-cache`), and LinuxCNC's rs274 on the .ngc"
+        " twin, its start-up included.", "",
+        *(end_to_end_table(whole) if whole else ["rs274 was not installed."]),
+        "",
         "## Start-up for a small macro", "",
         "examples/bolt_circle.nc, whole process, median of"
-        f" {args.runs}.", "",
+        f" {max(args.runs, 15)}: the interpreter and the IR evaluator, the"
+        " JIT compiling (`--no-cache`, which loads LLVM) or loading its"
+        " code from the cache (which does not), and the executable of"
+        " `mbc build`.", "",
         *startup_table(small), "",
         "## Batch throughput", "",
         f"`mbc batch` of a {BATCH_ROWS}-row table of examples/sim-loop/"
@@ -424,6 +497,12 @@ def main():
         " rows' results in one combined JSONL file or in four files per"
         " row.", "",
         *batch_table(batch), "",
+        "## Writers alone", "",
+        "What writing one move costs beyond making it (bench/micro, the"
+        " differences below): the run phase's share of the output modes"
+        " above comes from these and from the kernel's write.", "",
+        *(writer_table(operations) if operations
+          else ["bench/micro was not built (MBC_MICRO_BENCH)."]), "",
         "## Runtime operations", "",
         "In-process CPU time of one operation of the runtime that every"
         " engine calls (bench/micro, Google Benchmark), median of"
