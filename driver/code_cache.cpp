@@ -1,5 +1,6 @@
 #include "driver/code_cache.h"
 
+#include "driver/file_bytes.h"
 #include "driver/run_options.h"
 
 #include <algorithm>
@@ -45,42 +46,6 @@ Trailer trailerOf(const std::string& bytes, std::size_t length) {
   t.hashHigh = h.high64;
   t.hashLow = h.low64;
   return t;
-}
-
-bool readAll(int fd, std::string& out) {
-  struct stat st {};
-
-  if (fstat(fd, &st) != 0) {
-    return false;
-  }
-  out.resize(static_cast<std::size_t>(st.st_size));
-  std::size_t done = 0;
-  while (done < out.size()) {
-    const ssize_t n = read(fd, out.data() + done, out.size() - done);
-    if (n < 0 && errno == EINTR) {
-      continue;
-    }
-    if (n <= 0) {
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-bool writeAll(int fd, const char* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t n = write(fd, data, size);
-    if (n < 0 && errno == EINTR) {
-      continue;
-    }
-    if (n <= 0) {
-      return false;
-    }
-    data += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
 }
 
 bool isWhole(const std::string& bytes) {

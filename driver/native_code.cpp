@@ -1,10 +1,40 @@
 #include "driver/native_code.h"
 
+#include "driver/file_bytes.h"
 #include "driver/run_process.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 namespace mbc::driver {
+
+namespace {
+
+// A file on a filesystem mounted noexec (a hardened /tmp or home) cannot
+// be mapped as code; the same bytes in an anonymous memory file can.
+void* openFromMemory(const std::string& path) {
+  std::string bytes;
+  const int in = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const bool read = in >= 0 && readAll(in, bytes);
+  if (in >= 0) {
+    ::close(in);
+  }
+  const int fd = read ? memfd_create("mbc-code", MFD_CLOEXEC) : -1;
+  if (fd < 0) {
+    return nullptr;
+  }
+  void* handle = nullptr;
+  if (writeAll(fd, bytes.data(), bytes.size())) {
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    handle = dlopen(self.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
+  ::close(fd); // the mapping stays
+  return handle;
+}
+
+} // namespace
 
 NativeCode::~NativeCode() {
   if (handle_ != nullptr) {
@@ -32,6 +62,9 @@ std::unique_ptr<NativeCode> NativeCode::open(const std::string& path,
   if (code->handle_ == nullptr) {
     const char* why = dlerror();
     error = why != nullptr ? why : "cannot load " + path;
+    code->handle_ = openFromMemory(path);
+  }
+  if (code->handle_ == nullptr) {
     return nullptr;
   }
   code->table_ = static_cast<const mbrt_program_table*>(

@@ -26,7 +26,8 @@ public:
   static bool link(const std::string& object, const std::string& output,
                    std::string& error);
 
-  /// Loads the shared object `path`. Nullptr with the reason in `error`.
+  /// Loads the shared object `path`, from a copy in memory when its
+  /// filesystem forbids mapping code. Nullptr with the reason in `error`.
   static std::unique_ptr<NativeCode> open(const std::string& path,
                                           std::string& error);
 

@@ -4,8 +4,8 @@
 # truncated entry is built again, never loaded; a change of source or
 # options is a new entry; the cache keeps to its size; concurrent runs
 # publish one whole entry; a cache that cannot be written costs a warning,
-# not the run. The interpreter, the IR evaluator and check never load
-# libLLVM.
+# not the run; a cache on a noexec filesystem still serves. The
+# interpreter, the IR evaluator and check never load libLLVM.
 #   code_cache.sh MBC
 source "$(dirname "$0")/script_env.sh" "$1"
 cat >slot.nc <<'NC'
@@ -105,4 +105,22 @@ MBC_CACHE_DIR=$work/file "$mbc" run slot.nc --toolpath got.jsonl >/dev/null 2>er
   fail "an unwritable cache failed the run: $(cat err)"
 grep -q "warning: cannot write in the cache $work/file" err || fail "$(cat err)"
 cmp -s want.jsonl got.jsonl || fail "the uncached run differs"
+
+# A cache and a temporary folder on a filesystem mounted noexec (hardened
+# systems mount /tmp so): the code still loads. Needs root to mount.
+mkdir noexec
+if mount -t tmpfs -o noexec,size=64m tmpfs noexec 2>/dev/null; then
+  for cold in "" --no-cache; do
+    MBC_CACHE_DIR=$work/noexec/cache TMPDIR=$work/noexec \
+      "$mbc" run slot.nc $cold --toolpath got.jsonl >/dev/null 2>err
+    status=$?
+    [ $status -eq 0 ] && cmp -s want.jsonl got.jsonl ||
+      { umount noexec; fail "noexec ${cold:-cache} (status $status): $(cat err)"; }
+  done
+  MBC_CACHE_DIR=$work/noexec/cache "$mbc" run slot.nc --time >/dev/null 2>err
+  umount noexec
+  grep -q ', cache ' err || fail "no hit from a noexec cache: $(cat err)"
+else
+  echo "not root: the noexec part is left out"
+fi
 echo ok
