@@ -121,6 +121,6 @@ if mount -t tmpfs -o noexec,size=64m tmpfs noexec 2>/dev/null; then
   umount noexec
   grep -q ', cache ' err || fail "no hit from a noexec cache: $(cat err)"
 else
-  echo "not root: the noexec part is left out"
+  echo "cannot mount a tmpfs (that needs root): the noexec part is left out"
 fi
 echo ok
