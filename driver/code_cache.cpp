@@ -2,6 +2,7 @@
 
 #include "driver/file_bytes.h"
 #include "driver/run_options.h"
+#include <mbc/read_file.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -92,20 +93,16 @@ std::string CodeCache::entryPath(const std::string& key) const {
 
 std::string CodeCache::find(const std::string& key) const {
   const std::string path = entryPath(key);
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
+  std::string bytes;
+  if (readFile(path, bytes) != 0) {
     return "";
   }
-  std::string bytes;
-  const bool whole = readAll(fd, bytes) && isWhole(bytes);
-  if (whole) {
-    futimens(fd, nullptr); // used now: the last to be evicted
-  }
-  ::close(fd);
-  if (!whole) {
+  if (!isWhole(bytes)) {
     std::remove(path.c_str());
     return "";
   }
+  // Used now: the last to be evicted.
+  utimensat(AT_FDCWD, path.c_str(), nullptr, 0);
   return path;
 }
 
@@ -114,12 +111,7 @@ std::string CodeCache::publish(const std::string& key, const std::string& file,
   std::error_code ec;
   fs::create_directories(dir_, ec);
   std::string bytes;
-  const int in = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  const bool read = in >= 0 && readAll(in, bytes);
-  if (in >= 0) {
-    ::close(in);
-  }
-  if (!read) {
+  if (readFile(file, bytes) != 0) {
     error = "cannot read " + file;
     return "";
   }

@@ -2,9 +2,9 @@
 
 #include "driver/file_bytes.h"
 #include "driver/run_process.h"
+#include <mbc/read_file.h>
 
 #include <dlfcn.h>
-#include <fcntl.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -16,12 +16,8 @@ namespace {
 // be mapped as code; the same bytes in an anonymous memory file can.
 void* openFromMemory(const std::string& path) {
   std::string bytes;
-  const int in = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  const bool read = in >= 0 && readAll(in, bytes);
-  if (in >= 0) {
-    ::close(in);
-  }
-  const int fd = read ? memfd_create("mbc-code", MFD_CLOEXEC) : -1;
+  const int fd =
+      readFile(path, bytes) == 0 ? memfd_create("mbc-code", MFD_CLOEXEC) : -1;
   if (fd < 0) {
     return nullptr;
   }
