@@ -14,9 +14,12 @@ bool isDirectVariable(std::int64_t n) {
 }
 
 // mbrt_begin_block inline: where alarms and motion are reported, and the
-// execution limit. The limit is loaded atomically at every block: a signal
-// handler or another thread lowers it to stop the run (mbrt_interrupt), and
-// a plain load would be hoisted out of a loop that calls nothing.
+// execution limit. The limit is loaded at every block: a signal handler or
+// another thread lowers it to stop the run (mbrt_interrupt), and a plain
+// load would be hoisted out of a loop that calls nothing. A volatile load of
+// an aligned word is one untorn move on the targets LLVM builds for, as the
+// monotonic load it replaces was; FastISel (-O0 and optnone bodies) cannot
+// select an atomic load and handed the rest of every block to SelectionDAG.
 void FunctionEmitter::emitBegin(const ir::Inst& inst) {
   if (fileStale_) {
     b_.CreateStore(file_, blockFile_);
@@ -28,8 +31,7 @@ void FunctionEmitter::emitBegin(const ir::Inst& inst) {
                                     llvm::ConstantInt::get(abi_.i64, 1));
   b_.CreateStore(count, blockCount_);
   llvm::LoadInst* max =
-      b_.CreateAlignedLoad(abi_.i64, blockMax_, llvm::Align(8));
-  max->setAtomic(llvm::AtomicOrdering::Monotonic);
+      b_.CreateAlignedLoad(abi_.i64, blockMax_, llvm::Align(8), true);
   alarmIf(b_.CreateICmpUGT(count, max), kBlockLimit);
 }
 

@@ -14,7 +14,9 @@
 M30
 ; CHECK-LABEL: define internal i32 @mbc.body.MAIN(
 ; CHECK: [[LIMIT:%[0-9]+]] = icmp ugt i64
-; CHECK: [[OVERFLOW:%[0-9]+]] = fcmp oeq double %{{[0-9]+}}, 0x7FF0000000000000
+; CHECK: [[POSITIVE:%[0-9]+]] = fcmp oeq double [[SUM:%[0-9]+]], 0x7FF0000000000000
+; CHECK-NEXT: [[NEGATIVE:%[0-9]+]] = fcmp oeq double [[SUM]], 0xFFF0000000000000
+; CHECK-NEXT: [[OVERFLOW:%[0-9]+]] = or i1 [[POSITIVE]], [[NEGATIVE]]
 ; CHECK-NEXT: [[KEY:%[0-9]+]] = select i1 [[LIMIT]], i32 -1, i32 11
 ; CHECK-NEXT: [[ANY:%[0-9]+]] = or i1 [[LIMIT]], [[OVERFLOW]]
 ; CHECK-NEXT: br i1 [[ANY]], label %[[FAIL:fail]], label %cont
