@@ -4,6 +4,13 @@
 // themselves are checked by the goldens and the oracle scripts.
 #include "runtime/src/machine/plane_geometry.h"
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <vector>
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -297,6 +304,30 @@ TEST(PlaneGeometry, LinesAndCirclesMeet) {
   ASSERT_EQ(both.size(), 2U);
   EXPECT_NEAR(both[0].x, 9.0 / 4.0, 1e-12); // (36 + 16 - 25) / 12
   EXPECT_NEAR(both[0].y, -both[1].y, 1e-12);
+}
+
+TEST(PlaneGeometry, WithinTurnIsFmodToTheBit) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  std::vector<double> angles;
+  for (int k = 0; k <= 4; ++k) { // at and beside every whole turn
+    const double at = k * kTurn;
+    angles.insert(angles.end(), {at, std::nextafter(at, 0.0),
+                                 std::nextafter(at, 10.0 * kTurn)});
+  }
+  std::mt19937_64 random(26);
+  std::uniform_real_distribution<double> any(0.0, 4.0 * kTurn);
+  for (int i = 0; i < 100000; ++i) {
+    angles.push_back(any(random));
+  }
+  for (const double angle : angles) {
+    if (angle >= 4.0 * kTurn) {
+      continue;
+    }
+    const double expected = std::fmod(angle, kTurn);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(rt::withinTurn(angle)),
+              std::bit_cast<std::uint64_t>(expected))
+        << angle;
+  }
 }
 
 } // namespace mbc::test

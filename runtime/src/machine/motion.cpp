@@ -201,9 +201,9 @@ Point centerFromRadius(Point start, Point end, double r, bool clockwise) {
 }
 
 /// PS0020 when the start and end radii differ by more than parameter 3410.
-mbrt_status checkRadii(mbrt_ctx& ctx, Point start, Point end, Point center) {
+mbrt_status checkRadii(mbrt_ctx& ctx, double startRadius, Point end,
+                       Point center) {
   const double tolerance = ctx.profile.parameter(3410) * ctx.countsPerMm();
-  const double startRadius = std::hypot(start.x - center.x, start.y - center.y);
   const double endRadius = std::hypot(end.x - center.x, end.y - center.y);
   if (tolerance > 0.0 && std::fabs(startRadius - endRadius) > tolerance) {
     return raise(ctx, AlarmId::ArcRadiusTolerance,
@@ -257,7 +257,7 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
   const double begin = std::atan2(start.y - center.y, start.x - center.x);
   for (const Quarter& quarter : kQuarters) {
     double travel = clockwise ? begin - quarter.angle : quarter.angle - begin;
-    travel = std::fmod(travel + 4.0 * std::numbers::pi, 2.0 * std::numbers::pi);
+    travel = withinTurn(travel + 4.0 * std::numbers::pi);
     if (travel <= sweep) {
       widenBox(ctx, p, center.x + radius * quarter.cos);
       widenBox(ctx, q, center.y + radius * quarter.sin);
@@ -317,14 +317,17 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   } else if (words.centerMask != 0) {
     center = {from.x + static_cast<double>(words.center[plane.centerIndex[0]]),
               from.y + static_cast<double>(words.center[plane.centerIndex[1]])};
-    if (const mbrt_status status = checkRadii(ctx, from, to, center)) {
-      return status;
-    }
   } else if (ctx.profile.parameterBit(3403, 5)) {
     return raise(ctx, AlarmId::ArcNoRadius, "arc without R or I, J, K");
   } else {
     // Parameter 3403#5 CIR = 0 (FANUC's default): a straight feed move.
     return moveLine(ctx, target, false);
+  }
+  const double startRadius = std::hypot(from.x - center.x, from.y - center.y);
+  if (!words.hasR) {
+    if (const mbrt_status status = checkRadii(ctx, startRadius, to, center)) {
+      return status;
+    }
   }
   const ArcFrame frame = arcFrame(ctx, p, q);
   if (!frame.supported) {
@@ -354,8 +357,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
     ctx.program = target;
     return compensateMove(ctx, std::move(move));
   }
-  const double radius =
-      std::hypot(from.x - center.x, from.y - center.y) * frame.scale;
+  const double radius = startRadius * frame.scale;
   const double sweep = sweepBetween(from, to, center, clockwise);
   const double arc = radius * sweep;
   const AxisCounts machine = workToMachine(ctx, work);

@@ -96,4 +96,15 @@ double sweepBetween(PlanePoint from, PlanePoint to, PlanePoint center,
   return sweep;
 }
 
+double withinTurn(double angle) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  if (angle >= 2.0 * kTurn) {
+    angle -= 2.0 * kTurn;
+  }
+  if (angle >= kTurn) {
+    angle -= kTurn;
+  }
+  return angle;
+}
+
 } // namespace mbc::rt

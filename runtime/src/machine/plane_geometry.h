@@ -61,4 +61,9 @@ std::vector<PlanePoint> intersections(const PlaneCurve& a, const PlaneCurve& b);
 double sweepBetween(PlanePoint from, PlanePoint to, PlanePoint center,
                     bool clockwise);
 
+/// std::fmod(angle, 2 pi) for 0 <= angle < 8 pi, to the same bits: each
+/// subtraction is exact (Sterbenz), as fmod's remainder is. fmod was a
+/// tenth of an arc block's cost.
+double withinTurn(double angle);
+
 } // namespace mbc::rt
