@@ -320,6 +320,18 @@ def writer_table(medians):
               if with_ in medians and without in medians)]
 
 
+def block_split_table(medians):
+    """A straight-move block: reading it, and its motion alone."""
+    if "LinearMove" not in medians or "LinearMotion" not in medians:
+        return ["bench/micro has no LinearMove or LinearMotion."]
+    whole, motion = medians["LinearMove"], medians["LinearMotion"]
+    return ["| part of a G01 X block | ns |", "|---|---|",
+            f"| reading the block: words, G codes, calls, statement start"
+            f" | {whole - motion:.1f} |",
+            f"| the move: coordinates, clock, box | {motion:.1f} |",
+            f"| the whole block | {whole:.1f} |"]
+
+
 def ms(value):
     return f"{value:.1f}"
 
@@ -503,15 +515,22 @@ def main():
         " above comes from these and from the kernel's write.", "",
         *(writer_table(operations) if operations
           else ["bench/micro was not built (MBC_MICRO_BENCH)."]), "",
+        "## The per-block path", "",
+        "Where an NC block with a straight move spends its time (bench/micro:"
+        " LinearMotion runs the same moves from their words in counts, below"
+        " the C API, so the difference from LinearMove is the reading of the"
+        " block).", "",
+        *(block_split_table(operations) if operations
+          else ["bench/micro was not built (MBC_MICRO_BENCH)."]), "",
         "## Runtime operations", "",
         "In-process CPU time of one operation of the runtime that every"
         " engine calls (bench/micro, Google Benchmark), median of"
-        f" {args.runs} repetitions: an NC block with a straight move, the"
-        " same into a motion sink, written as a JSONL record and as a"
-        " flattened G-code block (the writers alone are the differences),"
-        " a half-circle arc, a block without"
-        " motion, the start of a statement, a common variable access and"
-        " functions of the language.", "",
+        f" {args.runs} repetitions: an NC block with a straight move, its"
+        " motion alone, the same block into a motion sink, written as a"
+        " JSONL record and as a flattened G-code block (the writers alone"
+        " are the differences), a half-circle arc, a block without motion,"
+        " the start of a statement, a common variable access and functions"
+        " of the language.", "",
         *(micro_table(operations) if operations
           else ["bench/micro was not built (MBC_MICRO_BENCH)."]), ""])
     print(report)

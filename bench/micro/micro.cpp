@@ -1,6 +1,7 @@
 // Per-operation costs of the runtime every engine shares, timed in process
 // with Google Benchmark: what one NC block, one variable access or one
 // function costs, beside the whole-program timings of bench/run.py.
+#include "runtime/src/machine/motion.h"
 #include <mbc/arith.h>
 #include <mbc/runtime.h>
 #include <mbc/toolpath_json.h>
@@ -66,6 +67,30 @@ void LinearMove(benchmark::State& state) {
 }
 
 BENCHMARK(LinearMove);
+
+/// The motion of LinearMove's blocks alone, from their words in counts as
+/// the block's decoding hands them on: the difference from LinearMove is
+/// what reading a block costs (words, G codes, calls, statement start).
+void LinearMotion(benchmark::State& state) {
+  Context ctx;
+  if (!ctx.block({w('G', 1), w('F', 1000)})) {
+    state.SkipWithError("alarm");
+  }
+  mbrt_ctx& machine = *ctx.get();
+  mbc::rt::MotionWords words;
+  words.axisMask = 1; // X
+  const auto far = static_cast<mbc::rt::Counts>(10.0 * machine.countsPerMm());
+  for (auto _ : state) {
+    words.axis[0] = far - words.axis[0];
+    if (mbc::rt::executeMotion(machine, words) != 0) {
+      state.SkipWithError("alarm");
+      break;
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK(LinearMotion);
 
 /// The same moves handed to a motion sink: the cost of filling mbrt_motion.
 void LinearMoveToSink(benchmark::State& state) {
