@@ -112,11 +112,6 @@ bool Cfg::dominates(BlockId a, BlockId b) const {
   return a == b;
 }
 
-std::vector<BlockId> successors(const Function& f, BlockId b) {
-  std::vector<BlockId> marks(f.blocks.size(), kNoBlock);
-  return successors(f, b, marks);
-}
-
 Cfg buildCfg(const Function& f) {
   Cfg cfg;
   std::size_t n = f.blocks.size();

@@ -40,8 +40,7 @@ struct Cfg {
 
 /// The targets of the terminator that ends `b` (its last instruction, when
 /// that is a terminator), duplicates and out-of-range targets dropped.
-std::vector<BlockId> successors(const Function& f, BlockId b);
-/// The same with a scratch vector of f.blocks.size() entries, initially
+/// `marks`: a scratch vector of f.blocks.size() entries, initially
 /// kNoBlock, that may be reused for each block of f once.
 std::vector<BlockId> successors(const Function& f, BlockId b,
                                 std::vector<BlockId>& marks);
