@@ -1,9 +1,16 @@
 // Alarms and their report: location, message, detail, the call stack, the
 // first alarm winning, snprintf-style truncation; the run's statistics.
+#include <fmt/format.h>
+
+#include <string>
+#include <utility>
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
 namespace {
+
+using namespace std::string_literals;
 
 TEST(RuntimeAlarm, ReportWithCallStack) {
   Machine m;
@@ -50,6 +57,53 @@ TEST(RuntimeAlarm, ReportIsTruncatedLikeSnprintf) {
   const size_t length = mbrt_alarm_report(m.ctx(), small, sizeof small);
   EXPECT_EQ(length, std::string("p.nc:1: alarm PS0112: ZERO DIVIDE\n").size());
   EXPECT_STREQ(small, "p.nc:1:");
+}
+
+/// The control's number and code of the pending alarm, and the C names of
+/// the statuses.
+std::pair<int, std::string> numberAndCode(mbrt_ctx* ctx) {
+  std::string code(mbrt_alarm_code(ctx, nullptr, 0), '\0');
+  mbrt_alarm_code(ctx, code.data(), code.size() + 1);
+  return {mbrt_alarm_number(ctx), code};
+}
+
+TEST(RuntimeAlarm, NumberAndCodeAsTheControlShowsThem) {
+  Machine none;
+  EXPECT_EQ(numberAndCode(none.ctx()), std::make_pair(0, std::string()));
+
+  Machine program;
+  mbrt_begin_block(program.ctx(), "p.nc", 3);
+  EXPECT_EQ(mbrt_raise(program.ctx(), MBRT_ALARM_ZeroDivide, nullptr),
+            status(AlarmId::ZeroDivide));
+  EXPECT_EQ(numberAndCode(program.ctx()), std::make_pair(112, "PS0112"s));
+  char small[4];
+  EXPECT_EQ(mbrt_alarm_code(program.ctx(), small, sizeof small), 6U);
+  EXPECT_STREQ(small, "PS0");
+
+  Machine macro; // #3000 = 1 (X IS MISSING)
+  EXPECT_EQ(macro.write(3000, 1.0, "X IS MISSING"), MBRT_ALARM_MacroAlarm);
+  EXPECT_EQ(numberAndCode(macro.ctx()), std::make_pair(3001, "3001"s));
+
+  Machine ours;
+  mbrt_raise(ours.ctx(), MBRT_ALARM_ExecutionLimit, nullptr);
+  EXPECT_EQ(numberAndCode(ours.ctx()), std::make_pair(2, "MBC0002"s));
+}
+
+TEST(RuntimeAlarm, TheCNamesAreTheIds) {
+  EXPECT_EQ(MBRT_OK, 0);
+  EXPECT_EQ(MBRT_ALARM_None, status(AlarmId::None));
+  EXPECT_EQ(MBRT_ALARM_TooManyDigits, status(AlarmId::TooManyDigits));
+  EXPECT_EQ(MBRT_ALARM_InterferenceInCircle,
+            status(AlarmId::InterferenceInCircle));
+}
+
+TEST(RuntimeVersion, TheLibraryIsTheHeaders) {
+  EXPECT_STREQ(mbrt_version(), MBC_VERSION_STRING);
+  EXPECT_EQ(MBC_VERSION, MBC_VERSION_MAJOR * 10000 + MBC_VERSION_MINOR * 100 +
+                             MBC_VERSION_PATCH);
+  EXPECT_EQ(std::string(mbrt_version()),
+            fmt::format("{}.{}.{}", MBC_VERSION_MAJOR, MBC_VERSION_MINOR,
+                        MBC_VERSION_PATCH));
 }
 
 TEST(RuntimeAlarm, NoAlarmNoReport) {

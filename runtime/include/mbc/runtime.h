@@ -11,6 +11,8 @@
 #ifndef MBC_RUNTIME_H
 #define MBC_RUNTIME_H
 
+#include <mbc/version.h>
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -24,8 +26,26 @@ typedef struct mbrt_ctx mbrt_ctx;
  * mbc/value.h). */
 typedef double mbrt_num;
 
-/* 0 = success; otherwise an alarm id (mbc/alarms.def order, 1-based). */
+/* MBRT_OK (0) = success; otherwise an alarm id, one of mbrt_alarm_id. */
 typedef int mbrt_status;
+
+#define MBRT_OK 0
+
+/* The alarm ids by name, in the order of mbc/alarms.def, where each row
+ * gives the control's number and message (MBRT_ALARM_ZeroDivide is PS0112
+ * ZERO DIVIDE); rows are only ever added at the end, so the values stay.
+ * mbrt_alarm_number and mbrt_alarm_code give the pending alarm as the
+ * control shows it. */
+enum mbrt_alarm_id {
+  MBRT_ALARM_None,
+
+#define ALARM(Id, Prefix, Number, Message) MBRT_ALARM_##Id,
+#include <mbc/alarms.def>
+};
+
+/* The version of the runtime library linked (MBC_VERSION_STRING is the
+ * header's). */
+const char* mbrt_version(void);
 
 #define MBRT_MAX_AXES 8
 
@@ -366,6 +386,12 @@ mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
 mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number);
 /* The pending alarm id, or 0. */
 int mbrt_alarm(const mbrt_ctx* ctx);
+/* The pending alarm's number as the control shows it: 112 for PS0112, 3001
+ * for #3000=1, 2 for mbc's MBC0002; 0 when none is pending. */
+int mbrt_alarm_number(const mbrt_ctx* ctx);
+/* Its code: "PS0112", "3001", "MBC0002" ("" when none is pending); returns
+ * the length (snprintf-style). */
+size_t mbrt_alarm_code(const mbrt_ctx* ctx, char* buf, size_t size);
 /* "file:line: alarm PS0112: ZERO DIVIDE" plus one "  in O9100 called from
  * file:line" line per call level, innermost first, each line ending in '\n'
  * (empty when no alarm is pending); returns the length (snprintf-style). */

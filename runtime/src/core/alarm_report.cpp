@@ -1,5 +1,6 @@
 // A run's alarm: recording the first one with its block and call stack,
-// the report text every engine prints, and operator messages.
+// the report text every engine prints, its number and code, and operator
+// messages.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -20,6 +21,16 @@ std::string alarmMessage(const PendingAlarm& alarm) {
     message += ": " + alarm.detail;
   }
   return message;
+}
+
+/// snprintf's contract: as much of `text` as fits, terminated; its length.
+size_t copyText(const std::string& text, char* buf, size_t size) {
+  if (buf != nullptr && size > 0) {
+    const size_t n = std::min(text.size(), size - 1);
+    std::memcpy(buf, text.data(), n);
+    buf[n] = '\0';
+  }
+  return text.size();
 }
 
 } // namespace
@@ -77,6 +88,18 @@ int mbrt_alarm(const mbrt_ctx* ctx) {
   return static_cast<int>(ctx->alarm.id);
 }
 
+int mbrt_alarm_number(const mbrt_ctx* ctx) {
+  const PendingAlarm& alarm = ctx->alarm;
+  if (alarm.id == AlarmId::MacroAlarm) {
+    return alarm.macroNumber;
+  }
+  return alarmInfo(alarm.id).number;
+}
+
+size_t mbrt_alarm_code(const mbrt_ctx* ctx, char* buf, size_t size) {
+  return copyText(alarmCode(ctx->alarm.id, ctx->alarm.macroNumber), buf, size);
+}
+
 size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
   const PendingAlarm& alarm = ctx->alarm;
   std::string report;
@@ -91,10 +114,5 @@ size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
                             site.file, site.line);
     }
   }
-  if (buf != nullptr && size > 0) {
-    const size_t n = std::min(report.size(), size - 1);
-    std::memcpy(buf, report.data(), n);
-    buf[n] = '\0';
-  }
-  return report.size();
+  return copyText(report, buf, size);
 }
