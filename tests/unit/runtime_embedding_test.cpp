@@ -1,5 +1,5 @@
-// What embedders use beyond the sinks: the alarm callback and the toolpath
-// buffer.
+// What embedders use beyond the sinks: the alarm callback, the toolpath
+// buffer, and what a sink may not call.
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -59,6 +59,43 @@ TEST(RuntimeEmbedding, OutOfMemoryStopsTheNextBlockOfThisRunOnly) {
   EXPECT_EQ(m.motions().size(), 1U);
   mbrt_start(m.ctx(), "O1000");
   EXPECT_EQ(m.block("G00 X2.", 2), 0);
+}
+
+/// A motion sink that calls back into its context as a careless host would.
+struct Reentry {
+  mbrt_ctx* ctx;
+  int motions = 0;
+  mbrt_status run = 0;
+};
+
+TEST(RuntimeEmbedding, CallsFromInsideASinkAreRefused) {
+  Machine m;
+  Reentry reentry{m.ctx()};
+  mbrt_set_motion_sink(
+      m.ctx(),
+      [](void* user, const mbrt_motion*) {
+        auto& r = *static_cast<Reentry*>(user);
+        ++r.motions;
+        mbrt_reset(r.ctx);
+        const mbrt_program other{"O9", 9, nullptr};
+        r.run = mbrt_run_main(r.ctx, &other, nullptr, 0);
+        mbrt_destroy(r.ctx);
+      },
+      &reentry);
+  ASSERT_EQ(m.block("G01 X10. F100", 1), 0); // the block ends as it began
+  EXPECT_EQ(reentry.motions, 1);
+  EXPECT_EQ(reentry.run, MBRT_ALARM_CalledFromSink);
+  EXPECT_EQ(m.read(5001), 10.0); // not reset under the block's feet
+  EXPECT_EQ(m.block("G01 X20.", 2), MBRT_ALARM_CalledFromSink);
+  EXPECT_EQ(m.report(),
+            "test.nc:2: alarm MBC0007: CALLED FROM A SINK: mbrt_reset was "
+            "called from inside a sink (a motion, text or alarm callback); "
+            "the run was stopped before this block\n");
+  EXPECT_EQ(reentry.motions, 1);
+  mbrt_set_motion_sink(m.ctx(), nullptr, nullptr);
+  mbrt_start(m.ctx(), "O1000"); // from outside: the next run goes on
+  EXPECT_EQ(m.block("G01 X20. F100", 1), 0);
+  EXPECT_EQ(m.read(5001), 20.0);
 }
 
 TEST(RuntimeEmbedding, ProgramNamesOutliveTheirCalls) {

@@ -112,6 +112,7 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.block.blocks = 0;
   ctx.interrupted = false;
   ctx.outOfMemory = false;
+  ctx.refusedInSink = nullptr;
   // A main program the machine cannot have alarms at its first block.
   ctx.illegalMainNumber = ctx.profile.programNumberDigits == 4 &&
                           ctx.mainProgramNumber > kMaxProgramNumber4Digits;
@@ -173,6 +174,9 @@ mbrt_ctx* mbrt_create_from_file(const char* path, char* err, size_t err_size) {
 }
 
 void mbrt_destroy(mbrt_ctx* ctx) {
+  if (ctx == nullptr || refuseInSink(*ctx, "mbrt_destroy")) {
+    return;
+  }
   delete ctx;
 }
 
@@ -232,12 +236,16 @@ int mbrt_skip_switch(const mbrt_ctx* ctx, int n) {
 }
 
 void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
-  resetRun(*ctx, main_program);
+  if (!refuseInSink(*ctx, "mbrt_start")) {
+    resetRun(*ctx, main_program);
+  }
 }
 
 void mbrt_reset(mbrt_ctx* ctx) {
-  loadProfile(*ctx);
-  resetRun(*ctx, "MAIN");
+  if (!refuseInSink(*ctx, "mbrt_reset")) {
+    loadProfile(*ctx);
+    resetRun(*ctx, "MAIN");
+  }
 }
 
 mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
@@ -257,6 +265,13 @@ mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
   if (ctx->outOfMemory) {
     return raise(*ctx, AlarmId::OutOfMemory,
                  "memory ran out; the run was stopped before this block");
+  }
+  if (ctx->refusedInSink != nullptr) {
+    return raise(*ctx, AlarmId::CalledFromSink,
+                 fmt::format("{} was called from inside a sink (a motion, "
+                             "text or alarm callback); the run was stopped "
+                             "before this block",
+                             ctx->refusedInSink));
   }
   if (ctx->interrupted) {
     return raise(*ctx, AlarmId::Interrupted,

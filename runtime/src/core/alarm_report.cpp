@@ -58,7 +58,9 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   if (ctx.alarmSink.fn != nullptr) {
     std::string report(mbrt_alarm_report(&ctx, nullptr, 0), '\0');
     mbrt_alarm_report(&ctx, report.data(), report.size() + 1);
-    ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
+    callSink(ctx, [&] {
+      ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
+    });
   }
   return static_cast<mbrt_status>(id);
 }

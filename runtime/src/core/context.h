@@ -300,6 +300,10 @@ struct mbrt_ctx {
   std::atomic<bool> interrupted{false};
   std::atomic<bool> outOfMemory{false};
   bool illegalMainNumber = false; // PS0074 at the first block
+  // Sinks being called (motion, text, alarm), and the first call that
+  // would have restarted, reset or freed the context from inside one.
+  int sinkDepth = 0;
+  const char* refusedInSink = nullptr;
   std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
   mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
@@ -406,6 +410,18 @@ void sendMessage(mbrt_ctx& ctx, std::string_view text);
 
 /// Counts bytes written by the run against its output limit (--max-output).
 void countOutput(mbrt_ctx& ctx, std::uint64_t bytes);
+
+/// Calls a sink of the context: inside it the calls that would restart,
+/// reset or free the context refuse (refuseInSink).
+template <typename Call> void callSink(mbrt_ctx& ctx, Call&& call) {
+  ++ctx.sinkDepth;
+  call();
+  --ctx.sinkDepth;
+}
+
+/// True when `function` is called from inside one of the context's sinks:
+/// it must not run, and the run stops before its next block with MBC0007.
+bool refuseInSink(mbrt_ctx& ctx, const char* function);
 
 /// Sends text to one of the context's text sinks, if set, and counts it.
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,

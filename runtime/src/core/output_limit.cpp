@@ -24,7 +24,7 @@ void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
               std::string_view text) {
   if (sink.fn != nullptr) {
-    sink.fn(sink.user, text.data(), text.size());
+    callSink(ctx, [&] { sink.fn(sink.user, text.data(), text.size()); });
     countOutput(ctx, text.size());
   }
 }

@@ -62,6 +62,9 @@ mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program) {
 
 mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
                           const mbrt_word* args, size_t count) {
+  if (mbc::rt::refuseInSink(*ctx, "mbrt_run_main")) {
+    return static_cast<mbrt_status>(mbc::AlarmId::CalledFromSink);
+  }
   mbrt_start(ctx, program->name);
   if (count > 0) {
     if (const mbrt_status st = mbrt_set_main_args(ctx, args, count)) {

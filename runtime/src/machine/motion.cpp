@@ -179,7 +179,7 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.line = origin.line;
   motion.program = origin.program;
   motion.cycle = origin.cycle;
-  ctx.motionSink.fn(ctx.motionSink.user, &motion);
+  callSink(ctx, [&] { ctx.motionSink.fn(ctx.motionSink.user, &motion); });
 }
 
 /// R > 0 takes the arc of at most 180 degrees, R < 0 the longer one; an R
