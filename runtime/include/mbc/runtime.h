@@ -95,6 +95,9 @@ typedef struct mbrt_motion {
   double programmed[MBRT_MAX_AXES];
 } mbrt_motion;
 
+/* Sinks run in the middle of a block: from inside one, mbrt_run_main (and
+ * the mbc_O<n> entry points), mbrt_start, mbrt_reset and mbrt_destroy do
+ * nothing, and the run stops before its next block with alarm MBC0007. */
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);
 typedef void (*mbrt_text_fn)(void* user, const char* data, size_t size);
 
