@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -23,16 +22,6 @@
 namespace mbc::rt {
 
 namespace {
-
-void copyError(const char* message, char* err, size_t errSize) {
-  if (err != nullptr && errSize > 0) {
-    std::snprintf(err, errSize, "%s", message);
-  }
-}
-
-void copyError(const std::string& message, char* err, size_t errSize) {
-  copyError(message.c_str(), err, errSize);
-}
 
 /// #3011/#3012 are fixed for the whole run. SOURCE_DATE_EPOCH makes them
 /// reproducible (UTC); otherwise they are the local date and time.
@@ -142,7 +131,7 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
                        ? parseProfile(profile_json, error)
                        : std::optional<Profile>(defaultProfile());
     if (!profile) {
-      copyError(error, err, err_size);
+      copyText(error, err, err_size);
       return nullptr;
     }
     auto* ctx = new mbrt_ctx;
@@ -152,11 +141,11 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
     return ctx;
   } catch (const std::bad_alloc&) {
     // No allocation here: there is no memory for one.
-    copyError("cannot create the runtime: out of memory", err, err_size);
+    copyText("cannot create the runtime: out of memory", err, err_size);
     return nullptr;
   } catch (const std::exception& e) {
-    copyError(std::string("cannot create the runtime: ") + e.what(), err,
-              err_size);
+    copyText(std::string("cannot create the runtime: ") + e.what(), err,
+             err_size);
     return nullptr;
   }
 }
@@ -164,10 +153,10 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
 mbrt_ctx* mbrt_create_from_file(const char* path, char* err, size_t err_size) {
   std::string text;
   if (int error = mbc::readFile(path != nullptr ? path : "", text)) {
-    copyError(fmt::format("cannot read machine profile {}: {}",
-                          path != nullptr ? path : "(null)",
-                          std::strerror(error)),
-              err, err_size);
+    copyText(fmt::format("cannot read machine profile {}: {}",
+                         path != nullptr ? path : "(null)",
+                         std::strerror(error)),
+             err, err_size);
     return nullptr;
   }
   return mbrt_create(text.c_str(), err, err_size);

@@ -23,8 +23,9 @@ std::string alarmMessage(const PendingAlarm& alarm) {
   return message;
 }
 
-/// snprintf's contract: as much of `text` as fits, terminated; its length.
-size_t copyText(const std::string& text, char* buf, size_t size) {
+} // namespace
+
+size_t copyText(std::string_view text, char* buf, size_t size) {
   if (buf != nullptr && size > 0) {
     const size_t n = std::min(text.size(), size - 1);
     std::memcpy(buf, text.data(), n);
@@ -32,8 +33,6 @@ size_t copyText(const std::string& text, char* buf, size_t size) {
   }
   return text.size();
 }
-
-} // namespace
 
 std::string locationPrefix(const std::string& file, int line) {
   return file.empty() ? "" : fmt::format("{}:{}: ", file, line);

@@ -423,6 +423,11 @@ template <typename Call> void callSink(mbrt_ctx& ctx, Call&& call) {
 /// it must not run, and the run stops before its next block with MBC0007.
 bool refuseInSink(mbrt_ctx& ctx, const char* function);
 
+/// The C API's snprintf contract: as much of `text` as fits in `buf`
+/// (`size` bytes with the terminating NUL; nothing when NULL or 0), and the
+/// whole length. Allocates nothing.
+size_t copyText(std::string_view text, char* buf, size_t size);
+
 /// Sends text to one of the context's text sinks, if set, and counts it.
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
               std::string_view text);
