@@ -1,7 +1,6 @@
 // Per-operation costs of the runtime every engine shares, timed in process
 // with Google Benchmark: what one NC block, one variable access or one
 // function costs, beside the whole-program timings of bench/run.py.
-#include "runtime/src/machine/motion.h"
 #include <mbc/arith.h>
 #include <mbc/runtime.h>
 #include <mbc/toolpath_json.h>
@@ -10,6 +9,8 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+
+#include "motion.h"
 
 namespace {
 
