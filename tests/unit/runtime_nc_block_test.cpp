@@ -404,19 +404,6 @@ TEST(RuntimeNcBlock, AdditionalWorkOffsets) {
   EXPECT_EQ(g54.read(4014), 54.0);
 }
 
-// The last value of each address belongs to the run: a new run starts
-// without them, like the modal codes.
-TEST(RuntimeNcBlock, NewRunForgetsTheLastWords) {
-  Machine m;
-  ASSERT_EQ(m.block("G01 X1. F250 S1200 M03"), 0);
-  EXPECT_EQ(m.read(4109), 250.0);
-  EXPECT_EQ(m.read(4119), 1200.0);
-  mbrt_start(m.ctx(), "O2");
-  EXPECT_EQ(m.read(4109), 0.0);
-  EXPECT_EQ(m.read(4119), 0.0);
-  EXPECT_EQ(m.read(4113), 0.0);
-}
-
 TEST(RuntimeNcBlock, SubprogramCallFlow) {
   Machine m;
   expectSubprogramCall(m, "M98 P1234 L3", 1234, 3);

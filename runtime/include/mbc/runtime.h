@@ -96,8 +96,9 @@ typedef struct mbrt_motion {
 } mbrt_motion;
 
 /* Sinks run in the middle of a block: from inside one, mbrt_run_main (and
- * the mbc_O<n> entry points), mbrt_start, mbrt_reset and mbrt_destroy do
- * nothing, and the run stops before its next block with alarm MBC0007. */
+ * the mbc_O<n> entry points), mbrt_start, mbrt_reset_state, mbrt_reset and
+ * mbrt_destroy do nothing, and the run stops before its next block with
+ * alarm MBC0007. */
 typedef void (*mbrt_motion_fn)(void* user, const mbrt_motion* motion);
 typedef void (*mbrt_text_fn)(void* user, const char* data, size_t size);
 
@@ -161,7 +162,13 @@ int mbrt_skip_switch(const mbrt_ctx* ctx, int n);
 /* ---- Execution bookkeeping ----------------------------------------------
  */
 
-/* Starts a run of the named main program at call level 0. */
+/* Starts a run of the named main program at call level 0, from the machine
+ * state the last run left, as a control starts a program after RESET: a new
+ * call stack, locals, block count, statistics and motion buffer, no alarm;
+ * the position, modal codes (G90/G91, plane, G20/G21, work offset, F...)
+ * and frames (G92, G52, G68...) stay, while modal calls (G66), canned cycles
+ * and cutter compensation are cancelled. Profile parameter 3402#6 CLR puts
+ * the modal codes back to their power-on values too. */
 void mbrt_start(mbrt_ctx* ctx, const char* main_program);
 /* Called by an engine at the start of every executed block: counts it,
  * enforces the execution limit and remembers the location for alarms. The
@@ -349,8 +356,13 @@ mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program);
  * mbrt_run_body: one call of a compiled cycle. */
 mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
                           const mbrt_word* args, size_t count);
-/* Back to the state mbrt_create gave: commons, offsets and part counters
- * from the profile, power-on modal state, no alarm. Sinks and limits stay. */
+/* The machine back to power-on: modal codes, the tool at the machine
+ * origin, no G92/G52/mirror/scaling/rotation/tool length offset, the clock
+ * (#3001) at 0, no alarm. Machine data (commons, offsets, part counters),
+ * sinks and limits stay. */
+void mbrt_reset_state(mbrt_ctx* ctx);
+/* Back to the state mbrt_create gave: mbrt_reset_state, and commons,
+ * offsets and part counters from the profile. Sinks and limits stay. */
 void mbrt_reset(mbrt_ctx* ctx);
 
 /* ---- Output statements ---------------------------------------------------

@@ -73,17 +73,11 @@ void loadProfile(mbrt_ctx& ctx) {
   ctx.calls.reserve(profile.totalNesting + 2);
 }
 
-/// The power-on state of a run: modal codes, position, locals and counters.
-/// Machine data (commons, offsets, part counters) carries over.
-void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
-  ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
-  ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
-  ctx.calls.clear();
-  ctx.modalCalls.clear();
-  ctx.blockCalls.clear();
-  ctx.macroDepth = 0;
-  ctx.subDepth = 0;
-  ctx.levels.assign(1, LocalLevel{});
+/// The machine's power-on state: modal codes, the tool at the machine
+/// origin, no frames (G92, G52, mirror, scaling, rotation, tool length
+/// offset) and the clock at 0. Machine data (commons, offsets, part
+/// counters) stays.
+void resetMachineState(mbrt_ctx& ctx) {
   ctx.machine = AxisCounts{};
   ctx.frames = Frames{};
   ctx.skipPosition = AxisCounts{};
@@ -95,7 +89,40 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.modal = ModalState{};
   ctx.modal.inch = inch;
   ctx.lastWords = {};
+  ctx.clockMs = 0.0;
+}
+
+/// A run begins as a control starts a program after RESET: a new call
+/// stack, locals and counters; the machine stays where the last run left it
+/// (position, modal codes, frames, F), except for what RESET cancels: modal
+/// calls (G66), canned cycles (G80), cutter compensation (G40) and #3003/
+/// #3004. With parameter 3402#6 CLR the modal codes go back to their
+/// power-on values too (the control's clear state); the tool stays.
+void startRun(mbrt_ctx& ctx, const char* mainProgram) {
+  ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
+  ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
+  ctx.calls.clear();
+  ctx.modalCalls.clear();
+  ctx.blockCalls.clear();
+  ctx.macroDepth = 0;
+  ctx.subDepth = 0;
+  ctx.levels.assign(1, LocalLevel{});
+  ctx.compensation = CompensationState{};
+  if (ctx.profile.clearOnReset) {
+    const bool inch = ctx.modal.inch;
+    ctx.modal = ModalState{};
+    ctx.modal.inch = inch;
+    ctx.lastWords = {};
+  } else {
+    ctx.modal.compensation = ModalState{}.compensation;
+    ctx.modal.cycle = 0;
+    ctx.modal.cycleData = CycleData{};
+    ctx.modal.rigidTapping = false;
+    ctx.modal.seriesFifteenTap = 0;
+  }
   resyncProgram(ctx);
+  ctx.singleBlockBits = 0.0;
+  ctx.feedHoldBits = 0.0;
   ctx.block.file = nullptr;
   ctx.block.line = 0;
   ctx.block.blocks = 0;
@@ -111,7 +138,6 @@ void resetRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.stats = RunStats{};
   ctx.optionalStops = 0;
   ctx.mainM99 = false;
-  ctx.clockMs = 0.0;
   ctx.alarm = PendingAlarm{};
   ctx.motionBuffer.clear();
   takeDateAndTime(ctx);
@@ -137,7 +163,8 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
     auto* ctx = new mbrt_ctx;
     ctx->profile = std::move(*profile);
     loadProfile(*ctx);
-    resetRun(*ctx, "MAIN");
+    resetMachineState(*ctx);
+    startRun(*ctx, "MAIN");
     return ctx;
   } catch (const std::bad_alloc&) {
     // No allocation here: there is no memory for one.
@@ -226,14 +253,22 @@ int mbrt_skip_switch(const mbrt_ctx* ctx, int n) {
 
 void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
   if (!refuseInSink(*ctx, "mbrt_start")) {
-    resetRun(*ctx, main_program);
+    startRun(*ctx, main_program);
+  }
+}
+
+void mbrt_reset_state(mbrt_ctx* ctx) {
+  if (!refuseInSink(*ctx, "mbrt_reset_state")) {
+    resetMachineState(*ctx);
+    startRun(*ctx, "MAIN");
   }
 }
 
 void mbrt_reset(mbrt_ctx* ctx) {
   if (!refuseInSink(*ctx, "mbrt_reset")) {
     loadProfile(*ctx);
-    resetRun(*ctx, "MAIN");
+    resetMachineState(*ctx);
+    startRun(*ctx, "MAIN");
   }
 }
 

@@ -107,6 +107,7 @@ void parseParameters(const json& value, Profile& profile) {
   profile.prt = profile.parameterBit(6001, 1);
   profile.nat = profile.parameterBit(6004, 0);
   profile.v15 = profile.parameterBit(6000, 3);
+  profile.clearOnReset = profile.parameterBit(3402, 6);
   profile.rigidTappingCode = profile.parameter(5210);
   profile.codeCalls =
       profile.parameterBit(6001, 5) || profile.parameterBit(6007, 4) ||

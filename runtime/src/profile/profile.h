@@ -76,6 +76,7 @@ struct Profile {
   bool prt = false; // 6001#1 PRT: DPRNT drops leading zeros and the sign
   bool nat = false; // 6004#0 NAT: ASIN/ATAN in -90..90 / -180..180
   bool v15 = false; // 6000#3 V15: tool offset variables as on a Series 15
+  bool clearOnReset = false;    // 3402#6 CLR: a run starts from the clear state
   double rigidTappingCode = 29; // 5210: the M code of rigid tapping
   // Some G, M, T, S or B code calls a program (6001#5, 6007#4/#5,
   // 6050-6089): without, NC blocks skip looking for code calls.
