@@ -2,8 +2,8 @@
 #include "codegen/abi.h"
 
 #include <mbc/compiled.h>
+#include <mbc/engine.h>
 #include <mbc/limits.h>
-#include <mbc/runtime.h>
 
 #include <llvm/Config/llvm-config.h>
 #include <llvm/IR/LLVMContext.h>

@@ -5,7 +5,7 @@
 #include "codegen/emitter.h"
 #include "ir/cfg.h"
 #include <mbc/alarm.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <llvm/IR/MDBuilder.h>
 

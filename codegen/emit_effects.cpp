@@ -4,8 +4,8 @@
 // runtime calls (ir/evaluator_ops.cpp does the same one by one).
 #include "codegen/emitter.h"
 #include <mbc/alarm.h>
+#include <mbc/engine.h>
 #include <mbc/limits.h>
-#include <mbc/runtime.h>
 
 namespace mbc::codegen::detail {
 

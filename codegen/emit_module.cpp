@@ -6,7 +6,7 @@
 #include "codegen/emitter.h"
 #include "codegen/entry_points.h"
 #include <mbc/addresses.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <llvm/IR/Intrinsics.h>
 

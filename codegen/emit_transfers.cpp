@@ -3,8 +3,8 @@
 // into this program through the IR's landing); ir/evaluator.cpp's resume
 // and jumpToSeq are the reference.
 #include "codegen/emitter.h"
+#include <mbc/engine.h>
 #include <mbc/limits.h>
-#include <mbc/runtime.h>
 
 #include <set>
 

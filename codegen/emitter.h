@@ -12,7 +12,7 @@
 #include "ir/cfg.h"
 #include "ir/ir.h"
 #include <mbc/arith.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <llvm/IR/IRBuilder.h>
 

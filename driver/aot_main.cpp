@@ -3,6 +3,7 @@
 #include "driver/aot_main.h"
 
 #include "driver/run_session.h"
+#include <mbc/engine.h>
 
 #include <cstdio>
 

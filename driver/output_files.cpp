@@ -1,6 +1,7 @@
 // Output files of `mbc run` (see output_files.h).
 #include "driver/output_files.h"
 
+#include <mbc/engine.h>
 #include <mbc/sysvars.h>
 #include <mbc/toolpath_json.h>
 #include <mbc/value.h>

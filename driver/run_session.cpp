@@ -6,6 +6,7 @@
 #include "driver/state_file.h"
 #include "driver/svg_writer.h"
 #include <mbc/alarm.h>
+#include <mbc/engine.h>
 
 #include <fmt/format.h>
 

@@ -8,7 +8,7 @@
 #include "frontend/source.h"
 #include <mbc/arith.h>
 #include <mbc/compiled.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <fmt/format.h>
 

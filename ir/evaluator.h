@@ -5,7 +5,7 @@
 #pragma once
 
 #include "ir/ir.h"
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 namespace mbc::ir {
 

@@ -3,7 +3,7 @@
 // lines as `mbc run --time`, so bench/run.py reads them alike.
 #pragma once
 
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <chrono>
 #include <cstdio>

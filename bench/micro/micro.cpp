@@ -2,7 +2,7 @@
 // with Google Benchmark: what one NC block, one variable access or one
 // function costs, beside the whole-program timings of bench/run.py.
 #include <mbc/arith.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 #include <mbc/toolpath_json.h>
 
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 // libFuzzer target: any bytes as a machine-profile JSON document. mbrt_create
 // either gives a context or an error message; it must never crash.
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -5,7 +5,7 @@
 #include "codegen/abi.h"
 #include "codegen/native_target.h"
 #include <mbc/compiled.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #include <gtest/gtest.h>
 #include <llvm/IR/DataLayout.h>

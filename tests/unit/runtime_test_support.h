@@ -4,7 +4,7 @@
 
 #include <mbc/alarm.h>
 #include <mbc/compiled.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 #include <mbc/toolpath_json.h>
 #include <mbc/value.h>
 

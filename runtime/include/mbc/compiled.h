@@ -7,7 +7,7 @@
 #ifndef MBC_COMPILED_H
 #define MBC_COMPILED_H
 
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 
 #ifdef __cplusplus
 extern "C" {

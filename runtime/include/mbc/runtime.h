@@ -1,12 +1,28 @@
-/* The C ABI of the mbc runtime: one library that every engine calls (the
- * reference interpreter, the IR evaluator, JIT and AOT code). It owns the
- * machine: variables and system variables, call frames, modal state, the
- * motion sink, DPRNT/BPRNT output and alarms. No globals: every call takes the
- * context, so contexts are independent.
+/* The mbc runtime as an embedder uses it (C ABI): a context is one machine
+ * (a control with its profile, variables, offsets, position and modal
+ * state); programs compiled by `mbc compile` run on it, and what they do
+ * comes out through sinks or the motion buffer. mbc/engine.h is the rest
+ * of the runtime, what engines and generated code call.
  *
- * Every fallible call returns an mbrt_status: 0 to go on, otherwise the alarm
- * that stops the run. The context keeps the alarm, its message and the block
- * (file:line) it happened in; mbrt_alarm_report formats it.
+ * Ownership: the caller owns a context from mbrt_create to mbrt_destroy.
+ * Strings passed in are copied or only read during the call, except a sink's
+ * `user` pointer, which the context keeps until the sink is replaced.
+ * Pointers handed out (buffered motions, the names in a motion or in the
+ * statistics) stay valid until the next run starts or the context is
+ * destroyed.
+ *
+ * Threads: contexts are independent (no globals), so each thread may run
+ * its own; one context is used by one thread at a time. mbrt_interrupt and
+ * mbrt_out_of_memory are the only calls that may come from another thread
+ * or a signal handler while a run goes on.
+ *
+ * Reentrancy: sinks are called in the middle of a block. From inside one, a
+ * call that would start, reset or free the context is refused (see the
+ * sink types below); reading variables and the statistics is allowed.
+ *
+ * Every fallible call returns an mbrt_status: MBRT_OK to go on, otherwise
+ * the alarm that stopped the run. The context keeps the alarm, its message
+ * and the block (file:line) it happened in; mbrt_alarm_report formats it.
  */
 #ifndef MBC_RUNTIME_H
 #define MBC_RUNTIME_H
@@ -144,55 +160,9 @@ void mbrt_interrupt(mbrt_ctx* ctx);
  * another thread, as mbrt_interrupt. */
 void mbrt_out_of_memory(mbrt_ctx* ctx);
 
-/* ---- Profile settings engines need --------------------------------------
- */
-
-/* A parameter of the machine profile (its default when the profile does not
- * set it; 0 for a number mbc does not model, docs/machine-profile.md). */
-double mbrt_parameter(const mbrt_ctx* ctx, int number);
-/* 1 when the profile turns the optional block skip switch on: blocks
- * starting with '/' are skipped. */
-int mbrt_block_skip(const mbrt_ctx* ctx);
 /* Turns optional block skip switches on: bit n for /n (bit 1 for plain '/'),
  * on top of the profile's switch. */
 void mbrt_set_block_skip(mbrt_ctx* ctx, unsigned mask);
-/* 1 when switch /n is on (the profile's switch counts as /1). */
-int mbrt_skip_switch(const mbrt_ctx* ctx, int n);
-
-/* ---- Execution bookkeeping ----------------------------------------------
- */
-
-/* Starts a run of the named main program at call level 0, from the machine
- * state the last run left, as a control starts a program after RESET: a new
- * call stack, locals, block count, statistics and motion buffer, no alarm;
- * the position, modal codes (G90/G91, plane, G20/G21, work offset, F...)
- * and frames (G92, G52, G68...) stay, while modal calls (G66), canned cycles
- * and cutter compensation are cancelled. Profile parameter 3402#6 CLR puts
- * the modal codes back to their power-on values too. */
-void mbrt_start(mbrt_ctx* ctx, const char* main_program);
-/* Called by an engine at the start of every executed block: counts it,
- * enforces the execution limit and remembers the location for alarms. The
- * runtime keeps the file pointer (it is passed on in mbrt_motion), so it must
- * stay valid until the run ends. */
-mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line);
-int mbrt_tracing(const mbrt_ctx* ctx);
-/* Writes "file:line: text" for the current block to the trace sink. */
-void mbrt_trace(mbrt_ctx* ctx, const char* text);
-/* Traces a template whose holes take the values in order: "{}" a value
- * ("<vacant>" when vacant), "{#}" a variable number (rounded half away from
- * zero), "{?}" a truth ("true" unless 0). frontend/trace_text.h makes the
- * templates of the statements engines run themselves. */
-void mbrt_trace_values(mbrt_ctx* ctx, const char* tmpl, const mbrt_num* values,
-                       size_t count);
-
-enum mbrt_end_kind {
-  MBRT_END_PROGRAM = 0, /* end of the main program's text or '%' */
-  MBRT_END_M02_M30 = 1, /* counts a part (#3901) */
-  MBRT_END_MAIN_M99 = 2 /* M99 in the main program (a control would loop) */
-};
-
-/* Normal end of the run: records how it ended and flushes the sinks. */
-void mbrt_finish(mbrt_ctx* ctx, int end_kind);
 
 /* ---- Variables -----------------------------------------------------------
  */
@@ -209,16 +179,13 @@ mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
  * (0 or 1) and #1032-#1035 (32-bit words), which programs only read, take
  * the value as the PMC would set them. */
 mbrt_status mbrt_preset_var(mbrt_ctx* ctx, double number, mbrt_num value);
-/* ADP[#number]: a local set from a macro argument written without decimal
- * point gets its decimal point back (X10 -> 0.010 -> 10.0). */
-mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
 /* A common variable (#100..#999, #98000..#98499) without side effects: 1
  * and *out when the number is a common variable of this machine, else 0. */
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out);
 /* How many tool offsets the machine has (#10001.. up to #10000 + count). */
 int mbrt_tool_offset_count(const mbrt_ctx* ctx);
 
-/* ---- Words, NC blocks and calls ------------------------------------------
+/* ---- Programs and their arguments ----------------------------------------
  */
 
 enum mbrt_word_kind {
@@ -235,83 +202,8 @@ typedef struct mbrt_word {
   double value;
 } mbrt_word;
 
-/* The least input increment of an address (0.001 for metric axes, 1 for
- * integer addresses): ROUND written directly in an address rounds to it. */
-double mbrt_address_increment(const mbrt_ctx* ctx, char letter);
-
-enum mbrt_flow_kind {
-  MBRT_FLOW_NEXT = 0,   /* go on with the next block */
-  MBRT_FLOW_CALL = 1,   /* call a program (M98, G66, a custom code...) */
-  MBRT_FLOW_RETURN = 2, /* M99 [P seq] */
-  MBRT_FLOW_END = 3     /* M02 / M30 */
-};
-
-/* How a program is called. Bit 0: a new local level; bit 1: called by a
- * code (custom G/M code, M/T/S/B code subprogram), inside which codes no
- * longer call programs; bit 2: called by G66/G66.1, whose own modal call is
- * off inside. */
-enum mbrt_call_kind {
-  MBRT_CALL_SUB = 0,        /* M98 */
-  MBRT_CALL_MACRO = 1,      /* G65 */
-  MBRT_CALL_CODE_SUB = 2,   /* M code (6071-6079), T, S, B code */
-  MBRT_CALL_CODE_MACRO = 3, /* custom G code (6050-6059), M code (6080-) */
-  MBRT_CALL_MODAL = 5       /* G66 after a move, G66.1 at every block */
-};
-
-typedef struct mbrt_flow {
-  int kind;        /* mbrt_flow_kind */
-  int program;     /* CALL: program number */
-  long repeat;     /* CALL: repeat count (L, or M98's legacy high P digits) */
-  int has_seq;     /* M99 P given */
-  double seq;      /* M99 P: sequence number to resume at in the caller */
-  int counts_part; /* M02/M30 */
-  int call_kind;   /* CALL: mbrt_call_kind */
-  /* CALL of a macro: its arguments, valid until the block's call level
-   * executes its next NC block. */
-  const mbrt_word* args;
-  size_t arg_count;
-} mbrt_flow;
-
-/* Executes an NC block (modal G codes, motion, canned cycles, F S T M H D
- * words) and tells the engine what control transfer it asks for: the
- * engine makes the calls (mbrt_run_call with flow->call_kind). */
-mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
-                          mbrt_flow* flow);
-
-/* Traces "head" followed by the words ("X10 Y-2"). mbrt_nc_block traces its
- * own words. Engines trace a G65 call with mbrt_trace_call ("G65 P L" and
- * the arguments) before they look the program up. */
-void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
-                      size_t count);
-void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
-                     const mbrt_word* words, size_t count);
-
-/* Enters a call of `program` (mbrt_call_kind): a macro gets a new local
- * level whose #1..#33 are set from the argument words (specification I and
- * II, spec §5.2-5.4; a G66.1 block's G, L and P go to #10, #12, #16), a
- * subprogram shares the caller's. Checks nesting (PS0122, PS0077). */
-mbrt_status mbrt_call(mbrt_ctx* ctx, const char* program, int kind,
-                      const mbrt_word* args, size_t count);
-/* mbrt_call of a G65 macro. */
-mbrt_status mbrt_call_macro(mbrt_ctx* ctx, const char* program,
-                            const mbrt_word* args, size_t count);
-/* `mbc run --arg`: sets the main program's #1..#33 from argument words with
- * the G65 mapping, without a new call level. Call after mbrt_start. */
-mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
-                               size_t count);
-/* mbrt_call of an M98 subprogram. */
-mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program);
-/* M99: leaves the innermost call, restoring the caller's locals for G65. */
-void mbrt_return(mbrt_ctx* ctx);
-/* 0 in the main program. */
-int mbrt_call_depth(const mbrt_ctx* ctx);
-
-/* ---- Compiled programs ---------------------------------------------------
- */
-
-/* A body returns this when the run ended (M02/M30, M99 or the end of the
- * main program's text; mbrt_finish was called). */
-#define MBRT_STOP (-1)
+/* What a program leaves with (mbc/engine.h). */
+typedef struct mbrt_flow mbrt_flow;
 
 /* The code of one program, run at the current call level. Returns 0 when it
  * leaves by M99 or the end of its text (leave->has_seq/seq tell M99 P),
@@ -342,18 +234,9 @@ const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
  * Entry points and `mbc` call it before a run; the names are copied. */
 void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table);
 
-/* A call of `body` (kind: mbrt_call_kind), `repeat` times (none when <= 0):
- * each time mbrt_call, the body, the return; an M99 P stops the repetitions
- * and is passed on in out->has_seq/seq. */
-mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
-                          const mbrt_word* args, size_t count, long repeat,
-                          mbrt_body_fn body, void* user, mbrt_flow* out);
-
-/* Runs a program as the main program from the current state (after
- * mbrt_start and any variable presets): 0 or the alarm that stopped it. */
-mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program);
 /* mbrt_start, the arguments into #1..#33 as G65 would pass them, then
- * mbrt_run_body: one call of a compiled cycle. */
+ * mbrt_run_body (mbc/engine.h): one call of a compiled cycle, from the
+ * machine state the last run left. */
 mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
                           const mbrt_word* args, size_t count);
 /* The machine back to power-on: modal codes, the tool at the machine
@@ -365,40 +248,9 @@ void mbrt_reset_state(mbrt_ctx* ctx);
  * offsets and part counters from the profile. Sinks and limits stay. */
 void mbrt_reset(mbrt_ctx* ctx);
 
-/* ---- Output statements ---------------------------------------------------
- */
-
-/* One DPRNT/BPRNT item: text (with '*' already kept as written; the runtime
- * prints it as a space) or a value with its [c d] format. */
-typedef struct mbrt_print_item {
-  const char* text; /* non-NULL: literal text */
-  mbrt_num value;
-  int int_digits;  /* c (DPRNT only) */
-  int frac_digits; /* d */
-} mbrt_print_item;
-
-mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
-                       size_t count);
-mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
-                       size_t count);
-mbrt_status mbrt_popen(mbrt_ctx* ctx);
-mbrt_status mbrt_pclos(mbrt_ctx* ctx);
-
 /* ---- Alarms and results --------------------------------------------------
  */
 
-/* Raises an alarm found by the engine (division by zero, GOTO target...).
- * detail (may be NULL) is appended to the message. Returns the id. The first
- * alarm of a run is the one kept and reported. */
-mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail);
-/* The alarms of control transfers, worded alike by every engine (PS0128):
- * `jump` ("GOTO " or "M99 P") names a target outside 1..99999, otherwise
- * "N<seq> not found in <program>". */
-mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
-                                const char* program);
-/* PS0076 "O<number>": a called program that does not exist (PS0074 when
- * the number has more digits than the machine's program numbers). */
-mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number);
 /* The pending alarm id, or 0. */
 int mbrt_alarm(const mbrt_ctx* ctx);
 /* The pending alarm's number as the control shows it: 112 for PS0112, 3001

@@ -6,7 +6,7 @@
 #include <mbc/addresses.h>
 #include <mbc/alarm.h>
 #include <mbc/compiled.h>
-#include <mbc/runtime.h>
+#include <mbc/engine.h>
 #include <mbc/sysvars.h>
 #include <mbc/value.h>
 

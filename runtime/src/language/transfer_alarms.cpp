@@ -1,8 +1,8 @@
 // The alarms of GOTO, M99 P and calls, in one place so that the interpreter,
 // the IR evaluator and compiled code word them identically.
 #include <mbc/arith.h>
+#include <mbc/engine.h>
 #include <mbc/limits.h>
-#include <mbc/runtime.h>
 
 #include <fmt/format.h>
 
