@@ -29,6 +29,32 @@ TEST(RuntimeAlarm, ReportWithCallStack) {
   mbrt_return(m.ctx());
   mbrt_return(m.ctx());
   EXPECT_NE(m.report().find("O9100"), std::string::npos);
+  // The same, piece by piece.
+  char message[64];
+  EXPECT_EQ(mbrt_alarm_message(m.ctx(), message, sizeof message), 11U);
+  EXPECT_STREQ(message, "ZERO DIVIDE");
+  EXPECT_STREQ(mbrt_alarm_file(m.ctx()), "sub.nc");
+  EXPECT_EQ(mbrt_alarm_line(m.ctx()), 50);
+  ASSERT_EQ(mbrt_alarm_depth(m.ctx()), 2U);
+  std::string calls;
+  const char* program = nullptr;
+  const char* file = nullptr;
+  int line = 0;
+  for (size_t level = 0;
+       mbrt_alarm_call(m.ctx(), level, &program, &file, &line) != 0; ++level) {
+    calls += fmt::format("{} {}:{};", program, file, line);
+  }
+  EXPECT_EQ(calls, "O9200 main.nc:43;O9100 main.nc:5;");
+}
+
+TEST(RuntimeAlarm, NoPartsWithoutAnAlarm) {
+  Machine m;
+  char message[8] = "x";
+  EXPECT_EQ(mbrt_alarm_message(m.ctx(), message, sizeof message), 0U);
+  EXPECT_STREQ(message, "");
+  EXPECT_STREQ(mbrt_alarm_file(m.ctx()), "");
+  EXPECT_EQ(mbrt_alarm_line(m.ctx()), 0);
+  EXPECT_EQ(mbrt_alarm_depth(m.ctx()), 0U);
 }
 
 TEST(RuntimeAlarm, DetailIsAppended) {

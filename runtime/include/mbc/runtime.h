@@ -263,6 +263,19 @@ size_t mbrt_alarm_code(const mbrt_ctx* ctx, char* buf, size_t size);
  * file:line" line per call level, innermost first, each line ending in '\n'
  * (empty when no alarm is pending); returns the length (snprintf-style). */
 size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size);
+/* The report's parts, for a host that shows them its own way: the message
+ * after the code ("ZERO DIVIDE", "ILLEGAL ARGUMENT: SQRT[-1]", a #3000
+ * message; snprintf-style), the block it happened in ("" and 0 when none is
+ * pending), and the calls it happened under, innermost first, one per "in
+ * O9100 called from file:line" line: level < mbrt_alarm_depth gives 1 with
+ * the program called and the calling block, otherwise 0. The strings stay
+ * valid until the next run. */
+size_t mbrt_alarm_message(const mbrt_ctx* ctx, char* buf, size_t size);
+const char* mbrt_alarm_file(const mbrt_ctx* ctx);
+int mbrt_alarm_line(const mbrt_ctx* ctx);
+size_t mbrt_alarm_depth(const mbrt_ctx* ctx);
+int mbrt_alarm_call(const mbrt_ctx* ctx, size_t level, const char** program,
+                    const char** file, int* line);
 
 typedef struct mbrt_stats {
   uint64_t blocks;

@@ -117,3 +117,33 @@ size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
   }
   return copyText(report, buf, size);
 }
+
+size_t mbrt_alarm_message(const mbrt_ctx* ctx, char* buf, size_t size) {
+  return copyText(ctx->alarm.id != AlarmId::None ? alarmMessage(ctx->alarm)
+                                                 : std::string(),
+                  buf, size);
+}
+
+const char* mbrt_alarm_file(const mbrt_ctx* ctx) {
+  return ctx->alarm.file.c_str();
+}
+
+int mbrt_alarm_line(const mbrt_ctx* ctx) {
+  return ctx->alarm.line;
+}
+
+size_t mbrt_alarm_depth(const mbrt_ctx* ctx) {
+  return ctx->alarm.stack.size();
+}
+
+int mbrt_alarm_call(const mbrt_ctx* ctx, size_t level, const char** program,
+                    const char** file, int* line) {
+  if (level >= ctx->alarm.stack.size()) {
+    return 0;
+  }
+  const CallSite& site = ctx->alarm.stack[level];
+  *program = site.program.c_str();
+  *file = site.file.c_str();
+  *line = site.line;
+  return 1;
+}
