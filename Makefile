@@ -3,7 +3,8 @@
 BUILD_DIR ?= build
 JOBS ?= 2
 DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
-                nlohmann-json3-dev libxxhash-dev googletest libgtest-dev libgmock-dev parallel
+                nlohmann-json3-dev libxxhash-dev googletest libgtest-dev libgmock-dev parallel \
+                pkg-config
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps install-missing build install demo test test-asan fuzz bench difftest check-format \

@@ -3,7 +3,8 @@
 # of this build into a scratch prefix, then examples/embed and
 # examples/sim-loop configured with find_package(mbc) against that prefix,
 # built, and run to their expected output; the installed mbc links `mbc
-# build` executables with the installed libraries, not the build tree's.
+# build` executables with the installed libraries, not the build tree's;
+# C programs link the shared runtime through pkg-config.
 #   package.sh MBC BUILD_DIR SOURCE_DIR [SANITIZERS]
 build=$(realpath "$2")
 source=$(realpath "$3")
@@ -38,4 +39,46 @@ printf '%%\nO1\n#100 = 7\nG01 X#100 F100\nM30\n%%\n' >p.nc
 grep -q "$prefix/lib/libmbc_runtime.a" link.txt ||
   { cat link.txt; fail "installed mbc build did not link the installed runtime"; }
 ./p --toolpath - 2>/dev/null | grep -q '"x":7' || fail "the executable of the installed mbc"
-echo "package: install, find_package(mbc), mbc_add_macro_library and mbc build work"
+# C users link through pkg-config with nothing written by hand: the shared
+# runtime brings fmt and the C++ library, and exports the C ABI alone.
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+printf '#include <mbc/version.h>\nMBC_VERSION_STRING\n' >version.c
+version=$(cc -E -P -I"$prefix/include" version.c | tr -d '" ')
+[ "$(pkg-config --modversion mbc)" = "$version" ] ||
+  fail "pkg-config --modversion mbc is not the installed version.h's ($version)"
+sanitize_flag=""
+[ -n "$sanitize" ] && sanitize_flag="-fsanitize=$sanitize"
+cat >call.c <<'EOF'
+#include "p.h"
+#include <stdio.h>
+int main(void) {
+  char err[256];
+  mbrt_num value = 0;
+  mbrt_ctx* ctx = mbrt_create(NULL, err, sizeof err);
+  if (ctx == NULL || mbc_O1(ctx, NULL, 0) != MBRT_OK ||
+      mbrt_read_var(ctx, 100, &value) != MBRT_OK) {
+    return 1;
+  }
+  printf("%g\n", value);
+  mbrt_destroy(ctx);
+  return 0;
+}
+EOF
+"$prefix/bin/mbc" compile -c p.nc -o p.o --header p.h || fail "installed mbc compile"
+# shellcheck disable=SC2046 # pkg-config's words are separate arguments
+cc -std=c99 -Wall -Wextra -Wpedantic -Werror $sanitize_flag $(pkg-config --cflags mbc) \
+  -I. call.c p.o $(pkg-config --libs mbc) -o call >cc.log 2>&1 ||
+  { cat cc.log; fail "a C program with a compiled cycle, linked by pkg-config"; }
+[ "$(LD_LIBRARY_PATH="$prefix/lib" ./call)" = 7 ] || fail "the pkg-config-linked program"
+# shellcheck disable=SC2046
+cc -std=c99 -Wall -Wextra -Wpedantic -Werror $sanitize_flag $(pkg-config --cflags mbc) \
+  "$source/tests/c/runtime_from_c.c" $(pkg-config --libs mbc) -o from_c >cc.log 2>&1 ||
+  { cat cc.log; fail "tests/c/runtime_from_c.c against the installed runtime.h alone"; }
+LD_LIBRARY_PATH="$prefix/lib" ./from_c || fail "runtime_from_c linked by pkg-config"
+readelf -d call | grep -q 'NEEDED.*libmbc_runtime\.so\.' ||
+  fail "the program does not load the shared runtime"
+exported=$(nm -D --defined-only "$prefix/lib/libmbc_runtime.so" | awk '{print $3}' |
+  grep -v '^mbrt_' || true)
+[ -z "$exported" ] || fail "the shared runtime exports more than its C ABI: $exported"
+
+echo "package: install, find_package(mbc), mbc_add_macro_library, mbc build and pkg-config work"
