@@ -1,13 +1,12 @@
 // Output files of `mbc run` (see output_files.h).
 #include "driver/output_files.h"
 
-#include <mbc/engine.h>
-#include <mbc/sysvars.h>
+#include <mbc/limits.h>
 #include <mbc/toolpath_json.h>
-#include <mbc/value.h>
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -131,21 +130,29 @@ bool replaceFile(const std::string& path, const std::string& content) {
   return ok;
 }
 
+std::vector<std::pair<int, double>> commonVariables(const mbrt_ctx* ctx) {
+  // Room for every common of the largest machine: one pass.
+  constexpr std::size_t kMost = (kLastNonvolatile - kFirstCommon + 1) +
+                                (kLastCommon98000 - kFirstCommon98000 + 1);
+  std::array<int, kMost> numbers;
+  std::array<mbrt_num, kMost> values;
+  const std::size_t count =
+      mbrt_set_commons(ctx, numbers.data(), values.data(), kMost);
+  std::vector<std::pair<int, double>> set;
+  set.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    set.emplace_back(numbers[i], values[i]);
+  }
+  return set;
+}
+
 std::string variablesJson(const mbrt_ctx* ctx) {
   std::string json = "{";
   bool first = true;
-  const auto add = [&](int from, int to) {
-    for (int n = from; n <= to; ++n) {
-      mbrt_num v;
-      if (!mbrt_peek_common(ctx, n, &v) || isVacant(v)) {
-        continue;
-      }
-      json += fmt::format("{}\"{}\":{}", first ? "" : ",", n, v);
-      first = false;
-    }
-  };
-  add(100, 999);
-  add(kFirstCommon98000, kLastCommon98000);
+  for (const auto& [n, v] : commonVariables(ctx)) {
+    json += fmt::format("{}\"{}\":{}", first ? "" : ",", n, v);
+    first = false;
+  }
   json += "}\n";
   return json;
 }

@@ -6,6 +6,8 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mbc::driver {
 
@@ -66,7 +68,9 @@ private:
 /// regular file is replaced by rename; "-" is standard output.
 bool replaceFile(const std::string& path, const std::string& content);
 
-/// Every common variable that is not vacant, as a JSON object and a line.
+/// Every common variable that is not vacant, by number.
+std::vector<std::pair<int, double>> commonVariables(const mbrt_ctx* ctx);
+/// The same as a JSON object and a line.
 std::string variablesJson(const mbrt_ctx* ctx);
 
 /// Writes variablesJson to `path` by replaceFile.

@@ -1,5 +1,5 @@
 // What embedders use beyond the sinks: the alarm callback, the toolpath
-// buffer, and what a sink may not call.
+// buffer, what a sink may not call, the set commons.
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -108,6 +108,24 @@ TEST(RuntimeEmbedding, ProgramNamesOutliveTheirCalls) {
   const mbrt_motion* motions = mbrt_buffered_motions(m.ctx(), &count);
   ASSERT_EQ(count, 1U);
   EXPECT_STREQ(motions[0].program, "O0042");
+}
+
+TEST(RuntimeEmbedding, SetCommonsInNumberOrderSnprintfStyle) {
+  Machine m;
+  ASSERT_EQ(m.write(999, -1), 0);
+  ASSERT_EQ(m.write(101, 3), 0);
+  ASSERT_EQ(m.write(102, 0), 0); // zero is a value, not vacant
+  EXPECT_EQ(mbrt_set_commons(m.ctx(), nullptr, nullptr, 0), 3U);
+  int numbers[3] = {};
+  mbrt_num values[3] = {};
+  EXPECT_EQ(mbrt_set_commons(m.ctx(), numbers, values, 2), 3U);
+  EXPECT_EQ(numbers[0], 101);
+  EXPECT_EQ(numbers[1], 102);
+  EXPECT_EQ(numbers[2], 0); // past the capacity: untouched
+  mbrt_set_commons(m.ctx(), numbers, values, 3);
+  EXPECT_EQ(numbers[2], 999);
+  EXPECT_EQ(values[0], 3.0);
+  EXPECT_EQ(values[2], -1.0);
 }
 
 } // namespace

@@ -182,6 +182,11 @@ mbrt_status mbrt_preset_var(mbrt_ctx* ctx, double number, mbrt_num value);
 /* A common variable (#100..#999, #98000..#98499) without side effects: 1
  * and *out when the number is a common variable of this machine, else 0. */
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out);
+/* The common variables that are set (not vacant), in number order: up to
+ * `capacity` of them into numbers[] and values[]; returns how many there
+ * are (snprintf-style: call with capacity 0 to size the arrays). */
+size_t mbrt_set_commons(const mbrt_ctx* ctx, int* numbers, mbrt_num* values,
+                        size_t capacity);
 /* How many tool offsets the machine has (#10001.. up to #10000 + count). */
 int mbrt_tool_offset_count(const mbrt_ctx* ctx);
 

@@ -126,6 +126,37 @@ int mbrt_tool_offset_count(const mbrt_ctx* ctx) {
   return ctx->profile.toolOffsetCount;
 }
 
+size_t mbrt_set_commons(const mbrt_ctx* ctx, int* numbers, mbrt_num* values,
+                        size_t capacity) {
+  size_t count = 0;
+  // Range by range: an embedder may read them after every short run.
+  const auto scan = [&](int first, int last, const mbrt_num* storage) {
+    for (int n = first; n <= last; ++n) {
+      const mbrt_num value = storage[n - first];
+      if (isVacant(value)) {
+        continue;
+      }
+      if (count < capacity) {
+        numbers[count] = n;
+        values[count] = value;
+      }
+      ++count;
+    }
+  };
+  const auto commons = [&](int first, int last) {
+    scan(first, last, &ctx->commons[static_cast<std::size_t>(first)]);
+  };
+  commons(kFirstCommon, kLastCommon);
+  if (ctx->profile.extendedCommon) {
+    commons(kFirstExtendedCommon, kLastExtendedCommon);
+  }
+  commons(kFirstNonvolatile, kLastNonvolatile);
+  if (ctx->profile.commons98000) {
+    scan(kFirstCommon98000, kLastCommon98000, ctx->commons98000.data());
+  }
+  return count;
+}
+
 int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {
   if (ctx->profile.commons98000 && number >= kFirstCommon98000 &&
       number <= kLastCommon98000) {
