@@ -19,11 +19,11 @@ namespace mbc::driver {
 namespace {
 
 bool readInto(const std::string& path, DiagnosticEngine& diags,
-              const ParseOptions& options, CompiledUnit& out) {
+              const ParseOptions& options, CompiledUnit& out,
+              std::string& failure) {
   std::string text;
   if (int error = readFile(path, text)) {
-    std::fprintf(stderr, "mbc: error: cannot read '%s': %s\n", path.c_str(),
-                 std::strerror(error));
+    failure = "cannot read '" + path + "': " + std::strerror(error);
     return false;
   }
   std::uint32_t id = out.sources.add(path, std::move(text));
@@ -64,7 +64,8 @@ void nameAnonymousProgram(Unit& unit, std::size_t first,
 /// search path has a file for one of them.
 bool loadCalledPrograms(const std::vector<std::string>& files,
                         const LoadOptions& load, DiagnosticEngine& diags,
-                        const ParseOptions& options, CompiledUnit& out) {
+                        const ParseOptions& options, CompiledUnit& out,
+                        std::string& failure) {
   const std::vector<std::string> dirs = searchDirs(files, load.includeDirs);
   std::set<std::string> read(files.begin(), files.end());
   for (bool added = true; added;) {
@@ -75,7 +76,7 @@ bool loadCalledPrograms(const std::vector<std::string>& files,
         continue;
       }
       const std::size_t first = out.unit.programs.size();
-      if (!readInto(*path, diags, options, out)) {
+      if (!readInto(*path, diags, options, out, failure)) {
         return false;
       }
       nameAnonymousProgram(out.unit, first, called);
@@ -87,21 +88,37 @@ bool loadCalledPrograms(const std::vector<std::string>& files,
 
 } // namespace
 
-bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
-              CompiledUnit& out) {
-  DiagnosticEngine diags(out.sources);
+bool parseInputs(const std::vector<SourceText>& texts,
+                 const std::vector<std::string>& files, const LoadOptions& load,
+                 CompiledUnit& out, DiagnosticEngine& diags,
+                 std::string& failure) {
   ParseOptions options;
   options.checkWarnings = load.checkWarnings;
   options.stopAtErrorLimit = load.errors == ErrorMode::Refuse;
+  for (const SourceText& input : texts) {
+    const std::uint32_t id = out.sources.add(input.name, input.text);
+    parseFile(out.sources, id, diags, options, out.unit);
+  }
   for (const std::string& path : files) {
-    if (!readInto(path, diags, options, out)) {
+    if (!readInto(path, diags, options, out, failure)) {
       return false;
     }
   }
-  if (!loadCalledPrograms(files, load, diags, options, out)) {
+  if (!loadCalledPrograms(files, load, diags, options, out, failure)) {
     return false;
   }
   checkUnit(out.unit, diags, SemaOptions{load.defaultMachine});
+  return true;
+}
+
+bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
+              CompiledUnit& out) {
+  DiagnosticEngine diags(out.sources);
+  std::string failure;
+  if (!parseInputs({}, files, load, out, diags, failure)) {
+    std::fprintf(stderr, "mbc: error: %s\n", failure.c_str());
+    return false;
+  }
   std::string rendered = renderDiagnostics(diags, load.errors);
   std::fputs(rendered.c_str(), stderr);
   if (load.errors == ErrorMode::Alarm && diags.totalErrors() > 0) {

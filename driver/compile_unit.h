@@ -27,6 +27,22 @@ struct LoadOptions {
   std::vector<std::string> includeDirs; // -I: more places to find programs
 };
 
+/// An input given as text rather than a file (the Python package's
+/// sources), named for diagnostics and alarm reports.
+struct SourceText {
+  std::string name;
+  std::string text;
+};
+
+/// Parses and checks the texts, the files and the programs they call that
+/// none of them defines (as loadUnit), leaving the diagnostics in `diags`
+/// (made for out.sources) unprinted. False when a file could not be read,
+/// with the reason in `failure`; errors in the input are only diagnostics.
+bool parseInputs(const std::vector<SourceText>& texts,
+                 const std::vector<std::string>& files, const LoadOptions& load,
+                 CompiledUnit& out, DiagnosticEngine& diags,
+                 std::string& failure);
+
 /// Loads and checks the files, and the programs they call that none of them
 /// defines, from the files' folders and the -I folders (program_search.h).
 /// Diagnostics go to standard error. Returns false when a file could not be

@@ -33,8 +33,7 @@ int findMain(const Unit& unit, const std::string& wanted) {
 } // namespace
 
 int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
-  engine_ = o.engine;
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   if (!loadUnit(o.files, loadOptions(o), cu_)) {
     return 1;
   }
@@ -43,10 +42,29 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
     std::fprintf(stderr, "mbc: warning: the input has no blocks to run\n");
     return kNothingToRun;
   }
+  std::string error;
+  const int status = build(o, phases, error);
+  if (status != 0) {
+    std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
+  }
+  return status;
+}
+
+bool PreparedProgram::parse(const std::vector<SourceText>& texts,
+                            const std::vector<std::string>& files,
+                            const LoadOptions& load, DiagnosticEngine& diags,
+                            std::string& failure) {
+  return parseInputs(texts, files, load, cu_, diags, failure);
+}
+
+int PreparedProgram::build(const Options& o, PhaseTimes& phases,
+                           std::string& error) {
+  engine_ = o.engine;
   mainIndex_ = findMain(cu_.unit, o.run.mainProgram);
   if (mainIndex_ < 0) {
-    std::fprintf(stderr, "mbc: error: no program %s in the input\n",
-                 o.run.mainProgram.c_str());
+    error = cu_.unit.programs.empty()
+                ? "the input has no programs"
+                : "no program " + o.run.mainProgram + " in the input";
     return 2;
   }
   for (const Program& p : cu_.unit.programs) {
@@ -54,7 +72,7 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
       names_.push_back({p.name.c_str(), p.number, nullptr});
     }
   }
-  start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   std::optional<JitCompiler> jit;
   if (engine_ == "jit") {
     jit.emplace(o, cu_.sources);
@@ -65,16 +83,15 @@ int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
   }
   if (engine_ != "interp") {
     if (!buildModule(cu_, o, module_) || !optimizeModule(module_, o)) {
+      error = "internal error: the IR of the input could not be built";
       return 4;
     }
     phases.emplace_back("IR", millisecondsSince(start));
   }
   start = std::chrono::steady_clock::now();
   if (jit) {
-    std::string error;
     code_ = jit->compile(module_, error);
     if (!code_) {
-      std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
       return 4;
     }
     phases.emplace_back("code generation", millisecondsSince(start));

@@ -26,6 +26,21 @@ public:
   /// kNothingToRun, or an exit status: 1 source errors, 2 no such main
   /// program (--main), 4 internal error. Messages go to stderr.
   int prepare(const Options& o, PhaseTimes& phases);
+  /// prepare() in two steps, for inputs given as text too (the Python
+  /// package): parse() leaves the diagnostics in `diags`, made for
+  /// sources(); false when a file could not be read (`failure` says why).
+  bool parse(const std::vector<SourceText>& texts,
+             const std::vector<std::string>& files, const LoadOptions& load,
+             DiagnosticEngine& diags, std::string& failure);
+  /// Then build() finds the main program and makes the engine's code:
+  /// 0, or prepare()'s exit status with the reason in `error`.
+  int build(const Options& o, PhaseTimes& phases, std::string& error);
+
+  const SourceManager& sources() const { return cu_.sources; }
+
+  const Unit& unit() const { return cu_.unit; }
+
+  int mainIndex() const { return mainIndex_; }
 
   /// Runs the main program in a started context. Const: threads share it.
   mbrt_status run(mbrt_ctx* ctx) const;

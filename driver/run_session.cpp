@@ -142,6 +142,8 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
   return true;
 }
 
+} // namespace
+
 mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
   for (auto [number, value] : o.presets) {
     if (mbrt_status st = mbrt_preset_var(ctx, number, value)) {
@@ -157,8 +159,6 @@ mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
   }
   return mbrt_set_main_args(ctx, words.data(), words.size());
 }
-
-} // namespace
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(

@@ -54,6 +54,10 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
                const Engine& engine, SessionLog& log,
                const PhaseTimes& phases = {});
 
+/// The presets (mbrt_preset_var) then the main program's arguments (as G65
+/// passes them, real values) of a started run: 0 or the alarm.
+mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx);
+
 /// `mbc run`'s session: a context, the signal handlers, one run reporting to
 /// stderr. 2 for a bad machine profile.
 int runOnce(const RunOptions& o, const std::string& mainName,

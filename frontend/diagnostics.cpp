@@ -22,18 +22,6 @@ constexpr std::array kKinds = {
 #include "frontend/diagnostic_kinds.def"
 };
 
-const char* severityText(Severity s) {
-  switch (s) {
-    case Severity::Error:
-      return "error";
-    case Severity::Warning:
-      return "warning";
-    case Severity::Note:
-      return "note";
-  }
-  return "error";
-}
-
 // The source line as shown under a diagnostic: control bytes and invalid
 // UTF-8 escaped (a NUL must not cut the output), tabs as one space, and only
 // a window around the caret of a very long line. column[i] is the display
@@ -140,6 +128,18 @@ void renderOne(const SourceManager& sm, const Diagnostic& d, std::string& out) {
 }
 
 } // namespace
+
+const char* severityText(Severity s) {
+  switch (s) {
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
+  }
+  return "error";
+}
 
 Severity severityOf(DiagKind kind) {
   return kKinds[static_cast<int>(kind)].severity;

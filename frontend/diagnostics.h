@@ -40,6 +40,8 @@ struct Diagnostic {
 };
 
 Severity severityOf(DiagKind kind);
+/// "error", "warning" or "note", as diagnostics print it.
+const char* severityText(Severity severity);
 /// The alarm a block with this error raises when it runs (AlarmId::None:
 /// the run goes on).
 AlarmId runTimeAlarm(DiagKind kind);
