@@ -280,6 +280,42 @@ def batch_throughput(mbc, runs, work):
     return results
 
 
+SIM_CALLS = 20000
+THROUGHPUT = re.compile(r"throughput: (\d+) calls/s")
+
+
+def embedded_calls(build, runs):
+    """Median calls per second of the simulation loop around the pocket
+    cycle, in C++ (examples/sim-loop/sim_loop.cpp: the compiled cycle
+    through the C ABI, a motion callback) and in Python (sim_loop.py: the
+    mbc package, a numpy array of motions per call)."""
+    sim = HERE.parent / "examples" / "sim-loop"
+    loops = {"C++ (mbc_O9200, motion callback)":
+             [str(build / "examples" / "sim-loop" / "sim_loop")],
+             "Python (mbc package, numpy motions)":
+             ["/usr/bin/python3", str(sim / "sim_loop.py")]}
+    os.environ["PYTHONPATH"] = str(build / "python")
+    rates = {}
+    for name, command in loops.items():
+        print(f"bench: simulation loop, {name}", file=sys.stderr)
+        samples = []
+        for _ in range(runs):
+            out = subprocess.run([*command, str(SIM_CALLS)], check=True,
+                                 capture_output=True, text=True).stdout
+            samples.append(float(THROUGHPUT.search(out)[1]))
+        rates[name] = statistics.median(samples)
+    return rates
+
+
+def embedded_table(rates):
+    lines = ["| loop | calls/s | against C++ |", "|---|---|---|"]
+    cpp = next(iter(rates.values()))
+    for name, rate in rates.items():
+        lines.append(f"| {name} | {rate:.0f} | {cpp / rate:.2f}x slower |"
+                     if rate != cpp else f"| {name} | {rate:.0f} | 1 |")
+    return lines
+
+
 def batch_table(results):
     lines = ["| output | engine | rows/s, 1 thread | rows/s, 2 threads |"
              " speed-up, rows phase | speed-up, whole process |",
@@ -456,6 +492,7 @@ def main():
                                  for name in modes], args.runs,
                            work) if has_rs274 else {}
         batch = batch_throughput(mbc, args.runs, work)
+        embedded = embedded_calls(Path(mbc).parent, args.runs)
         operations = micro(args.micro, args.runs) if args.micro else {}
     report = "\n".join([
         "# mbc benchmarks", "",
@@ -509,6 +546,14 @@ def main():
         " rows' results in one combined JSONL file or in four files per"
         " row.", "",
         *batch_table(batch), "",
+        "## Embedded calls: C++ and Python", "",
+        f"The simulation loop of examples/sim-loop, {SIM_CALLS} calls of the"
+        " pocket cycle O9200 on one machine (each call goes on from where the"
+        " last left the tool) with every motion measured, median of"
+        f" {args.runs}: sim_loop.cpp through the C ABI, sim_loop.py through"
+        " the Python package (keyword arguments in, a Result with a numpy"
+        " motions array out, lengths computed with numpy).", "",
+        *embedded_table(embedded), "",
         "## Writers alone", "",
         "What writing one move costs beyond making it (bench/micro, the"
         " differences below): the run phase's share of the output modes"

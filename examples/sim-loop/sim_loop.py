@@ -1,70 +1,24 @@
 #!/usr/bin/env python3
-"""The simulation loop of sim_loop.cpp from Python, through ctypes.
+"""The simulation loop of sim_loop.cpp from Python, with the mbc package.
 
-`mbc compile --shared pocket.nc -o libpocket.so` makes a shared library
-holding the compiled cycle O9200 (entry point mbc_O9200) and the whole mbc
-runtime (its C ABI, mbc/runtime.h). This script calls the cycle for the
-same parameter sets as sim_loop.cpp, consumes the motions through the
-motion callback, and prints the same totals and its own throughput.
+pocket.nc is compiled in process (mbc.compile, through the compiled-code
+cache); O9200 is called for the same parameter sets as sim_loop.cpp on one
+mbc.Machine, each call's motions come back as a numpy array, and the same
+totals are computed from them with numpy, a thousand calls' arrays joined
+at a time (mbc.concatenate). It prints the totals and its own throughput.
 
-    python3 sim_loop.py path/to/libpocket.so [CALLS]    (default 2000)
+    python3 sim_loop.py [CALLS]      (default 2000; PYTHONPATH=build/python
+                                      in the build tree)
 """
-import ctypes
-import math
+import os
 import sys
 import time
 
-MAX_AXES = 8  # MBRT_MAX_AXES
-RAPID, LINEAR, CW, CCW = 0, 1, 2, 3  # enum mbrt_motion_kind
-WORD_VALUE = 2  # MBRT_WORD_VALUE: a real value, as from a variable
+import numpy
 
+import mbc
 
-class Motion(ctypes.Structure):
-    """struct mbrt_motion (runtime.h), field for field."""
-    _fields_ = [("kind", ctypes.c_int),
-                ("axis_count", ctypes.c_int),
-                ("axis_names", ctypes.c_char_p),
-                ("end", ctypes.c_double * MAX_AXES),
-                ("feed", ctypes.c_double),
-                ("plane", ctypes.c_int),
-                ("center_axes", ctypes.c_char * 2),
-                ("center", ctypes.c_double * 2),
-                ("decimals", ctypes.c_int),
-                ("file", ctypes.c_char_p),
-                ("line", ctypes.c_int),
-                ("program", ctypes.c_char_p),
-                ("cycle", ctypes.c_int),
-                ("machine", ctypes.c_double * MAX_AXES),
-                ("start", ctypes.c_double * MAX_AXES)]
-
-
-class Word(ctypes.Structure):
-    """struct mbrt_word: an argument as G65 passes it."""
-    _fields_ = [("letter", ctypes.c_char),
-                ("kind", ctypes.c_ubyte),
-                ("value", ctypes.c_double)]
-
-
-MotionFn = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.POINTER(Motion))
-
-
-def load(path):
-    lib = ctypes.CDLL(path)
-    lib.mbrt_create.restype = ctypes.c_void_p
-    lib.mbrt_create.argtypes = [ctypes.c_char_p, ctypes.c_char_p,
-                                ctypes.c_size_t]
-    lib.mbrt_destroy.argtypes = [ctypes.c_void_p]
-    lib.mbrt_set_motion_sink.argtypes = [ctypes.c_void_p, MotionFn,
-                                         ctypes.c_void_p]
-    lib.mbrt_read_var.argtypes = [ctypes.c_void_p, ctypes.c_double,
-                                  ctypes.POINTER(ctypes.c_double)]
-    lib.mbrt_alarm_report.restype = ctypes.c_size_t
-    lib.mbrt_alarm_report.argtypes = [ctypes.c_void_p, ctypes.c_char_p,
-                                      ctypes.c_size_t]
-    lib.mbc_O9200.restype = ctypes.c_int
-    lib.mbc_O9200.argtypes = [ctypes.c_void_p, ctypes.POINTER(Word),
-                              ctypes.c_size_t]
-    return lib
+RAPID, LINEAR, CW, CCW = 0, 1, 2, 3  # mbc.MOTION_NAMES
 
 
 class Totals:
@@ -72,69 +26,65 @@ class Totals:
         self.alarms = self.motions = self.circles = 0
         self.feed_length = self.rapid_length = self.cutting_minutes = 0.0
 
-    def add(self, m):
-        """The motion callback: lengths as sim_loop.cpp measures them."""
-        self.motions += 1
-        start, end = m.start, m.end
-        if m.kind == RAPID:
-            self.rapid_length += math.dist(start[:3], end[:3])
-            return
-        if m.kind == LINEAR:
-            length = math.dist(start[:3], end[:3])
-        else:
-            sx, sy = start[0] - m.center[0], start[1] - m.center[1]
-            ex, ey = end[0] - m.center[0], end[1] - m.center[1]
-            sweep = math.atan2(ey, ex) - math.atan2(sy, sx)
-            if m.kind == CCW:
-                sweep = sweep + 2 * math.pi if sweep <= 0 else sweep
-            else:
-                sweep = sweep - 2 * math.pi if sweep >= 0 else sweep
-            planar = abs(sweep) * math.hypot(sx, sy)
-            length = math.hypot(planar, end[2] - start[2])
-        self.feed_length += length
-        self.cutting_minutes += length / m.feed
+    def add(self, calls):
+        """Some calls' motions: lengths as sim_loop.cpp measures them."""
+        m = mbc.concatenate(calls)
+        calls.clear()
+        self.motions += len(m)
+        dx, dy, dz = m["x"] - m["sx"], m["y"] - m["sy"], m["z"] - m["sz"]
+        length = numpy.sqrt(dx * dx + dy * dy + dz * dz)
+        kind = m["motion"]
+        arcs = numpy.flatnonzero(kind >= CW)
+        a = m[arcs]
+        sx, sy = a["sx"] - a["cx"], a["sy"] - a["cy"]
+        ex, ey = a["x"] - a["cx"], a["y"] - a["cy"]
+        sweep = numpy.arctan2(ey, ex) - numpy.arctan2(sy, sx)
+        ccw = a["motion"] == CCW
+        sweep[ccw & (sweep <= 0)] += 2 * numpy.pi
+        sweep[~ccw & (sweep >= 0)] -= 2 * numpy.pi
+        length[arcs] = numpy.hypot(numpy.abs(sweep) * numpy.hypot(sx, sy),
+                                   dz[arcs])
+        rapid = kind == RAPID
+        feed = ~rapid
+        self.rapid_length += float(length[rapid].sum())
+        self.feed_length += float(length[feed].sum())
+        self.cutting_minutes += float((length[feed] / m["f"][feed]).sum())
 
 
 def pocket_args(i):
     """Parameter set i, the same as sim_loop.cpp's."""
     refused = i % 1000 == 999
-    values = (("X", (i % 5) * 100.0), ("Y", 0.0), ("Z", -2.0 - i % 7),
-              ("R", 10.0 if refused else 10.0 + (i % 40) * 0.5),
-              ("D", 40.0 if refused else 6.0 + (i % 3) * 2.0), ("Q", 1.5),
-              ("F", 300.0 + (i % 4) * 100.0))
-    return (Word * len(values))(*(Word(k.encode(), WORD_VALUE, v) for k, v in values))
+    return {"X": (i % 5) * 100.0, "Y": 0.0, "Z": -2.0 - i % 7,
+            "R": 10.0 if refused else 10.0 + (i % 40) * 0.5,
+            "D": 40.0 if refused else 6.0 + (i % 3) * 2.0, "Q": 1.5,
+            "F": 300.0 + (i % 4) * 100.0}
 
 
 def main():
-    if len(sys.argv) < 2:
-        print(__doc__, file=sys.stderr)
-        return 2
-    lib = load(sys.argv[1])
-    calls = int(sys.argv[2]) if len(sys.argv) > 2 else 2000
-    err = ctypes.create_string_buffer(256)
-    ctx = lib.mbrt_create(None, err, len(err))
-    if not ctx:
-        print(f"sim-loop: cannot create a context: {err.value.decode()}",
-              file=sys.stderr)
-        return 1
+    calls = int(sys.argv[1]) if len(sys.argv) > 1 else 2000
+    # From its folder, so that alarm reports name pocket.nc as sim_loop.cpp's do.
+    os.chdir(os.path.dirname(os.path.abspath(__file__)))
+    pocket = mbc.compile("pocket.nc")
+    machine = mbc.Machine()
     totals = Totals()
-    sink = MotionFn(lambda user, m: totals.add(m.contents))
-    lib.mbrt_set_motion_sink(ctx, sink, None)
-    circles = ctypes.c_double()
-    report = ctypes.create_string_buffer(512)
+    pending = []
     began = time.perf_counter()
     for i in range(calls):
-        args = pocket_args(i)
-        if lib.mbc_O9200(ctx, args, len(args)) != 0:
+        try:
+            result = pocket(machine, **pocket_args(i))
+        except mbc.Alarm as alarm:
             totals.alarms += 1
             if totals.alarms == 1:
-                lib.mbrt_alarm_report(ctx, report, len(report))
-                print(f"sim-loop: call {i}: {report.value.decode()}", end="")
+                print(f"sim-loop: call {i}: {alarm.report}", end="")
+            pending.append(alarm.result.motions)
             continue
-        lib.mbrt_read_var(ctx, 100, ctypes.byref(circles))
-        totals.circles += int(circles.value)
+        pending.append(result.motions)
+        totals.circles += int(result.variables[100])
+        if len(pending) >= 1000:
+            totals.add(pending)
+    if pending:
+        totals.add(pending)
     seconds = time.perf_counter() - began
-    lib.mbrt_destroy(ctx)
     print(f"sim-loop: {calls} calls, {totals.alarms} alarms, "
           f"{totals.motions} motions, {totals.circles} circles")
     print(f"sim-loop: feed path {totals.feed_length:.3f} mm, rapid path "

@@ -1,0 +1,135 @@
+"""mbc.batch: one run per row of a pandas DataFrame, on every core."""
+from __future__ import annotations
+
+import os
+import re
+from typing import Any, Mapping, Optional, Union
+
+import numpy
+
+from . import _mbc
+
+#: The result columns, in order (those of `mbc batch`'s results.csv, with
+#: the id first and the alarm's number and code beside its report line).
+RESULT_COLUMNS = ("id", "status", "blocks", "moves", "feed_length",
+                  "rapid_length", "cycle_time", "alarm", "alarm_number",
+                  "alarm_code", "dprnt", "variables")
+
+_PRESET = re.compile(r"#(\d+)$")
+
+
+def _rows(table) -> tuple:
+    """The table's rows as (argument letters, their values, presets) and
+    their ids."""
+    letters, presets = [], []
+    for column in table.columns:
+        name = str(column)
+        if name == "id":
+            continue
+        if len(name) == 1 and name.isalpha():
+            if name.upper() in "GLNOP":
+                raise ValueError(f"column {name}: G, L, N, O and P are not "
+                                 "G65 arguments")
+            letters.append((column, name.upper()))
+        elif _PRESET.match(name):
+            presets.append((column, float(name[1:])))
+        else:
+            raise ValueError(f"column {name!r}: neither an argument letter, "
+                             "a #N variable nor id")
+    rows = []
+    for record in table.itertuples(index=False, name=None):
+        values = dict(zip(table.columns, record))
+        given = [(letter, float(values[c])) for c, letter in letters
+                 if _present(values[c])]
+        sets = [(number, float(values[c])) for c, number in presets
+                if _present(values[c])]
+        rows.append(("".join(l for l, _ in given), [v for _, v in given],
+                     sets))
+    if "id" in table.columns:
+        ids = [str(i) for i in table["id"]]
+        if len(set(ids)) != len(ids):
+            raise ValueError("the id column has duplicates")
+    else:
+        width = len(str(len(rows)))
+        ids = [str(i + 1).zfill(width) for i in range(len(rows))]
+    return rows, ids
+
+
+def _present(value) -> bool:
+    """An empty cell passes nothing, as in `mbc batch`."""
+    if value is None:
+        return False
+    try:
+        return not numpy.isnan(value)
+    except TypeError:
+        return value != ""
+
+
+def _status(result) -> str:
+    if result.alarm is None:
+        return "ended"
+    return "interrupted" if result.alarm.code == "MBC0004" else "alarm"
+
+
+def run_table(program, table, threads: Optional[int] = None,
+              motions: bool = False, max_blocks: int = 0,
+              machine=None):
+    """The batch of one table (a pandas DataFrame), in this process: the
+    results DataFrame, and with motions=True the motions DataFrame too."""
+    import pandas
+    from . import Result, _profile_text
+    rows, ids = _rows(table)
+    profile = _profile_text(machine) if machine is not None \
+        else program.machine_profile
+    runs = [Result._from(raw) for raw in
+            _mbc.run_rows(program._compiled, profile, rows,
+                          threads or os.cpu_count() or 1, max_blocks)]
+    results = pandas.DataFrame({
+        "id": ids,
+        "status": [_status(r) for r in runs],
+        "blocks": [r.blocks for r in runs],
+        "moves": [r.moves for r in runs],
+        "feed_length": [r.feed_length for r in runs],
+        "rapid_length": [r.rapid_length for r in runs],
+        "cycle_time": [r.cycle_time for r in runs],
+        "alarm": [None if r.alarm is None
+                  else r.alarm.report.split("\n", 1)[0] for r in runs],
+        "alarm_number": [0 if r.alarm is None else r.alarm.number
+                         for r in runs],
+        "alarm_code": [None if r.alarm is None else r.alarm.code
+                       for r in runs],
+        "dprnt": [r.dprnt for r in runs],
+        "variables": [r.variables for r in runs],
+    }, columns=list(RESULT_COLUMNS), index=table.index)
+    if not motions:
+        return results
+    frames = []
+    for row_id, run in zip(ids, runs):
+        frame = run.motions_frame()
+        frame.insert(0, "id", row_id)
+        frames.append(frame)
+    moves = pandas.concat(frames, ignore_index=True) if frames else \
+        pandas.DataFrame({"id": []})
+    for column in ("prog", "file", "motion"):
+        if column in moves:
+            moves[column] = moves[column].astype("category")
+    return results, moves
+
+
+def batch(program, table, *, threads: Optional[int] = None,
+          motions: bool = False, max_blocks: int = 0,
+          machine: Union[None, str, Mapping[str, Any]] = None):
+    """Runs the program once per row of `table` (a pandas DataFrame) on every
+    core, as `mbc batch` runs a CSV table: letter columns are G65 arguments
+    (R sets #18), `#N` columns preset variables, an `id` column names the
+    rows (otherwise they are numbered 1, 2... zero-padded), an empty cell
+    (NaN, None) passes nothing. Each row starts from a machine at power-on
+    (the program's profile, or `machine`).
+
+    Returns a DataFrame with one row per table row, in table order and with
+    the table's index: id, status ("ended", "alarm", "interrupted"),
+    blocks, moves, feed_length, rapid_length, cycle_time, alarm (the
+    report's first line), alarm_number, alarm_code, dprnt, variables. With
+    motions=True returns (results, motions): every row's motions in one
+    DataFrame with the row's id in the first column."""
+    return run_table(program, table, threads, motions, max_blocks, machine)

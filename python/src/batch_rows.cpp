@@ -1,0 +1,52 @@
+#include "batch_rows.h"
+
+#include "driver/run_session.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+namespace mbc::python {
+
+bool runRows(const CompiledProgram& program, const std::string* profile,
+             const std::vector<RunRequest>& rows, unsigned threads,
+             std::vector<std::unique_ptr<RunOutput>>& out, std::string& error) {
+  threads = static_cast<unsigned>(
+      std::max<std::size_t>(1, std::min<std::size_t>(threads, rows.size())));
+  std::vector<driver::CtxPtr> contexts;
+  for (unsigned i = 0; i < threads; ++i) {
+    char err[512] = "";
+    contexts.emplace_back(mbrt_create(
+        profile != nullptr ? profile->c_str() : nullptr, err, sizeof err));
+    if (!contexts.back()) {
+      error = err;
+      return false;
+    }
+  }
+  out.clear();
+  out.resize(rows.size());
+  const std::string axes = axisNames(contexts.front().get());
+  std::atomic<std::size_t> next{0};
+  // A worker's rows number program and file names in its own tables.
+  std::vector<NameTable> programs(threads), files(threads);
+  const auto work = [&](unsigned worker) {
+    mbrt_ctx* ctx = contexts[worker].get();
+    for (std::size_t i = next++; i < rows.size(); i = next++) {
+      mbrt_reset(ctx);
+      out[i] =
+          std::make_unique<RunOutput>(axes, programs[worker], files[worker]);
+      runProgram(program, ctx, rows[i], *out[i]);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (unsigned i = 1; i < threads; ++i) {
+    workers.emplace_back(work, i);
+  }
+  work(0);
+  for (std::thread& worker : workers) {
+    worker.join();
+  }
+  return true;
+}
+
+} // namespace mbc::python

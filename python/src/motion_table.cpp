@@ -1,0 +1,116 @@
+#include "motion_table.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+
+namespace py = pybind11;
+
+namespace mbc::python {
+
+namespace {
+
+constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
+
+char lower(char axis) {
+  return axis >= 'A' && axis <= 'Z' ? static_cast<char>(axis - 'A' + 'a')
+                                    : axis;
+}
+
+} // namespace
+
+std::int32_t NameTable::find(const char* name) {
+  const char* text = name != nullptr ? name : "";
+  if (last_ >= 0 && names_[static_cast<std::size_t>(last_)] == text) {
+    return last_;
+  }
+  const auto [it, added] =
+      index_.try_emplace(text, static_cast<std::int32_t>(names_.size()));
+  if (added) {
+    names_.emplace_back(text);
+  }
+  last_ = it->second;
+  return last_;
+}
+
+void MotionTable::append(void* user, const mbrt_motion* m) {
+  auto& table = *static_cast<MotionTable*>(user);
+  const std::size_t width = table.rowBytes() / sizeof(double);
+  table.rows_.resize(table.rows_.size() + width);
+  double* row = table.rows_.data() + table.count_ * width;
+  ++table.count_;
+  const bool arc = m->kind == MBRT_MOTION_CW || m->kind == MBRT_MOTION_CCW;
+  const Header header{m->kind,
+                      m->line,
+                      table.programs_.find(m->program),
+                      table.files_.find(m->file),
+                      m->cycle,
+                      m->plane,
+                      m->kind == MBRT_MOTION_RAPID ? kAbsent : m->feed};
+  std::memcpy(row, &header, sizeof header);
+  double* axis = row + sizeof(Header) / sizeof(double);
+  const int count =
+      std::min(m->axis_count, static_cast<int>(table.axes_.size()));
+  for (int a = 0; a < count; ++a, axis += kPerAxis) {
+    axis[0] = m->end[a];
+    axis[1] = m->machine[a];
+    axis[2] = m->start[a];
+    axis[3] = m->programmed[a];
+    axis[4] = kAbsent;
+    for (int c = 0; arc && c < 2; ++c) {
+      if (m->center_axes[c] == table.axes_[a]) {
+        axis[4] = m->center[c];
+      }
+    }
+  }
+}
+
+/// The row type of a machine with these axes, made once per axis set: a
+/// dtype costs more to build than a short run takes.
+const py::dtype& MotionTable::dtype() const {
+  // Never freed: Python objects must not be destroyed after the
+  // interpreter has ended.
+  static auto* made = new std::map<std::string, py::dtype>;
+  if (const auto found = made->find(axes_); found != made->end()) {
+    return found->second;
+  }
+  py::list names, formats, offsets;
+  const auto field = [&](const std::string& name, const char* format,
+                         std::size_t offset) {
+    names.append(name);
+    formats.append(format);
+    offsets.append(offset);
+  };
+  const char* headerNames[] = {"motion", "line",  "prog",
+                               "file",   "cycle", "plane"};
+  for (std::size_t i = 0; i < std::size(headerNames); ++i) {
+    field(headerNames[i], "<i4", i * sizeof(std::int32_t));
+  }
+  field("f", "<f8", offsetof(Header, f));
+  std::size_t offset = sizeof(Header);
+  for (const char letter : axes_) {
+    const std::string axis(1, lower(letter));
+    for (const char* prefix : {"", "m", "s", "p", "c"}) {
+      field(prefix + axis, "<f8", offset);
+      offset += sizeof(double);
+    }
+  }
+  return made
+      ->emplace(axes_, py::dtype(names, formats, offsets,
+                                 static_cast<py::ssize_t>(rowBytes())))
+      .first->second;
+}
+
+py::array MotionTable::take() {
+  auto* rows = new std::vector<double>(std::move(rows_));
+  const py::capsule owner(
+      rows, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const auto count = static_cast<py::ssize_t>(count_);
+  rows_.clear();
+  count_ = 0;
+  return py::array(dtype(), {count}, {static_cast<py::ssize_t>(rowBytes())},
+                   rows->data(), owner);
+}
+
+} // namespace mbc::python

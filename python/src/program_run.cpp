@@ -1,0 +1,80 @@
+#include "program_run.h"
+
+#include "driver/output_files.h"
+#include "driver/run_session.h"
+#include <mbc/engine.h>
+
+namespace mbc::python {
+
+namespace {
+
+void appendText(void* user, const char* data, std::size_t size) {
+  static_cast<std::string*>(user)->append(data, size);
+}
+
+std::string text(std::size_t (*get)(const mbrt_ctx*, char*, std::size_t),
+                 const mbrt_ctx* ctx) {
+  std::string out(get(ctx, nullptr, 0), '\0');
+  get(ctx, out.data(), out.size() + 1);
+  return out;
+}
+
+AlarmParts alarmParts(const mbrt_ctx* ctx) {
+  AlarmParts a;
+  a.number = mbrt_alarm_number(ctx);
+  a.code = text(mbrt_alarm_code, ctx);
+  a.message = text(mbrt_alarm_message, ctx);
+  a.report = text(mbrt_alarm_report, ctx);
+  a.file = mbrt_alarm_file(ctx);
+  a.line = mbrt_alarm_line(ctx);
+  const char* program = nullptr;
+  const char* file = nullptr;
+  int line = 0;
+  for (std::size_t level = 0;
+       mbrt_alarm_call(ctx, level, &program, &file, &line) != 0; ++level) {
+    a.calls.emplace_back(program, file, line);
+  }
+  return a;
+}
+
+} // namespace
+
+std::string axisNames(const mbrt_ctx* ctx) {
+  mbrt_stats stats{};
+  mbrt_get_stats(ctx, &stats);
+  return std::string(stats.axis_names, stats.axis_count);
+}
+
+void runProgram(const CompiledProgram& program, mbrt_ctx* ctx,
+                const RunRequest& request, RunOutput& out) {
+  out.main = program.mainName();
+  mbrt_buffer_motions(ctx, 0);
+  mbrt_set_motion_sink(ctx, &MotionTable::append, &out.motions);
+  mbrt_set_print_sink(ctx, &appendText, &out.dprnt);
+  mbrt_set_message_sink(ctx, &appendText, &out.messages);
+  mbrt_set_max_blocks(ctx, request.maxBlocks);
+  mbrt_start(ctx, out.main.c_str());
+  driver::RunOptions options;
+  options.args = request.args;
+  options.presets = request.presets;
+  out.status = driver::presetAndPass(options, ctx);
+  if (out.status == MBRT_OK) {
+    out.status = program.prepared().run(ctx);
+  }
+  mbrt_set_motion_sink(ctx, nullptr, nullptr);
+  mbrt_set_print_sink(ctx, nullptr, nullptr);
+  mbrt_set_message_sink(ctx, nullptr, nullptr);
+  if (out.status != MBRT_OK) {
+    out.alarm = alarmParts(ctx);
+  }
+  out.programs = out.motions.programs();
+  out.files = out.motions.files();
+  mbrt_get_stats(ctx, &out.stats);
+  out.unit = out.stats.unit;
+  out.axes.assign(out.stats.axis_names, out.stats.axis_count);
+  out.stats.unit = nullptr;
+  out.stats.axis_names = nullptr;
+  out.variables = driver::commonVariables(ctx);
+}
+
+} // namespace mbc::python

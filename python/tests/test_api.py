@@ -1,0 +1,150 @@
+"""The package's API as a user meets it: compiling paths and text, errors in
+the source, alarms as exceptions, arguments, a machine that keeps its state."""
+import pickle
+
+import numpy
+import pytest
+
+import mbc
+
+CYCLE = """%
+O9100(BORE PATTERN)
+IF[#18EQ#0]THEN#3000=1(RADIUS R MISSING)
+#100=0
+G90G0X#24Y#25Z5.
+G1Z-#26F#9
+G2I-#18
+#100=#100+1
+G0Z5.
+M99
+%
+"""
+
+NESTED = """%
+O1
+G65P9110A0
+M30
+O9110
+#1=10/#1
+M99
+%
+"""
+
+
+def test_compile_text_and_run_with_arguments():
+    program = mbc.compile(CYCLE)
+    assert program.main == "O9100"
+    result = program(X=10, Y=5, Z=2, R=4, F=200)
+    rows = result.motions
+    assert rows.dtype.names[:7] == ("motion", "line", "prog", "file", "cycle",
+                                    "plane", "f")
+    assert [mbc.MOTION_NAMES[k] for k in rows["motion"]] == \
+        ["rapid", "linear", "cw", "rapid"]
+    arc = rows[2]
+    assert (arc["x"], arc["y"], arc["cx"], arc["cy"]) == (10, 5, 6, 5)
+    assert numpy.isnan(arc["cz"]) and numpy.isnan(rows[0]["f"])
+    assert rows[1]["z"] == -2 and rows[1]["f"] == 200
+    assert result.programs[arc["prog"]] == "O9100"
+    assert result.files[arc["file"]] == "<source>"
+    assert result.variables == {100: 1.0}
+    assert result.blocks == 8 and result.moves == 4
+    assert result.cycle_time > 0 and result.summary["moves"] == 4
+
+
+def test_macro_alarm_is_an_exception_with_the_controls_number():
+    program = mbc.compile(CYCLE)
+    with pytest.raises(mbc.Alarm) as caught:
+        program(X=1)
+    alarm = caught.value
+    assert (alarm.number, alarm.code, alarm.message) == \
+        (3001, "3001", "RADIUS R MISSING")
+    assert (alarm.file, alarm.line) == ("<source>", 3)
+    assert alarm.call_stack == ()
+    assert str(alarm) == "<source>:3: alarm 3001: RADIUS R MISSING"
+    assert alarm.result.blocks == 1
+
+
+def test_program_alarm_names_its_call_stack():
+    with pytest.raises(mbc.Alarm) as caught:
+        mbc.compile(NESTED)()
+    alarm = caught.value
+    assert (alarm.number, alarm.code, alarm.message) == \
+        (112, "PS0112", "ZERO DIVIDE")
+    assert alarm.line == 6
+    assert alarm.call_stack == (("O9110", "<source>", 3),)
+    assert "in O9110 called from <source>:3" in alarm.report
+
+
+def test_errors_in_the_source_raise_compile_error_with_diagnostics():
+    with pytest.raises(mbc.CompileError) as caught:
+        mbc.compile("%\nO1\n#1=[2+3\nM30\n%\n")
+    error = caught.value
+    assert error.errors, error.diagnostics
+    first = error.errors[0]
+    assert (first.file, first.line) == ("<source>", 3)
+    assert first.column > 0 and first.message
+    assert "<source>:3:" in str(error)
+
+
+def test_without_strict_a_bad_block_alarms_when_it_runs():
+    program = mbc.compile("%\nO1\n#100=1\n#1=[2+3\nM30\n%\n", strict=False)
+    assert any(d.severity == "error" for d in program.diagnostics)
+    with pytest.raises(mbc.Alarm) as caught:
+        program()
+    assert caught.value.line == 4
+    assert caught.value.result.variables == {100: 1.0}
+
+
+def test_a_machine_keeps_position_modal_state_and_variables():
+    step = mbc.compile("%\nO2\nG91G1X10.F100\n#500=#500+1\nM30\n%\n")
+    machine = mbc.Machine()
+    machine[500] = 0
+    first = step(machine)
+    second = step(machine)
+    assert first.motions["sx"][0] == 0 and second.motions["sx"][0] == 10
+    assert second.motions["x"][0] == 20
+    assert machine[500] == 2 and machine[4003] == 91
+    machine.reset_state()
+    assert machine[5001] == 0 and machine[4003] == 90 and machine[500] == 2
+    machine.reset()
+    assert machine[500] is None
+    # Without a machine every call starts from power-on.
+    assert step().motions["x"][0] == 10 and step().motions["x"][0] == 10
+
+
+def test_machine_profiles_from_a_dict():
+    machine = mbc.Machine({"axes": ["X", "Y", "Z", "A"]})
+    assert machine.axes == "XYZA"
+    result = mbc.compile("%\nO3\nG0A90.\nM30\n%\n")(machine)
+    assert result.motions["a"][0] == 90 and "ma" in result.motions.dtype.names
+    with pytest.raises(ValueError):
+        mbc.Machine({"axes": 5})
+
+
+def test_presets_and_bad_arguments():
+    program = mbc.compile("%\nO4\n#101=#100*2\nM30\n%\n")
+    assert program(presets={100: 4}).variables == {100: 4.0, 101: 8.0}
+    with pytest.raises(TypeError):
+        program(XY=1)
+
+
+def test_a_program_pickles_as_its_source():
+    program = mbc.compile(CYCLE)
+    copy = pickle.loads(pickle.dumps(program))
+    assert copy.main == "O9100"
+    assert copy(X=0, Y=0, Z=1, R=2, F=100).variables == {100: 1.0}
+
+
+def test_motions_of_many_runs_concatenate():
+    program = mbc.compile(CYCLE)
+    machine = mbc.Machine()
+    runs = [program(machine, X=i, Y=0, Z=1, R=2, F=100) for i in range(3)]
+    joined = mbc.concatenate(runs)
+    assert len(joined) == sum(len(r.motions) for r in runs)
+    assert joined.dtype == runs[0].motions.dtype
+    assert list(joined["x"][4:8]) == list(runs[1].motions["x"])
+    assert {runs[-1].programs[i] for i in joined["prog"]} == {"O9100"}
+    other = mbc.compile("%\nO5\nG0A1.\nM30\n%\n")(mbc.Machine(
+        {"axes": ["X", "Y", "Z", "A"]}))
+    with pytest.raises(ValueError):
+        mbc.concatenate([runs[0], other])

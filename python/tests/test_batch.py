@@ -1,0 +1,86 @@
+"""mbc.batch on a DataFrame against `mbc batch` on the same table as CSV,
+and mbc.dask on a LocalCluster of two worker processes against both."""
+import json
+
+import numpy
+import pandas
+import pytest
+
+import mbc
+from conftest import SOURCE, run_mbc, toolpath_jsonl
+
+POCKET = SOURCE / "examples" / "sim-loop" / "pocket.nc"
+
+
+@pytest.fixture(scope="module")
+def table():
+    """Pockets with a missing argument, a tool too large, presets."""
+    rows = []
+    for i in range(40):
+        rows.append({"id": f"p{i:03}", "X": (i % 5) * 100.0, "Y": 0.0,
+                     "Z": -2.0 - i % 3, "R": 10.0 + (i % 8),
+                     "D": numpy.nan if i == 7 else (40.0 if i == 9 else 6.0),
+                     "Q": 1.5, "F": 300.0 + i, "#500": float(i)})
+    return pandas.DataFrame(rows)
+
+
+@pytest.fixture(scope="module")
+def pocket():
+    return mbc.compile(str(POCKET))
+
+
+def test_batch_matches_mbc_batch(tmp_path, table, pocket):
+    results, motions = mbc.batch(pocket, table, threads=2, motions=True)
+    csv = tmp_path / "table.csv"
+    table.to_csv(csv, index=False)
+    done = run_mbc("batch", POCKET, "--params", csv, "--out", tmp_path / "out",
+                   "--combined", "-j", "2")
+    assert done.returncode == 3, done.stderr  # rows 7 and 9 alarm
+    lines = [json.loads(l) for l in
+             (tmp_path / "out" / "batch.jsonl").read_text().splitlines()]
+    assert list(results["id"]) == [l["row"] for l in lines]
+    for (_, got), want in zip(results.iterrows(), lines):
+        assert got["status"] == want["status"]
+        assert got["alarm"] == want["alarm"]
+        assert (got["blocks"], got["moves"]) == (want["blocks"], want["moves"])
+        assert f'{got["feed_length"]:.3f}' == f'{want["feed_length"]:.3f}'
+        assert f'{got["rapid_length"]:.3f}' == f'{want["rapid_length"]:.3f}'
+        assert f'{got["cycle_time"]:.1f}' == f'{want["cycle_time"]:.1f}'
+        assert got["dprnt"] == want["dprnt"]
+        assert {str(k): v for k, v in got["variables"].items()} == want["vars"]
+    assert list(results.loc[[7, 9], "alarm_number"]) == [3002, 3004]
+    assert set(motions["id"]) == {l["row"] for l in lines if l["moves"]}
+    first = motions[motions["id"] == "p000"]
+    assert len(first) == lines[0]["moves"]
+    assert list(first["motion"])[:2] == ["rapid", "rapid"]
+
+
+def test_batch_rows_do_not_see_each_other(table, pocket):
+    one = mbc.batch(pocket, table, threads=1)
+    two = mbc.batch(pocket, table, threads=2)
+    pandas.testing.assert_frame_equal(one, two)
+    # Each row starts at power-on: row 3 alone gives row 3's result.
+    alone = mbc.batch(pocket, table.iloc[[3]])
+    pandas.testing.assert_frame_equal(alone, one.iloc[[3]])
+
+
+def test_numbered_rows_and_bad_columns(pocket):
+    results = mbc.batch(pocket, pandas.DataFrame({"R": [5.0] * 12, "D": 2.0,
+                                                  "Z": -1.0}))
+    assert list(results["id"])[:2] == ["01", "02"]
+    with pytest.raises(ValueError, match="column"):
+        mbc.batch(pocket, pandas.DataFrame({"depth": [1.0]}))
+    with pytest.raises(ValueError, match="G, L, N, O and P"):
+        mbc.batch(pocket, pandas.DataFrame({"P": [1.0]}))
+
+
+def test_dask_on_two_worker_processes(table, pocket):
+    distributed = pytest.importorskip("dask.distributed")
+    import mbc.dask
+    local = mbc.batch(pocket, table)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1,
+                                  processes=True, dashboard_address=None) \
+            as cluster, distributed.Client(cluster):
+        lazy = mbc.dask.batch(pocket, table, npartitions=4)
+        remote = lazy.compute()
+    pandas.testing.assert_frame_equal(remote, local)
