@@ -4,7 +4,8 @@
 # examples/sim-loop configured with find_package(mbc) against that prefix,
 # built, and run to their expected output; the installed mbc links `mbc
 # build` executables with the installed libraries, not the build tree's;
-# C programs link the shared runtime through pkg-config.
+# C programs link the shared runtime through pkg-config; the Python package
+# runs from the prefix.
 #   package.sh MBC BUILD_DIR SOURCE_DIR [SANITIZERS]
 build=$(realpath "$2")
 source=$(realpath "$3")
@@ -80,5 +81,18 @@ readelf -d call | grep -q 'NEEDED.*libmbc_runtime\.so\.' ||
 exported=$(nm -D --defined-only "$prefix/lib/libmbc_runtime.so" | awk '{print $3}' |
   grep -v '^mbrt_' || true)
 [ -z "$exported" ] || fail "the shared runtime exports more than its C ABI: $exported"
+
+# The installed Python package (not built under sanitizers): it imports
+# from the prefix and compiles with the installed code generator, found
+# from the extension's own place.
+pydir=$(cd "$prefix" && ls -d lib/python3*/dist-packages 2>/dev/null | head -n 1)
+if [ -n "$pydir" ]; then
+  MBC_CACHE_DIR=$work/pycache LD_DEBUG=files PYTHONPATH="$prefix/$pydir" \
+    /usr/bin/python3 -c 'import mbc; print(mbc.compile("%\nO1\n#100=7\nG01X#100F100\nM30\n%\n")().motions["x"][0])' \
+    >py.txt 2>ld.txt || { cat ld.txt; fail "the installed Python package"; }
+  [ "$(cat py.txt)" = 7.0 ] || fail "the installed Python package ran wrong: $(cat py.txt)"
+  grep -q "file=$prefix/lib/mbc/libmbc_codegen.so" ld.txt ||
+    fail "the installed Python package did not load the installed code generator"
+fi
 
 echo "package: install, find_package(mbc), mbc_add_macro_library, mbc build and pkg-config work"
