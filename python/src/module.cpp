@@ -44,7 +44,17 @@ public:
     axes_ = axisNames(ctx_.get());
   }
 
-  mbrt_ctx* get() const { return ctx_.get(); }
+  /// The context, for a call under the GIL.
+  mbrt_ctx* get() const {
+    // Another Python thread is in a run, which released the GIL: a context
+    // is one thread's at a time.
+    if (running) {
+      throw std::runtime_error(
+          "mbc: this Machine is running a program in another thread; use "
+          "one Machine per thread");
+    }
+    return ctx_.get();
+  }
 
   const std::string& axes() const { return axes_; }
 
@@ -53,11 +63,24 @@ public:
   NameTable& files() { return files_; }
 
   std::size_t lastMotions = 0; // how many the last run made
+  bool running = false;        // set and read under the GIL
 
 private:
   mbc::driver::CtxPtr ctx_;
   std::string axes_;
   NameTable programs_, files_; // of all its runs' motions
+};
+
+/// Marks a context as running for as long as it lives (an exception too
+/// ends the run).
+struct Running {
+  explicit Running(Context& c) : context(c) { context.running = true; }
+
+  ~Running() { context.running = false; }
+
+  Running(const Running&) = delete;
+  Running& operator=(const Running&) = delete;
+  Context& context;
 };
 
 RunRequest request(const std::string& letters,
@@ -217,9 +240,11 @@ PYBIND11_MODULE(_mbc, m) {
                 std::make_unique<RunOutput>(c.axes(), c.programs(), c.files());
             out->motions.reserve(c.lastMotions);
             const RunRequest r = request(letters, values, presets, maxBlocks);
+            mbrt_ctx* ctx = c.get();
             {
+              const Running busy(c);
               py::gil_scoped_release unlocked;
-              runProgram(program, c.get(), r, *out);
+              runProgram(program, ctx, r, *out);
             }
             c.lastMotions = out->motions.size();
             return RunResult(std::move(out));

@@ -148,3 +148,33 @@ def test_motions_of_many_runs_concatenate():
         {"axes": ["X", "Y", "Z", "A"]}))
     with pytest.raises(ValueError):
         mbc.concatenate([runs[0], other])
+
+
+def test_a_machine_is_one_threads_at_a_time():
+    import threading
+    endless = mbc.compile("%\nO6\nWHILE[1EQ1]DO1\n#100=#100+1\nEND1\n%\n")
+    machine = mbc.Machine()
+    started = threading.Event()
+    outcome = []
+
+    def run():
+        started.set()
+        try:
+            endless(machine)  # to the default limit: a second or so
+        except mbc.Alarm as alarm:
+            outcome.append(alarm.code)
+
+    worker = threading.Thread(target=run)
+    worker.start()
+    started.wait()
+    refused = 0
+    while worker.is_alive():
+        try:
+            machine[100]
+        except RuntimeError as error:
+            assert "another thread" in str(error)
+            refused += 1
+    worker.join()
+    assert outcome == ["MBC0002"]
+    assert refused > 0
+    assert machine[100] is not None
