@@ -77,6 +77,10 @@ InterruptScope::~InterruptScope() {
   std::free(reserve.exchange(nullptr));
 }
 
+void interruptRuns() {
+  stopRuns(&mbrt_interrupt);
+}
+
 int InterruptScope::signal() {
   return caught;
 }

@@ -30,6 +30,11 @@ public:
   static int signal();
 };
 
+/// Stops every run registered by an InterruptibleRun before its next block
+/// (alarm MBC0004), as a signal inside an InterruptScope does: for a host's
+/// own signal handler (the Python package's). Async-signal-safe.
+void interruptRuns();
+
 /// One run that a signal stops, from after its context was started to its
 /// end. Up to kMaxRuns at once (the threads of a batch); a run registered
 /// after the signal stops at its first block.

@@ -1,5 +1,6 @@
 #include "batch_rows.h"
 
+#include "driver/interrupt_scope.h"
 #include "driver/run_session.h"
 
 #include <algorithm>
@@ -27,6 +28,7 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
   out.resize(rows.size());
   const std::string axes = axisNames(contexts.front().get());
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> interrupted{false};
   // A worker's rows number program and file names in its own tables.
   std::vector<NameTable> programs(threads), files(threads);
   const auto work = [&](unsigned worker) {
@@ -35,7 +37,12 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
       mbrt_reset(ctx);
       out[i] =
           std::make_unique<RunOutput>(axes, programs[worker], files[worker]);
+      const driver::InterruptibleRun interruptible(ctx);
       runProgram(program, ctx, rows[i], *out[i]);
+      if (out[i]->status == MBRT_ALARM_Interrupted) {
+        interrupted = true;
+        next = rows.size(); // Ctrl-C: no more rows
+      }
     }
   };
   std::vector<std::thread> workers;
@@ -45,6 +52,9 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
   work(0);
   for (std::thread& worker : workers) {
     worker.join();
+  }
+  if (interrupted) {
+    out.clear();
   }
   return true;
 }

@@ -13,7 +13,8 @@ namespace mbc::python {
 
 /// Runs every row; `profile` is the machine's JSON (nullptr: the built-in
 /// mill). Needs no Python. False with the reason in `error` when a context
-/// cannot be made.
+/// cannot be made. A signal (Ctrl-C) stops the rows going on and starts no
+/// more: `out` is then empty.
 bool runRows(const CompiledProgram& program, const std::string* profile,
              const std::vector<RunRequest>& rows, unsigned threads,
              std::vector<std::unique_ptr<RunOutput>>& out, std::string& error);

@@ -1,9 +1,11 @@
 // The extension module mbc._mbc: what the Python package (python/mbc)
 // builds on. Compiling, contexts and runs; the Python side makes the API
 // (exceptions, keyword arguments, DataFrames).
+#include "driver/interrupt_scope.h"
 #include "driver/run_session.h"
 #include <mbc/version.h>
 
+#include <csignal>
 #include <cstring>
 #include <dlfcn.h>
 #include <pybind11/stl.h>
@@ -27,6 +29,44 @@ void exportRuntime() {
       dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL) == nullptr) {
     throw std::runtime_error(
         "mbc: cannot make the runtime visible to compiled code");
+  }
+}
+
+/// Ctrl-C during a run: Python's own handler only notes the signal for
+/// when the interpreter runs again, which it does not while compiled code
+/// loops. This one stops the runs going on (alarm MBC0004) and passes the
+/// signal on to Python's, so that the call then raises KeyboardInterrupt.
+/// A handler Python code installs later replaces it (and runs are then
+/// stopped by their block limit only).
+struct sigaction pythonSigint {};
+
+void onSigint(int sig, siginfo_t* info, void* context) {
+  mbc::driver::interruptRuns();
+  if ((pythonSigint.sa_flags & SA_SIGINFO) != 0) {
+    pythonSigint.sa_sigaction(sig, info, context);
+  } else if (pythonSigint.sa_handler != SIG_DFL &&
+             pythonSigint.sa_handler != SIG_IGN) {
+    pythonSigint.sa_handler(sig);
+  } else if (pythonSigint.sa_handler == SIG_DFL) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+  }
+}
+
+void stopRunsOnSigint() {
+  struct sigaction action {};
+
+  action.sa_sigaction = onSigint;
+  action.sa_flags = SA_SIGINFO | SA_RESTART;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &pythonSigint);
+}
+
+/// After a run a signal stopped: the KeyboardInterrupt Python's handler
+/// asked for, rather than the alarm.
+void raisePendingSignal() {
+  if (PyErr_CheckSignals() != 0) {
+    throw py::error_already_set();
   }
 }
 
@@ -145,6 +185,7 @@ struct RunResult {
 PYBIND11_MODULE(_mbc, m) {
   m.doc() = "The compiled core of the mbc package (use the mbc module).";
   exportRuntime();
+  stopRunsOnSigint();
   m.attr("__version__") = MBC_VERSION_STRING;
 
   py::class_<CompiledProgram>(m, "CompiledProgram")
@@ -244,7 +285,11 @@ PYBIND11_MODULE(_mbc, m) {
             {
               const Running busy(c);
               py::gil_scoped_release unlocked;
+              const mbc::driver::InterruptibleRun interruptible(ctx);
               runProgram(program, ctx, r, *out);
+            }
+            if (out->status == MBRT_ALARM_Interrupted) {
+              raisePendingSignal();
             }
             c.lastMotions = out->motions.size();
             return RunResult(std::move(out));
@@ -331,6 +376,10 @@ PYBIND11_MODULE(_mbc, m) {
         }
         if (!ok) {
           throw py::value_error(error);
+        }
+        if (outputs.size() != rows.size()) {
+          raisePendingSignal();
+          throw std::runtime_error("mbc: the batch was interrupted");
         }
         std::vector<RunResult> results;
         for (auto& out : outputs) {

@@ -178,3 +178,21 @@ def test_a_machine_is_one_threads_at_a_time():
     assert outcome == ["MBC0002"]
     assert refused > 0
     assert machine[100] is not None
+
+
+def test_ctrl_c_stops_a_runaway_run_with_keyboard_interrupt():
+    import os
+    import signal
+    import threading
+    import time
+    endless = mbc.compile("%\nO7\nWHILE[1EQ1]DO1\n#100=#100+1\nEND1\n%\n")
+    machine = mbc.Machine()
+    # The signal comes while the main thread is in the run.
+    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    began = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        endless(machine, max_blocks=10**15)
+    assert time.perf_counter() - began < 30
+    assert machine[100] > 0  # the machine is still there, and usable
+    assert mbc.compile("%\nO8\n#101=1\nM30\n%\n")(machine).variables[101] == 1
