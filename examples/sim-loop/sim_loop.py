@@ -7,8 +7,10 @@ mbc.Machine, each call's motions come back as a numpy array, and the same
 totals are computed from them with numpy, a thousand calls' arrays joined
 at a time (mbc.concatenate). It prints the totals and its own throughput.
 
-    python3 sim_loop.py [CALLS]      (default 2000; PYTHONPATH=build/python
-                                      in the build tree)
+    python3 sim_loop.py [CALLS] [--calls-only]
+        CALLS: default 2000; --calls-only: the calls and their motions
+        arrays without the totals, for the throughput of the calls alone
+        (PYTHONPATH=build/python in the build tree)
 """
 import os
 import sys
@@ -62,6 +64,7 @@ def pocket_args(i):
 
 def main():
     calls = int(sys.argv[1]) if len(sys.argv) > 1 else 2000
+    totalled = "--calls-only" not in sys.argv[2:]
     # From its folder, so that alarm reports name pocket.nc as sim_loop.cpp's do.
     os.chdir(os.path.dirname(os.path.abspath(__file__)))
     pocket = mbc.compile("pocket.nc")
@@ -81,15 +84,22 @@ def main():
         pending.append(result.motions)
         totals.circles += int(result.variables[100])
         if len(pending) >= 1000:
-            totals.add(pending)
-    if pending:
+            if totalled:
+                totals.add(pending)
+            else:
+                totals.motions += sum(len(m) for m in pending)
+                pending.clear()
+    if pending and totalled:
         totals.add(pending)
+    elif pending:
+        totals.motions += sum(len(m) for m in pending)
     seconds = time.perf_counter() - began
     print(f"sim-loop: {calls} calls, {totals.alarms} alarms, "
           f"{totals.motions} motions, {totals.circles} circles")
-    print(f"sim-loop: feed path {totals.feed_length:.3f} mm, rapid path "
-          f"{totals.rapid_length:.3f} mm, cutting time "
-          f"{totals.cutting_minutes:.3f} min")
+    if totalled:
+        print(f"sim-loop: feed path {totals.feed_length:.3f} mm, rapid path "
+              f"{totals.rapid_length:.3f} mm, cutting time "
+              f"{totals.cutting_minutes:.3f} min")
     print(f"throughput: {calls / seconds:.0f} calls/s, "
           f"{totals.motions / seconds / 1e6:.2f} M motions/s")
     return 0
