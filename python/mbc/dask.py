@@ -12,6 +12,7 @@ the results come back in table order, identical to mbc.batch's.
 """
 from __future__ import annotations
 
+import json
 from typing import Optional
 
 import pandas
@@ -45,8 +46,14 @@ def batch(program, table, *, npartitions: Optional[int] = None,
     are numbered over the whole table, as mbc.batch numbers them.
     npartitions: how a pandas table is split (default: 4 per worker thread
     of the current client, or 1 without one). threads: per worker process
-    (default: its cores)."""
+    (default: its cores). machine: a profile (dict or a path the workers
+    can read) or a Machine, whose profile is used (each row starts from
+    power-on, as in mbc.batch)."""
     import dask.dataframe as dd
+    from . import Machine
+    if isinstance(machine, Machine):
+        # The profile travels, not the machine (whose state is this process's).
+        machine = json.loads(machine.profile) if machine.profile else None
     if isinstance(table, pandas.DataFrame):
         if "id" not in table.columns:
             width = len(str(len(table)))

@@ -83,4 +83,8 @@ def test_dask_on_two_worker_processes(table, pocket):
             as cluster, distributed.Client(cluster):
         lazy = mbc.dask.batch(pocket, table, npartitions=4)
         remote = lazy.compute()
+        # A Machine given for its profile: the profile travels.
+        on_machine = mbc.dask.batch(pocket, table, npartitions=3,
+                                    machine=mbc.Machine()).compute()
     pandas.testing.assert_frame_equal(remote, local)
+    pandas.testing.assert_frame_equal(on_machine, local)
