@@ -7,7 +7,7 @@ import pandas
 import pytest
 
 import mbc
-from conftest import SOURCE, run_mbc, toolpath_jsonl
+from conftest import SOURCE, run_mbc
 
 POCKET = SOURCE / "examples" / "sim-loop" / "pocket.nc"
 

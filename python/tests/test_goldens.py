@@ -2,7 +2,6 @@
 gives (its expected files): the toolpath records rebuilt from the motions
 array byte for byte, DPRNT, the variables, the alarm report, the counts."""
 import json
-import pathlib
 
 import pytest
 
