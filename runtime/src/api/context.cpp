@@ -73,6 +73,15 @@ void loadProfile(mbrt_ctx& ctx) {
   ctx.calls.reserve(profile.totalNesting + 2);
 }
 
+/// The power-on modal codes and no last words (#4101+); G20/G21 stays, as
+/// the control's clear state keeps it.
+void clearModalCodes(mbrt_ctx& ctx) {
+  const bool inch = ctx.modal.inch;
+  ctx.modal = ModalState{};
+  ctx.modal.inch = inch;
+  ctx.lastWords = {};
+}
+
 /// The machine's power-on state: modal codes, the tool at the machine
 /// origin, no frames (G92, G52, mirror, scaling, rotation, tool length
 /// offset) and the clock at 0. Machine data (commons, offsets, part
@@ -85,10 +94,7 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.intermediateMask = 0;
   ctx.compensation = CompensationState{};
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
-  const bool inch = ctx.modal.inch;
-  ctx.modal = ModalState{};
-  ctx.modal.inch = inch;
-  ctx.lastWords = {};
+  clearModalCodes(ctx);
   ctx.clockMs = 0.0;
 }
 
@@ -109,10 +115,7 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.levels.assign(1, LocalLevel{});
   ctx.compensation = CompensationState{};
   if (ctx.profile.clearOnReset) {
-    const bool inch = ctx.modal.inch;
-    ctx.modal = ModalState{};
-    ctx.modal.inch = inch;
-    ctx.lastWords = {};
+    clearModalCodes(ctx);
   } else {
     ctx.modal.compensation = ModalState{}.compensation;
     ctx.modal.cycle = 0;
