@@ -62,7 +62,7 @@ int PreparedProgram::build(const Options& o, PhaseTimes& phases,
   engine_ = o.engine;
   mainIndex_ = findMain(cu_.unit, o.run.mainProgram);
   if (mainIndex_ < 0) {
-    error = cu_.unit.programs.empty()
+    error = o.run.mainProgram.empty()
                 ? "the input has no programs"
                 : "no program " + o.run.mainProgram + " in the input";
     return 2;

@@ -40,8 +40,6 @@ public:
 
   const Unit& unit() const { return cu_.unit; }
 
-  int mainIndex() const { return mainIndex_; }
-
   /// Runs the main program in a started context. Const: threads share it.
   mbrt_status run(mbrt_ctx* ctx) const;
 
