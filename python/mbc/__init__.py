@@ -350,14 +350,10 @@ class Program:
         return machine.run(self, args, presets=presets, max_blocks=max_blocks)
 
     def __reduce__(self):
-        return (_rebuild, self._args)
+        return (_cached_program, self._args)
 
     def __repr__(self) -> str:
         return f"<mbc.Program {self.main}>"
-
-
-def _rebuild(*args) -> Program:
-    return _cached_program(*args)
 
 
 _programs: dict = {}
