@@ -16,11 +16,8 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
       std::max<std::size_t>(1, std::min<std::size_t>(threads, rows.size())));
   std::vector<driver::CtxPtr> contexts;
   for (unsigned i = 0; i < threads; ++i) {
-    char err[512] = "";
-    contexts.emplace_back(mbrt_create(
-        profile != nullptr ? profile->c_str() : nullptr, err, sizeof err));
+    contexts.push_back(newContext(profile, error));
     if (!contexts.back()) {
-      error = err;
       return false;
     }
   }

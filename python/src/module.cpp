@@ -75,11 +75,10 @@ void raisePendingSignal() {
 class Context {
 public:
   explicit Context(const std::optional<std::string>& profile) {
-    char err[512] = "";
-    ctx_.reset(
-        mbrt_create(profile ? profile->c_str() : nullptr, err, sizeof err));
+    std::string error;
+    ctx_ = newContext(profile ? &*profile : nullptr, error);
     if (!ctx_) {
-      throw py::value_error(err);
+      throw py::value_error(error);
     }
     axes_ = axisNames(ctx_.get());
   }

@@ -39,6 +39,16 @@ AlarmParts alarmParts(const mbrt_ctx* ctx) {
 
 } // namespace
 
+driver::CtxPtr newContext(const std::string* profile, std::string& error) {
+  char err[512] = "";
+  driver::CtxPtr ctx(mbrt_create(
+      profile != nullptr ? profile->c_str() : nullptr, err, sizeof err));
+  if (!ctx) {
+    error = err;
+  }
+  return ctx;
+}
+
 std::string axisNames(const mbrt_ctx* ctx) {
   mbrt_stats stats{};
   mbrt_get_stats(ctx, &stats);

@@ -4,6 +4,7 @@
 // parts, the statistics and the common variables at the end.
 #pragma once
 
+#include "driver/run_session.h"
 #include <mbc/runtime.h>
 
 #include <cstdint>
@@ -47,6 +48,10 @@ struct RunOutput {
   std::string unit, axes; // so these are copies
   std::vector<std::pair<int, double>> variables; // the commons set
 };
+
+/// A context for a machine profile's JSON (nullptr: the built-in mill);
+/// null with the reason in `error` for a bad profile.
+driver::CtxPtr newContext(const std::string* profile, std::string& error);
 
 /// The axis letters of the context's machine ("XYZ").
 std::string axisNames(const mbrt_ctx* ctx);
