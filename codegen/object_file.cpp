@@ -102,7 +102,7 @@ bool compileModule(const ir::Module& module, const ObjectOptions& options,
   if (!verifyEmitted(*m, error)) {
     return false;
   }
-  optimize(*m, *tm, options.optLevel);
+  optimize(*m, *tm, options.optLevel, options.sizeLevel);
   // Decided for the whole module, so that every part is compiled alike.
   tm->setOptLevel(hasUnoptimizedBody(module)
                       ? llvm::CodeGenOpt::None

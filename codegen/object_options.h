@@ -32,6 +32,9 @@ enum class FileKind { LlvmIr, Assembly, Object };
 struct ObjectOptions {
   EmitOptions emit;
   int optLevel = 2;
+  /// -Os 1, -Oz 2: the functions are marked to be optimised for size (as
+  /// clang marks them), which the passes and the code generator read.
+  int sizeLevel = 0;
   /// The CPU to tune and select instructions for: "" for the architecture's
   /// generic one, "native" for this machine's.
   std::string cpu;

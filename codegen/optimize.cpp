@@ -59,7 +59,17 @@ llvm::CodeGenOpt::Level codeGenLevel(int level, const llvm::Module& module) {
   }
 }
 
-void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level) {
+void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level,
+              int sizeLevel) {
+  for (llvm::Function& f : module) {
+    if (sizeLevel > 0 && !f.isDeclaration() &&
+        !f.hasFnAttribute(llvm::Attribute::OptimizeNone)) {
+      f.addFnAttr(llvm::Attribute::OptimizeForSize);
+      if (sizeLevel > 1) {
+        f.addFnAttr(llvm::Attribute::MinSize);
+      }
+    }
+  }
   // LLVM's -O0 pipeline only inlines always-inline functions and lowers
   // coroutines, of which mbc emits none; it built a call graph of the
   // whole module for that.

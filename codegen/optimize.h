@@ -7,8 +7,10 @@
 
 namespace mbc::codegen {
 
-/// Runs the pipeline for `level` (0..3) tuned for `tm`.
-void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level);
+/// Runs the pipeline for `level` (0..3) tuned for `tm`, after marking the
+/// functions optsize (sizeLevel 1) or optsize and minsize (2).
+void optimize(llvm::Module& module, llvm::TargetMachine& tm, int level,
+              int sizeLevel);
 
 /// The code generator's optimisation level for `level` (0..3), or None
 /// when the module has a body too big to optimise (see emit_module.cpp):

@@ -2,46 +2,40 @@
 // input files), the program table compiled into it, one run.
 #include "driver/aot_main.h"
 
+#include "driver/help_formatter.h"
 #include "driver/run_session.h"
 #include <mbc/engine.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
+#include <iostream>
 
 using namespace mbc::driver;
-
-namespace {
-
-int usage(const char* self, const std::string& error) {
-  std::FILE* out = error.empty() ? stdout : stderr;
-  if (!error.empty()) {
-    std::fprintf(out, "%s: error: %s\n", self, error.c_str());
-  }
-  std::fprintf(out, "usage: %s\n%s", self, runOptionsUsage(8).c_str());
-  return error.empty() ? 0 : 2;
-}
-
-} // namespace
 
 extern "C" int mbc_aot_main(int argc, char** argv,
                             const mbrt_program_table* table) {
   const char* self = argc > 0 ? argv[0] : "mbc-program";
   RunOptions o;
-  ArgReader args(argc, argv, 1);
   std::string error;
-  while (args.advance()) {
-    if (args.name() == "--help" || args.name() == "-h") {
-      return usage(self, "");
-    }
-    OptionStatus s = readRunOption(args, o, error);
-    if (s == OptionStatus::NotARunOption) {
-      error = args.arg().starts_with("-")
-                  ? "unknown option '" + args.arg() + "'"
-                  : "unexpected argument '" + args.arg() +
-                        "' (the programs are compiled in)";
-    }
-    if (s != OptionStatus::Taken) {
-      return usage(self, error);
-    }
+  CLI::App app("Runs the Macro B programs compiled into this executable "
+               "(made by mbc build).",
+               self);
+  useHelpFormatter(app);
+  app.set_help_flag("-h,--help", "print this help and exit");
+  addRunOptions(app, o, error, RunOutputs::Single);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    error = e.what();
+  }
+  if (!error.empty()) {
+    std::fprintf(stderr, "%s: error: %s\n", self, error.c_str());
+    std::fprintf(stderr, "%s: note: '%s --help' lists the options\n", self,
+                 self);
+    return 2;
   }
   const mbrt_program* main =
       o.mainProgram.empty()

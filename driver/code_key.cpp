@@ -138,6 +138,7 @@ std::string codeKey(const Options& o, const SourceManager& sources) {
   addBuild(h);
   addCpu(h);
   h.addRaw(o.optLevel);
+  h.addRaw(o.sizeLevel);
   h.addRaw(o.debugInfo);
   if (o.debugInfo) {
     std::error_code ec;

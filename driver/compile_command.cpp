@@ -123,6 +123,7 @@ int compileCommand(const Options& o) {
   opts.emit.tableName = table;
   opts.emit.debugInfo = o.debugInfo;
   opts.optLevel = o.optLevel;
+  opts.sizeLevel = o.sizeLevel;
   opts.cpu = o.cpu;
   int status = 0;
   if (o.shared) {
@@ -182,6 +183,7 @@ int buildCommand(const Options& options) {
   opts.emit.aotMain = true;
   opts.emit.debugInfo = o.debugInfo;
   opts.optLevel = o.optLevel;
+  opts.sizeLevel = o.sizeLevel;
   opts.cpu = o.cpu;
   const OwnLibraries& libs = ownLibraries();
   return compileAndLink(

@@ -21,12 +21,15 @@ namespace {
 bool readInto(const std::string& path, DiagnosticEngine& diags,
               const ParseOptions& options, CompiledUnit& out,
               std::string& failure) {
+  // "-" is standard input, as for cat and cc.
+  const bool standardInput = path == "-";
   std::string text;
-  if (int error = readFile(path, text)) {
+  if (int error = readFile(standardInput ? "/dev/stdin" : path, text)) {
     failure = "cannot read '" + path + "': " + std::strerror(error);
     return false;
   }
-  std::uint32_t id = out.sources.add(path, std::move(text));
+  std::uint32_t id =
+      out.sources.add(standardInput ? "<stdin>" : path, std::move(text));
   parseFile(out.sources, id, diags, options, out.unit);
   return true;
 }

@@ -58,6 +58,7 @@ std::unique_ptr<NativeCode> JitCompiler::compile(const ir::Module& module,
   opts.emit.entryPoints = false;
   opts.emit.debugInfo = options_.debugInfo;
   opts.optLevel = options_.optLevel;
+  opts.sizeLevel = options_.sizeLevel;
   opts.cpu = "native";
   const std::string object = dir + "/code.o";
   std::string path = dir + "/code.so";

@@ -3,10 +3,10 @@
 // emit-ir` prints the (optimised) IR, `mbc compile` writes an object and `mbc
 // build` an executable.
 #include "driver/batch_command.h"
+#include "driver/command_line.h"
 #include "driver/compile_command.h"
 #include "driver/compile_unit.h"
 #include "driver/ir_pipeline.h"
-#include "driver/options.h"
 #include "driver/run_command.h"
 #include "driver/run_session.h"
 
@@ -18,12 +18,10 @@ namespace {
 
 int dispatch(int argc, char** argv) {
   using namespace mbc::driver;
-  std::string error;
-  std::optional<Options> options = parseOptions(argc, argv, error);
+  CommandLine line = parseCommandLine(argc, argv);
+  std::optional<Options>& options = line.options;
   if (!options) {
-    std::fprintf(stderr, "mbc: error: %s\n%s", error.c_str(),
-                 usageText().c_str());
-    return 2;
+    return line.status;
   }
   if (options->command == "emit-ir") {
     return emitIrCommand(*options);

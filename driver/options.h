@@ -17,6 +17,7 @@ struct Options {
   RunOptions run;
   std::string engine = "jit";
   int optLevel = 2;        // -O0 ... -O3: the LLVM pipeline
+  int sizeLevel = 0;       // -Os 1, -Oz 2: smaller code
   bool debugInfo = false;  // -g
   bool noCache = false;    // --no-cache (run, batch): the JIT skips the cache
   bool noOpt = false;      // no IR passes
@@ -46,11 +47,5 @@ struct Options {
 /// compile and build refuse it (a build should fail loudly); --strict and
 /// --no-strict choose.
 LoadOptions loadOptions(const Options& o);
-
-/// Parses argv; on a usage error returns nullopt after writing the message
-/// to `error`.
-std::optional<Options> parseOptions(int argc, char** argv, std::string& error);
-
-std::string usageText();
 
 } // namespace mbc::driver

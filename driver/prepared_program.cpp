@@ -1,11 +1,14 @@
 // The phases of `mbc run` before the run (see prepared_program.h).
 #include "driver/prepared_program.h"
 
+#include "driver/closest_match.h"
 #include "driver/ir_pipeline.h"
 #include "driver/jit_compiler.h"
 #include "interp/interpreter.h"
 #include "ir/evaluator.h"
 #include <mbc/addresses.h>
+
+#include <fmt/format.h>
 
 #include <cstdio>
 #include <optional>
@@ -28,6 +31,18 @@ int findMain(const Unit& unit, const std::string& wanted) {
     }
   }
   return -1;
+}
+
+// "no program 9001 in the input; did you mean 'O9001'?"
+std::string missingMainMessage(const Unit& unit, const std::string& wanted) {
+  std::vector<std::string> names;
+  for (const Program& p : unit.programs) {
+    names.push_back(p.name);
+  }
+  const std::string guess = closestMatch(wanted, names);
+  return fmt::format(
+      "no program {} in the input{}", wanted,
+      guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess));
 }
 
 } // namespace
@@ -64,7 +79,7 @@ int PreparedProgram::build(const Options& o, PhaseTimes& phases,
   if (mainIndex_ < 0) {
     error = o.run.mainProgram.empty()
                 ? "the input has no programs"
-                : "no program " + o.run.mainProgram + " in the input";
+                : missingMainMessage(cu_.unit, o.run.mainProgram);
     return 2;
   }
   for (const Program& p : cu_.unit.programs) {

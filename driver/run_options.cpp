@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <charconv>
 #include <cmath>
 
@@ -64,103 +65,129 @@ bool parseArg(std::string_view text, std::pair<char, double>& out) {
   return c >= 'A' && c <= 'Z' && parseNumber(text.substr(2), out.second);
 }
 
-bool setValue(RunOptions& o, const std::string& name, const std::string& value,
-              std::string& error) {
-  if (name == "--main") {
-    o.mainProgram = value;
-  } else if (name == "--toolpath") {
-    o.toolpathPath = value;
-  } else if (name == "--dprnt") {
-    o.dprntPath = value;
-  } else if (name == "--gcode") {
-    o.gcodePath = value;
-  } else if (name == "--svg") {
-    o.svgPath = value;
-  } else if (name == "--state") {
-    o.statePath = value;
-  } else if (name == "--vars-out") {
-    o.varsOutPath = value;
-  } else if (name == "--machine") {
-    o.machinePath = value;
-  } else if (name == "--set") {
-    std::pair<double, double> p;
-    if (!parsePreset(value, p)) {
-      error = fmt::format("--set expects '#N=V', got '{}'", value);
-      return false;
-    }
-    o.presets.push_back(p);
-  } else if (name == "--arg") {
-    std::pair<char, double> p;
-    if (!parseArg(value, p)) {
-      error = fmt::format("--arg expects LETTER=VALUE, got '{}'", value);
-      return false;
-    }
-    o.args.push_back(p);
-  } else if (name == "--max-output") {
-    if (!parseSize(value, o.maxOutput)) {
-      error = fmt::format("--max-output expects a size in bytes such as "
-                          "4096, 64K, 512M or 2G, got '{}'",
-                          value);
-      return false;
-    }
-  } else {
-    double n = 0;
-    if (!parseNumber(value, n) || n < 1) {
-      error = fmt::format("--max-blocks expects a positive number");
-      return false;
-    }
-    o.maxBlocks = static_cast<std::uint64_t>(n);
-  }
-  return true;
-}
-
-bool takesValue(const std::string& name) {
-  return name == "--main" || name == "--toolpath" || name == "--dprnt" ||
-         name == "--gcode" || name == "--svg" || name == "--state" ||
-         name == "--vars-out" || name == "--machine" || name == "--set" ||
-         name == "--arg" || name == "--max-blocks" || name == "--max-output";
-}
-
 } // namespace
 
-OptionStatus readRunOption(ArgReader& args, RunOptions& o, std::string& error) {
-  const std::string& name = args.name();
-  if (name == "--trace") {
-    o.trace = true;
-    return OptionStatus::Taken;
-  }
-  if (name == "--time") {
-    o.time = true;
-    return OptionStatus::Taken;
-  }
-  if (name == "--block-skip") {
-    double n = 1;
-    if (args.hasInlineValue() &&
-        (!parseNumber(args.inlineValue(), n) || n < 1 || n > 9)) {
-      error = "--block-skip takes a switch number 1 to 9";
-      return OptionStatus::Error;
-    }
-    o.blockSkipMask |= 1U << static_cast<unsigned>(n);
-    return OptionStatus::Taken;
-  }
-  if (!takesValue(name)) {
-    return OptionStatus::NotARunOption;
-  }
-  std::string value;
-  if (!args.takeValue(value, error) || !setValue(o, name, value, error)) {
-    return OptionStatus::Error;
-  }
-  return OptionStatus::Taken;
+CLI::Option* addValueOption(CLI::App& app, const std::string& names,
+                            const std::string& valueName,
+                            const std::string& help, std::string& error,
+                            ValueSetter set) {
+  return app.add_option(names, help)
+      ->type_name(valueName)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->each([&error, set = std::move(set)](const std::string& value) {
+        std::string problem = set(value);
+        if (error.empty()) {
+          error = std::move(problem);
+        }
+      });
 }
 
-std::string runOptionsUsage(int indent) {
-  std::string pad(static_cast<std::size_t>(indent), ' ');
-  return pad +
-         "[--main O1234] [--toolpath PATH] [--dprnt PATH] [--vars-out PATH]\n" +
-         pad + "[--gcode PATH] [--svg PATH] [--state PATH]\n" + pad +
-         "[--set '#N=V']... [--arg A=1.5]... [--machine PATH]\n" + pad +
-         "[--max-blocks N] [--max-output SIZE] [--block-skip[=N]]\n" + pad +
-         "[--trace] [--time]\n";
+void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
+                   RunOutputs outputs) {
+  const auto path = [&](const char* name, std::string& field,
+                        const char* help) {
+    addValueOption(app, name, "PATH", help, error,
+                   [&field](const std::string& v) {
+                     field = v;
+                     return std::string();
+                   })
+        ->group("Outputs");
+  };
+  if (outputs == RunOutputs::Single) {
+    path("--toolpath", o.toolpathPath,
+         "write the toolpath, one JSON record a motion ('-': standard output)");
+    path("--dprnt", o.dprntPath,
+         "write DPRNT/BPRNT output here (default: standard output)");
+    path("--vars-out", o.varsOutPath,
+         "write the variables set at the end as JSON");
+    path("--gcode", o.gcodePath,
+         "write the flattened program: the motion blocks as plain G-code");
+    path("--svg", o.svgPath, "draw the toolpath as an SVG picture");
+    path("--state", o.statePath,
+         "keep nonvolatile variables and offsets in this file from run to "
+         "run");
+    app.add_flag_callback(
+           "--time", [&o] { o.time = true; },
+           std::string("print the wall-clock time of each phase"))
+        ->group("Outputs");
+  }
+  const auto run = [&](const char* name, const char* valueName,
+                       const char* help, ValueSetter set) {
+    addValueOption(app, name, valueName, help, error, std::move(set))
+        ->group("Run");
+  };
+  run("--main", "O1234|<NAME>",
+      "the program to run (default: the first one in the input)",
+      [&o](const std::string& v) {
+        o.mainProgram = v;
+        return std::string();
+      });
+  run("--machine", "PATH", "the machine profile (JSON)",
+      [&o](const std::string& v) {
+        o.machinePath = v;
+        return std::string();
+      });
+  run("--set", "'#N=V'", "set variable #N to V before the run (repeatable)",
+      [&o](const std::string& v) {
+        std::pair<double, double> p;
+        if (!parsePreset(v, p)) {
+          return fmt::format("--set expects '#N=V', got '{}'", v);
+        }
+        o.presets.push_back(p);
+        return std::string();
+      });
+  run("--arg", "A=1.5",
+      "a G65 argument of the main program: its local variable (repeatable)",
+      [&o](const std::string& v) {
+        std::pair<char, double> p;
+        if (!parseArg(v, p)) {
+          return fmt::format("--arg expects LETTER=VALUE, got '{}'", v);
+        }
+        o.args.push_back(p);
+        return std::string();
+      });
+  run("--max-blocks", "N", "stop with an alarm after N blocks",
+      [&o](const std::string& v) {
+        double n = 0;
+        if (!parseNumber(v, n) || n < 1) {
+          return std::string("--max-blocks expects a positive number");
+        }
+        o.maxBlocks = static_cast<std::uint64_t>(n);
+        return std::string();
+      });
+  run("--max-output", "SIZE",
+      "stop with an alarm after SIZE bytes of output (4096, 64K, 512M, 2G)",
+      [&o](const std::string& v) {
+        if (!parseSize(v, o.maxOutput)) {
+          return fmt::format("--max-output expects a size in bytes such as "
+                             "4096, 64K, 512M or 2G, got '{}'",
+                             v);
+        }
+        return std::string();
+      });
+  // A flag with an optional value written --block-skip=N: block skip
+  // switch 1 unless a number is given.
+  const std::string blockSkipHelp =
+      "turn on block skip switch N (1 to 9; default 1)";
+  app.add_flag("--block-skip{1}", blockSkipHelp)
+      ->type_name("[=N]")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->each([&o, &error](const std::string& v) {
+        double n = 0;
+        if (!parseNumber(v, n) || n < 1 || n > 9 || n != static_cast<int>(n)) {
+          if (error.empty()) {
+            error = "--block-skip takes a switch number 1 to 9";
+          }
+          return;
+        }
+        o.blockSkipMask |= 1U << static_cast<unsigned>(n);
+      })
+      ->group("Run");
+  app.add_flag_callback(
+         "--trace", [&o] { o.trace = true; },
+         std::string("print each block as it runs, with its values"))
+      ->group("Run");
 }
 
 } // namespace mbc::driver

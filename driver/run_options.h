@@ -1,14 +1,19 @@
-// The options of a run, shared by `mbc run` and the executables `mbc build`
-// makes (which take the same ones): outputs, machine, presets, arguments,
-// limits, block skip and tracing.
+// The options of a run, shared by `mbc run`, `mbc batch` and the executables
+// `mbc build` makes (which take the same ones): outputs, machine, presets,
+// arguments, limits, block skip and tracing.
 #pragma once
 
-#include "driver/arg_reader.h"
-
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
+
+namespace CLI {
+class App;
+class Option;
+} // namespace CLI
 
 namespace mbc::driver {
 
@@ -30,13 +35,28 @@ struct RunOptions {
   bool trace = false;
 };
 
-enum class OptionStatus { NotARunOption, Taken, Error };
+/// Checks and stores one value of an option; returns what is wrong with it,
+/// or "" when it is good.
+using ValueSetter = std::function<std::string(const std::string& value)>;
 
-/// Takes the reader's current argument when it is a run option.
-OptionStatus readRunOption(ArgReader& args, RunOptions& o, std::string& error);
+/// Adds an option that takes a value (`--name V`, `--name=V`, `-nV`) to
+/// `app`. Each value given goes through `set` in turn (a repeated option
+/// adds, or the last one wins); the first bad value's message goes to
+/// `error`, for the caller to report once the line is read.
+CLI::Option* addValueOption(CLI::App& app, const std::string& names,
+                            const std::string& valueName,
+                            const std::string& help, std::string& error,
+                            ValueSetter set);
 
-/// The run options' part of a usage text, indented by `indent` spaces.
-std::string runOptionsUsage(int indent);
+/// Which run options a command takes.
+enum class RunOutputs {
+  Single, // a run's output files (mbc run, the executables)
+  None    // mbc batch: each row's outputs go under --out DIR
+};
+
+/// Adds the run options to `app`, in the help groups "Run" and "Outputs".
+void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
+                   RunOutputs outputs);
 
 /// Reads a number the way the C locale writes it, whatever the locale.
 bool parseNumber(std::string_view text, double& out);

@@ -120,9 +120,9 @@ expect_error 2 "bad-id.csv:2:1: id 'a/b' is not usable in file names" batch hole
 printf 'R,H\n1,2,3\n' >bad-width.csv
 expect_error 2 "bad-width.csv:2:1: 3 cells, but the header names 2 columns" batch holes.nc --params bad-width.csv --out e
 expect_error 2 "cannot read 'missing.csv'" batch holes.nc --params missing.csv --out e
-expect_error 2 "--toolpath is an option of mbc run" batch holes.nc --params small.csv --out e --toolpath t.jsonl
+expect_error 2 "'--toolpath' is not an option of mbc batch (it is one of mbc run): mbc batch writes each row" batch holes.nc --params small.csv --out e --toolpath t.jsonl
 expect_error 2 "mbc batch needs --params TABLE.csv and --out DIR" batch holes.nc --params small.csv
 expect_error 2 "--shard expects I/N with 0 <= I < N, got '3/3'" batch holes.nc --params small.csv --out e --shard 3/3
 expect_error 2 "-j expects a number of threads from 1 to 256" batch holes.nc --params small.csv --out e -j 0
-expect_error 2 "--params is only available with batch" run holes.nc --params small.csv
+expect_error 2 "'--params' is not an option of mbc run (it is one of mbc batch)" run holes.nc --params small.csv
 echo "batch: per-row results, engines, 10 000 rows, -j, shards and errors check"

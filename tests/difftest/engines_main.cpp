@@ -6,10 +6,10 @@
 // (status, stderr, toolpath.jsonl, dprnt, vars.json; k in that order).
 // tools/difftest.py --engines uses it for long runs: one process start
 // instead of five per program.
-#include "driver/arg_reader.h"
 #include "driver/run_command.h"
 #include "driver/run_options.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
 #include <fcntl.h>
@@ -59,14 +59,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   run.maxBlocks = static_cast<std::uint64_t>(limit);
-  ArgReader args(argc, argv, 4);
-  while (args.advance()) {
-    std::string error;
-    if (readRunOption(args, run, error) != OptionStatus::Taken) {
-      std::fprintf(stderr, "difftest_engines: %s: %s\n", args.arg().c_str(),
-                   error.empty() ? "not a run option" : error.c_str());
-      return 2;
-    }
+  CLI::App app("difftest_engines");
+  std::string error;
+  addRunOptions(app, run, error, RunOutputs::None);
+  try {
+    app.parse(argc - 3, argv + 3);
+  } catch (const CLI::ParseError& e) {
+    error = e.what();
+  }
+  if (!error.empty()) {
+    std::fprintf(stderr, "difftest_engines: %s\n", error.c_str());
+    return 2;
   }
   const int savedStderr = dup(STDERR_FILENO);
   for (std::size_t k = 0; k < std::size(kConfigs); ++k) {

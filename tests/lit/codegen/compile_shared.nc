@@ -23,6 +23,6 @@ M99
 ; HEADER: extern const mbrt_program_table cycles;
 ; HEADER: mbrt_status mbc_O9100(
 ; BAD-EMIT: mbc: error: --shared writes a shared library, not --emit=asm
-; BAD-COMMAND: mbc: error: --shared is only available with compile
+; BAD-COMMAND: mbc: error: '--shared' is not an option of mbc run (it is one of mbc compile)
 ; STDOUT: mbc: error: mbc compile --shared needs -o FILE.so
 ; NO-LINK: mbc: error: linking '{{.*}}.bad.so' failed (false exited with 1)

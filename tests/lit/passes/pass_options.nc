@@ -10,7 +10,7 @@
 #100 = #1 * 3
 M30
 ; BAD: mbc: error: unknown pass 'nosuchpass' (passes: mem2ssa, copyprop, constfold, vacancy, cse, loadelim, dce, simplifycfg)
-; BAD: usage: mbc run
+; BAD-NEXT: mbc: note: 'mbc emit-ir --help' lists its options
 ; CHECK-LABEL: func @MAIN
 ; CHECK: [[SIX:%[0-9]+]] = const 6
 ; CHECK-NEXT: stvar #100, [[SIX]]{{$}}
