@@ -15,7 +15,9 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <unistd.h>
 
 namespace mbc::driver {
 
@@ -26,6 +28,7 @@ struct Reader {
   Options o;
   std::string error; // the first bad value's message
   std::string helpTopic;
+  std::string color = "auto"; // --color=auto|always|never
 };
 
 std::string stored(std::string& field, const std::string& value) {
@@ -38,6 +41,76 @@ void addFlag(CLI::App& cmd, const std::string& name, bool& field,
   cmd.add_flag_callback(
          name, [&field] { field = true; }, help)
       ->group(group);
+}
+
+// How the diagnostics of the input come out.
+void addDiagnosticOptions(CLI::App& cmd, Reader& r) {
+  const std::string group = "Diagnostics";
+  addValueOption(cmd, "--diagnostics-format", "text|json|sarif",
+                 "print the diagnostics as clang does (default), as one line "
+                 "of JSON or as a SARIF 2.1.0 log",
+                 r.error,
+                 [&r](const std::string& v) -> std::string {
+                   DiagnosticFormat& f = r.o.diagnostics.format;
+                   if (v == "text" || v == "json" || v == "sarif") {
+                     f = v == "text"   ? DiagnosticFormat::Text
+                         : v == "json" ? DiagnosticFormat::Json
+                                       : DiagnosticFormat::Sarif;
+                     return "";
+                   }
+                   return fmt::format("unknown diagnostics format '{}' (text, "
+                                      "json or sarif)",
+                                      v);
+                 })
+      ->group(group);
+  const std::string colorHelp =
+      "colour the diagnostics: on a terminal unless NO_COLOR is set (auto, "
+      "the default), always (--color alone) or never";
+  cmd.add_flag("--color{always}", colorHelp)
+      ->type_name("[=WHEN]")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->each([&r](const std::string& v) {
+        if (v != "auto" && v != "always" && v != "never") {
+          if (r.error.empty()) {
+            r.error = fmt::format(
+                "--color expects auto, always or never, got '{}'", v);
+          }
+          return;
+        }
+        r.color = v;
+      })
+      ->group(group);
+  cmd.add_flag_callback(
+         "-w", [&r] { r.o.diagnostics.warnings = WarningMode::Hide; },
+         std::string("show no warnings"))
+      ->group(group);
+  addValueOption(cmd, "-W", "error",
+                 "-Werror: make every warning an error (the input is refused)",
+                 r.error,
+                 [&r](const std::string& v) -> std::string {
+                   if (v == "error" || v == "no-error") {
+                     r.o.diagnostics.warnings =
+                         v == "error" ? WarningMode::Error : WarningMode::Show;
+                     return "";
+                   }
+                   return fmt::format("unknown warning option '-W{}' (mbc "
+                                      "has -Werror and -Wno-error)",
+                                      v);
+                 })
+      ->group(group);
+}
+
+// --color=auto: on a terminal that shows colours, unless the user said
+// NO_COLOR (no-color.org) in the environment.
+bool colorWanted(const std::string& when) {
+  if (when != "auto") {
+    return when == "always";
+  }
+  const char* noColor = std::getenv("NO_COLOR");
+  const char* term = std::getenv("TERM");
+  return isatty(STDERR_FILENO) != 0 &&
+         (noColor == nullptr || *noColor == '\0') &&
+         (term == nullptr || std::string_view(term) != "dumb");
 }
 
 // FILE... and what decides how they are read.
@@ -57,6 +130,7 @@ void addInputs(CLI::App& cmd, Reader& r, bool noStrict) {
          "--strict", [&r] { r.o.strict = true; },
          std::string("refuse an input with errors"))
       ->group("Input");
+  addDiagnosticOptions(cmd, r);
   if (noStrict) {
     cmd.add_flag_callback(
            "--no-strict", [&r] { r.o.strict = false; },
@@ -462,6 +536,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
   if (!error.empty()) {
     return {std::nullopt, usageError(error, r.o.command)};
   }
+  r.o.diagnostics.color = colorWanted(r.color);
   return {std::move(r.o), 0};
 }
 

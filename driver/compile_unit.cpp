@@ -122,20 +122,31 @@ bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
     std::fprintf(stderr, "mbc: error: %s\n", failure.c_str());
     return false;
   }
-  std::string rendered = renderDiagnostics(diags, load.errors);
-  std::fputs(rendered.c_str(), stderr);
-  if (load.errors == ErrorMode::Alarm && diags.totalErrors() > 0) {
+  const DiagnosticOutput& output = load.diagnostics;
+  const DiagnosticView view{load.errors, output.warnings};
+  const bool text = output.format == DiagnosticFormat::Text;
+  std::fputs(text ? renderDiagnostics(diags, view, output.color).c_str()
+             : output.format == DiagnosticFormat::Json
+                 ? diagnosticsJson(diags, view).c_str()
+                 : diagnosticsSarif(diags, view).c_str(),
+             stderr);
+  // -Werror: a warning refuses the input, whatever the mode; errors under
+  // ErrorMode::Alarm are their blocks' alarms.
+  const int errors = shownErrorCount(diags, view) -
+                     (load.errors == ErrorMode::Alarm ? diags.errorCount() : 0);
+  if (errors > 0) {
+    if (text) {
+      std::fprintf(stderr, "%d error%s generated.\n", errors,
+                   errors == 1 ? "" : "s");
+    }
+    return false;
+  }
+  if (load.errors == ErrorMode::Alarm && diags.totalErrors() > 0 && text) {
     std::fprintf(stderr,
                  "mbc: warning: %d error%s in the input: each block that has "
                  "one raises its alarm if the run reaches it (--strict "
                  "refuses the input)\n",
                  diags.totalErrors(), diags.totalErrors() == 1 ? "" : "s");
-    return true;
-  }
-  if (diags.errorCount() > 0) {
-    std::fprintf(stderr, "%d error%s generated.\n", diags.errorCount(),
-                 diags.errorCount() == 1 ? "" : "s");
-    return false;
   }
   return true;
 }

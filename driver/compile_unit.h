@@ -2,6 +2,7 @@
 // every mbc command.
 #pragma once
 
+#include "driver/diagnostic_formats.h"
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 #include "frontend/source.h"
@@ -25,6 +26,7 @@ struct LoadOptions {
   bool defaultMachine = true;
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
+  DiagnosticOutput diagnostics;
 };
 
 /// An input given as text rather than a file (the Python package's

@@ -10,6 +10,7 @@ LoadOptions loadOptions(const Options& o) {
                         o.command != "build";
   load.errors = o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
   load.includeDirs = o.includeDirs;
+  load.diagnostics = o.diagnostics;
   return load;
 }
 

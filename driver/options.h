@@ -40,6 +40,7 @@ struct Options {
   // their blocks alarm when they run (loadOptions()).
   std::optional<bool> strict;
   std::vector<std::string> includeDirs; // -I DIR: where called programs are
+  DiagnosticOutput diagnostics; // --diagnostics-format, --color, -w, -Werror
 };
 
 /// How the commands read their input (compile_unit.h). Errors in the input:

@@ -72,10 +72,11 @@ std::string unknownOptionMessage(const CLI::App& root, const CLI::App& command,
     }
     return message;
   }
-  std::string guess = closestMatch(name, optionNames(command));
-  if (guess.empty() && name != arg) {
-    guess = closestMatch(arg, optionNames(command));
-  }
+  // A one-letter option is too short to guess from; "-toolpath" is
+  // "--toolpath" with a dash missing.
+  const std::string guess =
+      closestMatch(arg.starts_with("--") ? name : arg.substr(0, arg.find('=')),
+                   optionNames(command));
   return fmt::format(
       "unknown option '{}' for mbc {}{}", arg, self,
       guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess));

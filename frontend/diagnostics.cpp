@@ -12,13 +12,15 @@ namespace mbc {
 namespace {
 
 struct KindRow {
+  const char* name;
   Severity severity;
   AlarmId alarm;
   const char* format;
 };
 
 constexpr std::array kKinds = {
-#define DIAG(Id, Sev, Alarm, Text) KindRow{Severity::Sev, AlarmId::Alarm, Text},
+#define DIAG(Id, Sev, Alarm, Text)                                             \
+  KindRow{#Id, Severity::Sev, AlarmId::Alarm, Text},
 #include "frontend/diagnostic_kinds.def"
 };
 
@@ -86,10 +88,38 @@ ShownLine showLine(std::string_view line, std::size_t focus) {
   return s;
 }
 
-void renderOne(const SourceManager& sm, const Diagnostic& d, std::string& out) {
+// clang's and gcc's colours: the location and message bold, the severity
+// in its colour, the caret line bold green, fix-its green.
+struct Style {
+  bool color = false;
+
+  std::string paint(const char* code, std::string_view text) const {
+    return color ? fmt::format("\033[{}m{}\033[0m", code, text)
+                 : std::string(text);
+  }
+};
+
+const char* severityColor(Severity s) {
+  switch (s) {
+    case Severity::Error:
+      return "1;31";
+    case Severity::Warning:
+      return "1;35";
+    case Severity::Note:
+      return "1;36";
+  }
+  return "1";
+}
+
+void renderOne(const SourceManager& sm, const Diagnostic& d, Severity severity,
+               std::string_view suffix, const Style& style, std::string& out) {
   LineCol lc = sm.lineCol(d.range.begin);
-  out += fmt::format("{}:{}:{}: {}: {}\n", sm.name(d.range.begin.file), lc.line,
-                     lc.col, severityText(d.severity), d.message);
+  out += style.paint("1", fmt::format("{}:{}:{}:", sm.name(d.range.begin.file),
+                                      lc.line, lc.col)) +
+         " " +
+         style.paint(severityColor(severity),
+                     fmt::format("{}:", severityText(severity))) +
+         " " + style.paint("1", fmt::format("{}{}", d.message, suffix)) + "\n";
   std::string_view line = sm.lineText(d.range.begin);
   auto at = std::min(static_cast<std::size_t>(lc.col - 1), line.size());
   ShownLine shown = showLine(line, at);
@@ -102,8 +132,8 @@ void renderOne(const SourceManager& sm, const Diagnostic& d, std::string& out) {
   if (endCol > caretCol + 1) {
     marks.append(endCol - caretCol - 1, '~');
   }
-  out +=
-      fmt::format("{}\n{}{}\n", shown.text, std::string(caretCol, ' '), marks);
+  out += fmt::format("{}\n{}{}\n", shown.text, std::string(caretCol, ' '),
+                     style.paint("1;32", marks));
   // All fix-its of the line go on one line under the caret, clang-style.
   std::string fix;
   for (const FixIt& f : d.fixIts) {
@@ -120,10 +150,12 @@ void renderOne(const SourceManager& sm, const Diagnostic& d, std::string& out) {
                 f.replacement);
   }
   if (!fix.empty()) {
-    out += fix + "\n";
+    const std::size_t indent = fix.find_first_not_of(' ');
+    out +=
+        fix.substr(0, indent) + style.paint("0;32", fix.substr(indent)) + "\n";
   }
   for (const Diagnostic& n : d.notes) {
-    renderOne(sm, n, out);
+    renderOne(sm, n, Severity::Note, "", style, out);
   }
 }
 
@@ -139,6 +171,10 @@ const char* severityText(Severity s) {
       return "note";
   }
   return "error";
+}
+
+const char* kindName(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].name;
 }
 
 Severity severityOf(DiagKind kind) {
@@ -201,57 +237,86 @@ std::string alarmDetail(std::string_view message) {
   return std::string(message);
 }
 
+namespace {
+
 // Under ErrorMode::Alarm: the note that says what the run makes of an
 // error, on one line (the error above shows the source).
-std::string alarmNote(const SourceManager& sm, const Diagnostic& d) {
-  const AlarmId alarm = d.alarm;
-  if (alarm == AlarmId::None) {
-    return "";
-  }
+std::string alarmNote(const SourceManager& sm, const ShownDiagnostic& shown,
+                      const Style& style) {
+  const Diagnostic& d = *shown.diagnostic;
   LineCol lc = sm.lineCol(d.range.begin);
   const bool jump =
       d.kind == DiagKind::GotoUndefined || d.kind == DiagKind::GotoRange;
-  return fmt::format("{}:{}:{}: note: {} alarm {} {}{}\n",
-                     sm.name(d.range.begin.file), lc.line, lc.col,
-                     jump ? "the jump raises" : "this block raises",
-                     alarmCode(alarm, 0), alarmInfo(alarm).message,
-                     jump ? " when it is taken" : " when it runs");
+  return style.paint("1", fmt::format("{}:{}:{}:", sm.name(d.range.begin.file),
+                                      lc.line, lc.col)) +
+         " " + style.paint(severityColor(Severity::Note), "note:") + " " +
+         style.paint(
+             "1", fmt::format("{} alarm {} {}{}",
+                              jump ? "the jump raises" : "this block raises",
+                              alarmCode(shown.alarm, 0),
+                              alarmInfo(shown.alarm).message,
+                              jump ? " when it is taken" : " when it runs")) +
+         "\n";
 }
 
-std::string renderDiagnostics(const DiagnosticEngine& engine, ErrorMode mode) {
-  // Parsing and the semantic checks report in two passes; the reader wants
-  // file order.
-  std::vector<const Diagnostic*> sorted;
+} // namespace
+
+std::vector<ShownDiagnostic> shownDiagnostics(const DiagnosticEngine& engine,
+                                              const DiagnosticView& view) {
+  std::vector<ShownDiagnostic> shown;
   for (const Diagnostic& d : engine.diagnostics()) {
-    sorted.push_back(&d);
+    ShownDiagnostic s{&d, d.severity};
+    if (d.severity == Severity::Warning) {
+      if (view.warnings == WarningMode::Hide) {
+        continue;
+      }
+      s.fromWarning = view.warnings == WarningMode::Error;
+      s.severity = s.fromWarning ? Severity::Error : Severity::Warning;
+    } else if (d.severity == Severity::Error &&
+               view.errors == ErrorMode::Alarm &&
+               d.kind != DiagKind::TooManyErrors) {
+      s.severity = Severity::Warning;
+      s.alarm = d.alarm;
+    }
+    shown.push_back(s);
   }
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const Diagnostic* a, const Diagnostic* b) {
+  std::stable_sort(shown.begin(), shown.end(),
+                   [](const ShownDiagnostic& a, const ShownDiagnostic& b) {
                      auto key = [](const Diagnostic* d) {
                        return std::tuple(d->kind == DiagKind::TooManyErrors,
                                          d->range.begin.file,
                                          d->range.begin.offset);
                      };
-                     return key(a) < key(b);
+                     return key(a.diagnostic) < key(b.diagnostic);
                    });
+  return shown;
+}
+
+int shownErrorCount(const DiagnosticEngine& engine,
+                    const DiagnosticView& view) {
+  return engine.errorCount() +
+         (view.warnings == WarningMode::Error ? engine.warningCount() : 0);
+}
+
+std::string renderDiagnostics(const DiagnosticEngine& engine,
+                              const DiagnosticView& view, bool color) {
+  const Style style{color};
+  const SourceManager& sm = engine.sources();
   std::string out;
-  for (const Diagnostic* dp : sorted) {
-    const Diagnostic& d = *dp;
-    const bool alarms = mode == ErrorMode::Alarm;
+  for (const ShownDiagnostic& shown : shownDiagnostics(engine, view)) {
+    const Diagnostic& d = *shown.diagnostic;
     if (d.kind == DiagKind::TooManyErrors) {
-      out += alarms ? "mbc: warning: too many problems; the others are not "
-                      "shown\n"
-                    : fmt::format("mbc: error: {}\n", d.message);
+      out += view.errors == ErrorMode::Alarm
+                 ? "mbc: warning: too many problems; the others are not "
+                   "shown\n"
+                 : fmt::format("mbc: error: {}\n", d.message);
       continue;
     }
-    if (alarms && d.severity == Severity::Error) {
-      Diagnostic warning = d;
-      warning.severity = Severity::Warning;
-      renderOne(engine.sources(), warning, out);
-      out += alarmNote(engine.sources(), d);
-      continue;
+    renderOne(sm, d, shown.severity, shown.fromWarning ? " [-Werror]" : "",
+              style, out);
+    if (shown.alarm != AlarmId::None) {
+      out += alarmNote(sm, shown, style);
     }
-    renderOne(engine.sources(), d, out);
   }
   return out;
 }

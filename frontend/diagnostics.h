@@ -40,6 +40,10 @@ struct Diagnostic {
 };
 
 Severity severityOf(DiagKind kind);
+
+/// The kind's name in diagnostic_kinds.def ("ExpectedExpression"): the
+/// rule of machine-readable diagnostics.
+const char* kindName(DiagKind kind);
 /// "error", "warning" or "note", as diagnostics print it.
 const char* severityText(Severity severity);
 /// The alarm a block with this error raises when it runs (AlarmId::None:
@@ -133,11 +137,48 @@ enum class ErrorMode {
   Alarm,  // mbc run: errors are warnings, their blocks alarm when they run
 };
 
+/// What the command line makes of warnings.
+enum class WarningMode {
+  Show,
+  Hide,  // -w
+  Error, // -Werror: each warning is an error, the input is refused
+};
+
+/// How the diagnostics are shown: the same ones in every format.
+struct DiagnosticView {
+  ErrorMode errors = ErrorMode::Refuse;
+  WarningMode warnings = WarningMode::Show;
+};
+
+/// A diagnostic as the reader gets it.
+struct ShownDiagnostic {
+  const Diagnostic* diagnostic;
+  Severity severity;        // after the modes
+  bool fromWarning = false; // an error made of a warning by -Werror
+  /// Under ErrorMode::Alarm, the alarm an error's block raises when it runs
+  /// (the error is then shown as a warning).
+  AlarmId alarm = AlarmId::None;
+};
+
+/// The diagnostics to show, in file order (parsing and the semantic checks
+/// report in two passes), "too many errors" last.
+std::vector<ShownDiagnostic> shownDiagnostics(const DiagnosticEngine& engine,
+                                              const DiagnosticView& view);
+
+/// The number of errors the view makes: the engine's, plus the warnings
+/// under WarningMode::Error.
+int shownErrorCount(const DiagnosticEngine& engine, const DiagnosticView& view);
+
 /// clang-style text of every diagnostic: "file:line:col: error: message",
-/// the source line, a caret under the range, and fix-it lines. Under
-/// ErrorMode::Alarm an error prints as a warning with a note naming the
-/// alarm its block raises.
+/// the source line, a caret under the range, and fix-it lines; in clang's
+/// colours when `color`. Under ErrorMode::Alarm an error prints as a warning
+/// with a note naming the alarm its block raises.
 std::string renderDiagnostics(const DiagnosticEngine& engine,
-                              ErrorMode mode = ErrorMode::Refuse);
+                              const DiagnosticView& view, bool color = false);
+
+inline std::string renderDiagnostics(const DiagnosticEngine& engine,
+                                     ErrorMode mode = ErrorMode::Refuse) {
+  return renderDiagnostics(engine, DiagnosticView{mode, WarningMode::Show});
+}
 
 } // namespace mbc
