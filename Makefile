@@ -3,7 +3,7 @@
 BUILD_DIR ?= build
 JOBS ?= 2
 DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
-                nlohmann-json3-dev libcli11-dev libxxhash-dev googletest libgtest-dev libgmock-dev parallel \
+                nlohmann-json3-dev libcli11-dev help2man libxxhash-dev googletest libgtest-dev libgmock-dev parallel \
                 pkg-config pybind11-dev python3-dev python3-numpy python3-pandas \
                 python3-dask python3-distributed python3-pytest
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

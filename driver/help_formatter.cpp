@@ -101,6 +101,11 @@ std::string HelpFormatter::make_option_name(const CLI::Option* opt,
        open = name.find('{')) {
     name.erase(open, name.find('}', open) - open + 1);
   }
+  // "-j, --jobs", as man pages write them (help2man reads them so).
+  for (std::size_t comma = name.find(','); comma != std::string::npos;
+       comma = name.find(',', comma + 2)) {
+    name.insert(comma + 1, " ");
+  }
   return name;
 }
 

@@ -16,6 +16,8 @@ cmake --install "$build" --prefix "$prefix" >install.log 2>&1 ||
   { cat install.log; fail "cmake --install"; }
 [ -f "$prefix/lib/cmake/mbc/mbcConfig.cmake" ] || fail "no package config installed"
 [ -f "$prefix/include/mbc/runtime.h" ] || fail "no runtime.h installed"
+[ -f "$prefix/share/man/man1/mbc-run.1" ] || fail "no man page installed"
+[ -f "$prefix/share/bash-completion/completions/mbc" ] || fail "no bash completion installed"
 
 # A runtime built with sanitizers links only with their libraries.
 flags=""
