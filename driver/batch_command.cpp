@@ -4,6 +4,7 @@
 // in table order, reporting alarms and progress, and a summary.
 #include "driver/batch_command.h"
 
+#include "driver/batch_outputs.h"
 #include "driver/batch_progress.h"
 #include "driver/batch_runner.h"
 #include "driver/interrupt_scope.h"
@@ -53,14 +54,14 @@ int batchCommand(const Options& o) {
                  o.shard.c_str());
     return 2;
   }
-  if (!readBatchTable(o.paramsPath, all, error)) {
+  if (!readBatchTable(o.paramsPath, o.columnMap, all, error)) {
     std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
     return 2;
   }
   std::vector<BatchRow> rows;
   for (std::size_t i = static_cast<std::size_t>(shard.index); i < all.size();
        i += static_cast<std::size_t>(shard.count)) {
-    rows.push_back(std::move(all[i]));
+    rows.push_back(all[i]);
   }
   PhaseTimes phases;
   PreparedProgram program;
@@ -88,10 +89,17 @@ int batchCommand(const Options& o) {
   }
 
   const std::string suffix = shardSuffix(shard);
-  const std::string resultsPath =
-      (fs::path(o.outDir) / ("results" + suffix + ".csv")).string();
-  const std::string combinedPath =
-      (fs::path(o.outDir) / ("batch" + suffix + ".jsonl")).string();
+  const std::string resultsName = "results" + suffix + ".csv";
+  const std::string combinedName = "batch" + suffix + ".jsonl";
+  const std::string resultsPath = (fs::path(o.outDir) / resultsName).string();
+  const std::string combinedPath = (fs::path(o.outDir) / combinedName).string();
+  const FinishedRows finished =
+      o.resume ? finishedRows(rows, resultsPath, o.combined ? combinedPath : "")
+               : FinishedRows{};
+  removeStaleOutputs(o.outDir, all, rows, finished.count, resultsName,
+                     combinedName, o.combined);
+  rows.erase(rows.begin(),
+             rows.begin() + static_cast<std::ptrdiff_t>(finished.count));
   OutputFile results, combined;
   if (!results.open(resultsPath) ||
       (o.combined && !combined.open(combinedPath))) {
@@ -99,10 +107,15 @@ int batchCommand(const Options& o) {
                  o.outDir.c_str());
     return 2;
   }
-  const char* header =
+  const std::string header =
       "row,line,status,blocks,moves,feed_length,rapid_length,cycle_time,"
-      "alarm\n";
-  OutputFile::writeText(&results, header, std::strlen(header));
+      "alarm\n" +
+      finished.results;
+  OutputFile::writeText(&results, header.data(), header.size());
+  if (o.combined) {
+    OutputFile::writeText(&combined, finished.combined.data(),
+                          finished.combined.size());
+  }
 
   ProgressLine progress(rows.size());
   std::size_t taken = 0, ended = 0, alarms = 0, errors = 0, interrupted = 0;
@@ -158,10 +171,18 @@ int batchCommand(const Options& o) {
     }
   }
   const double seconds = millisecondsSince(start) / 1000.0;
+  // The rows an earlier batch finished count as this one's.
+  ended += finished.count - finished.alarms;
+  alarms += finished.alarms;
+  const std::string kept =
+      finished.count > 0
+          ? fmt::format(", {} kept from the earlier batch", finished.count)
+          : "";
   const std::string of =
-      shard.count == 1 ? fmt::format("{} rows", taken)
-                       : fmt::format("{} rows (shard {}/{} of {} rows)", taken,
-                                     shard.index, shard.count, all.size());
+      shard.count == 1 ? fmt::format("{} rows{}", taken + finished.count, kept)
+                       : fmt::format("{} rows (shard {}/{} of {} rows{})",
+                                     taken + finished.count, shard.index,
+                                     shard.count, all.size(), kept);
   std::string others =
       errors ? fmt::format(", {} with lost output", errors) : "";
   if (interrupted) {

@@ -1,6 +1,7 @@
 // See batch_runner.h.
 #include "driver/batch_runner.h"
 
+#include "driver/batch_outputs.h"
 #include "driver/interrupt_scope.h"
 #include "driver/output_files.h"
 
@@ -170,13 +171,19 @@ RowResult BatchRunner::runRow(const BatchRow& row, mbrt_ctx* ctx) const {
     return r;
   }
   const std::string base = (fs::path(o_.outDir) / row.id).string();
-  const std::pair<const char*, const std::string*> files[] = {
-      {".toolpath.jsonl", &out.toolpath},
-      {".dprnt", &out.dprnt},
-      {".vars.json", &out.vars},
-      {".log", &out.log}};
-  for (const auto& [ext, content] : files) {
-    if (!writeWhole(base + ext, *content)) {
+  const std::string* contents[] = {&out.toolpath, &out.dprnt, &out.vars,
+                                   &out.log};
+  static_assert(std::size(contents) == kRowFileExtensions.size());
+  for (std::size_t f = 0; f < std::size(contents); ++f) {
+    const char* ext = kRowFileExtensions[f];
+    const std::string& content = *contents[f];
+    // An output the row did not write is no file, and no earlier batch's.
+    if (content.empty()) {
+      std::error_code ec;
+      fs::remove(base + ext, ec);
+      continue;
+    }
+    if (!writeWhole(base + ext, content)) {
       std::fprintf(stderr, "mbc: error: cannot write '%s%s': %s\n",
                    base.c_str(), ext, std::strerror(errno));
       r.exit = 2;

@@ -1,6 +1,8 @@
 // CSV as spreadsheets and pandas write it: commas, optional double quotes
 // (a quote inside doubled), CRLF or LF line ends, blank lines skipped,
-// spaces around a cell ignored.
+// spaces around a cell ignored; Excel's "CSV UTF-8" byte order mark; and
+// the semicolons and decimal commas of the locales whose decimal point is
+// a comma.
 #include "driver/batch_table.h"
 
 #include "driver/run_options.h"
@@ -9,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <set>
@@ -30,8 +33,9 @@ std::string trim(std::string_view s) {
   return std::string(s.substr(first, s.find_last_not_of(" \t") - first + 1));
 }
 
-/// Splits one line into cells; false on an unterminated quote.
-bool splitLine(std::string_view line, std::vector<Cell>& cells,
+/// Splits one line into cells at `separator`; false on an unterminated
+/// quote.
+bool splitLine(std::string_view line, char separator, std::vector<Cell>& cells,
                int& badColumn) {
   cells.clear();
   std::size_t i = 0;
@@ -55,9 +59,9 @@ bool splitLine(std::string_view line, std::vector<Cell>& cells,
         }
         cell.text += line[j++];
       }
-      i = line.find(',', j + 1);
+      i = line.find(separator, j + 1);
     } else {
-      const std::size_t comma = line.find(',', i);
+      const std::size_t comma = line.find(separator, i);
       cell.text = trim(line.substr(i, comma == std::string_view::npos
                                           ? std::string_view::npos
                                           : comma - i));
@@ -71,7 +75,31 @@ bool splitLine(std::string_view line, std::vector<Cell>& cells,
   }
 }
 
-enum class ColumnKind { Id, Argument, Preset };
+// A header of semicolons and no commas is a table of a locale whose
+// decimal separator is the comma.
+char separatorOf(std::string_view header) {
+  bool quoted = false;
+  bool semicolon = false;
+  for (const char c : header) {
+    quoted = c == '"' ? !quoted : quoted;
+    if (!quoted && c == ',') {
+      return ',';
+    }
+    semicolon = semicolon || (!quoted && c == ';');
+  }
+  return semicolon ? ';' : ',';
+}
+
+// "12,5" in a semicolon table is 12.5.
+bool parseCell(std::string text, char separator, double& value) {
+  if (separator == ';' && text.find('.') == std::string::npos &&
+      std::count(text.begin(), text.end(), ',') == 1) {
+    text[text.find(',')] = '.';
+  }
+  return parseNumber(text, value);
+}
+
+enum class ColumnKind { Id, Argument, Preset, Ignored };
 
 struct Column {
   ColumnKind kind = ColumnKind::Id;
@@ -114,9 +142,61 @@ bool parseColumn(const std::string& name, Column& column, std::string& why) {
     }
   }
   why = fmt::format("unknown column '{}' (a G65 argument letter such as R, "
-                    "a variable such as #100, or id)",
-                    name);
+                    "a variable such as #100, or id; --column '{}=R' maps "
+                    "it, --column '{}=' ignores it)",
+                    name, name, name);
   return false;
+}
+
+bool sameName(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+// The header's columns, through the --column map.
+bool readHeader(const std::vector<Cell>& cells, const ColumnMap& columnMap,
+                std::vector<Column>& columns, int& badColumn,
+                std::string& why) {
+  std::set<std::string> seen;
+  std::vector<bool> mapped(columnMap.size());
+  for (const Cell& cell : cells) {
+    badColumn = cell.column;
+    std::string name = cell.text;
+    bool ignored = false;
+    for (std::size_t m = 0; m < columnMap.size(); ++m) {
+      if (sameName(columnMap[m].first, cell.text)) {
+        mapped[m] = true;
+        name = columnMap[m].second;
+        ignored = name.empty();
+      }
+    }
+    Column column;
+    if (ignored) {
+      column.kind = ColumnKind::Ignored;
+    } else if (!parseColumn(name, column, why)) {
+      return false;
+    }
+    const std::string key = column.kind == ColumnKind::Argument
+                                ? std::string(1, column.letter)
+                                : name;
+    if (!ignored && !seen.insert(key).second) {
+      why = fmt::format("column '{}' appears twice", cell.text);
+      return false;
+    }
+    columns.push_back(column);
+  }
+  for (std::size_t m = 0; m < columnMap.size(); ++m) {
+    if (!mapped[m]) {
+      badColumn = 1;
+      why = fmt::format("--column {}: the header has no column '{}'",
+                        columnMap[m].first, columnMap[m].first);
+      return false;
+    }
+  }
+  return true;
 }
 
 bool isIdCharacter(char c) {
@@ -126,12 +206,16 @@ bool isIdCharacter(char c) {
 
 } // namespace
 
-bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
-                    std::string& error) {
+bool readBatchTable(const std::string& path, const ColumnMap& columnMap,
+                    std::vector<BatchRow>& rows, std::string& error) {
   std::string content;
   if (int readError = readFile(path, content)) {
     error = fmt::format("cannot read '{}': {}", path, std::strerror(readError));
     return false;
+  }
+  // Excel's "CSV UTF-8" starts with a byte order mark.
+  if (content.starts_with("\xEF\xBB\xBF")) {
+    content.erase(0, 3);
   }
   const auto fail = [&](int line, int column, const std::string& why) {
     error = fmt::format("{}:{}:{}: {}", path, line, column, why);
@@ -141,6 +225,7 @@ bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
   std::vector<Cell> cells;
   std::set<std::string> ids;
   bool hasId = false;
+  char separator = ',';
   std::string text;
   int lineNumber = 0, badColumn = 0;
   for (std::size_t next = 0; next < content.size();) {
@@ -154,27 +239,19 @@ bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
     if (trim(text).empty()) {
       continue;
     }
-    if (!splitLine(text, cells, badColumn)) {
+    const bool header = columns.empty();
+    separator = header ? separatorOf(text) : separator;
+    if (!splitLine(text, separator, cells, badColumn)) {
       return fail(lineNumber, badColumn, "unterminated quoted cell");
     }
-    if (columns.empty()) {
-      std::set<std::string> seen;
-      for (const Cell& cell : cells) {
-        Column column;
-        std::string why;
-        if (!parseColumn(cell.text, column, why)) {
-          return fail(lineNumber, cell.column, why);
-        }
-        std::string key = column.kind == ColumnKind::Argument
-                              ? std::string(1, column.letter)
-                              : cell.text;
-        if (!seen.insert(key).second) {
-          return fail(lineNumber, cell.column,
-                      fmt::format("column '{}' appears twice", cell.text));
-        }
-        hasId = hasId || column.kind == ColumnKind::Id;
-        columns.push_back(column);
+    if (header) {
+      std::string why;
+      if (!readHeader(cells, columnMap, columns, badColumn, why)) {
+        return fail(lineNumber, badColumn, why);
       }
+      hasId = std::any_of(columns.begin(), columns.end(), [](const Column& c) {
+        return c.kind == ColumnKind::Id;
+      });
       continue;
     }
     if (cells.size() != columns.size()) {
@@ -203,11 +280,11 @@ bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
         row.id = cell.text;
         continue;
       }
-      if (cell.text.empty()) {
+      if (cell.text.empty() || columns[c].kind == ColumnKind::Ignored) {
         continue;
       }
       double value = 0;
-      if (!parseNumber(cell.text, value)) {
+      if (!parseCell(cell.text, separator, value)) {
         return fail(lineNumber, cell.column,
                     fmt::format("'{}' is not a number", cell.text));
       }

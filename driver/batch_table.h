@@ -16,10 +16,14 @@ struct BatchRow {
   std::vector<std::pair<char, double>> args;      // letter columns
 };
 
+/// `--column NAME=TARGET`: the table's column NAME is the argument letter,
+/// `#N` or `id` TARGET; an empty TARGET ignores the column.
+using ColumnMap = std::vector<std::pair<std::string, std::string>>;
+
 /// Reads the table. An empty cell passes nothing (the argument or variable
 /// stays vacant). False with "PATH:LINE:COLUMN: reason" in `error`.
-bool readBatchTable(const std::string& path, std::vector<BatchRow>& rows,
-                    std::string& error);
+bool readBatchTable(const std::string& path, const ColumnMap& columnMap,
+                    std::vector<BatchRow>& rows, std::string& error);
 
 /// "I/N" (0 <= I < N): the rows whose 0-based position P has P % N == I.
 struct Shard {

@@ -292,8 +292,28 @@ void defineBatch(CLI::App& app, Reader& r) {
                  "run only the I-th of N equal parts of the table", r.error,
                  [&r](const std::string& v) { return stored(r.o.shard, v); })
       ->group(group);
+  addValueOption(*cmd, "--column", "NAME=TARGET",
+                 "read the table's column NAME as the argument letter, #N "
+                 "or id TARGET; NAME= ignores the column (repeatable)",
+                 r.error,
+                 [&r](const std::string& v) -> std::string {
+                   const std::size_t eq = v.find('=');
+                   if (eq == 0 || eq == std::string::npos) {
+                     return fmt::format("--column expects NAME=TARGET (such "
+                                        "as depth=Z), got '{}'",
+                                        v);
+                   }
+                   r.o.columnMap.emplace_back(v.substr(0, eq),
+                                              v.substr(eq + 1));
+                   return "";
+                 })
+      ->group(group);
   addFlag(*cmd, "--combined", r.o.combined,
           "write all rows' results into one JSONL file", group);
+  addFlag(*cmd, "--resume", r.o.resume,
+          "keep the rows an earlier batch finished in --out and run the "
+          "others",
+          group);
   addRunningOptions(*cmd, r, RunOutputs::None);
 }
 

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbc::driver {
@@ -36,6 +37,9 @@ struct Options {
   std::string shard;      // --shard I/N (batch)
   int jobs = 0;           // -j N (batch): threads; 0 = one per core
   bool combined = false;  // --combined (batch): one JSONL file
+  bool resume = false;    // --resume (batch): keep the rows done in --out
+  // --column NAME=TARGET (batch): a table column read as another
+  std::vector<std::pair<std::string, std::string>> columnMap;
   // --strict / --no-strict: whether errors in the input refuse it, or make
   // their blocks alarm when they run (loadOptions()).
   std::optional<bool> strict;

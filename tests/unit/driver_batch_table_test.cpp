@@ -14,14 +14,14 @@ namespace {
 class BatchTableTest : public ::testing::Test {
 protected:
   // Reads `text` as a table file; the error (if any) in error_.
-  bool read(const std::string& text) {
+  bool read(const std::string& text, const ColumnMap& columns = {}) {
     {
       std::ofstream out(path_, std::ios::binary);
       out << text;
     }
     rows_.clear();
     error_.clear();
-    return readBatchTable(path_, rows_, error_);
+    return readBatchTable(path_, columns, rows_, error_);
   }
 
   void TearDown() override { std::remove(path_.c_str()); }
@@ -47,6 +47,47 @@ TEST_F(BatchTableTest, ArgumentsPresetsAndNumberedIds) {
   EXPECT_EQ(rows_[1].line, 4);
   EXPECT_EQ(rows_[1].args, (std::vector<std::pair<char, double>>{{'R', 1.5}}));
   EXPECT_TRUE(rows_[1].presets.empty());
+}
+
+TEST_F(BatchTableTest, ByteOrderMarkOfExcelsCsvUtf8) {
+  ASSERT_TRUE(read("\xEF\xBB\xBFR,H\r\n10,4\r\n")) << error_;
+  ASSERT_EQ(rows_.size(), 1u);
+  EXPECT_EQ(rows_[0].args,
+            (std::vector<std::pair<char, double>>{{'R', 10}, {'H', 4}}));
+}
+
+TEST_F(BatchTableTest, SemicolonsAndDecimalCommas) {
+  ASSERT_TRUE(read("id;R;#500\np1;12,5;-0,25\np2;\"3,5\";1.5\n")) << error_;
+  ASSERT_EQ(rows_.size(), 2u);
+  EXPECT_EQ(rows_[0].args, (std::vector<std::pair<char, double>>{{'R', 12.5}}));
+  EXPECT_EQ(rows_[0].presets,
+            (std::vector<std::pair<double, double>>{{500, -0.25}}));
+  EXPECT_EQ(rows_[1].args, (std::vector<std::pair<char, double>>{{'R', 3.5}}));
+  EXPECT_EQ(rows_[1].presets,
+            (std::vector<std::pair<double, double>>{{500, 1.5}}));
+  // A comma table keeps its decimal points: "1,5" is two cells there.
+  EXPECT_FALSE(read("R,H\n1,5\n1\n"));
+}
+
+TEST_F(BatchTableTest, ColumnsMappedAndIgnored) {
+  ASSERT_TRUE(read("Part,Depth,note,R\nA-1,-4,\"left; check\",5\n",
+                   {{"part", "id"}, {"DEPTH", "Z"}, {"note", ""}}))
+      << error_;
+  ASSERT_EQ(rows_.size(), 1u);
+  EXPECT_EQ(rows_[0].id, "A-1");
+  EXPECT_EQ(rows_[0].args,
+            (std::vector<std::pair<char, double>>{{'Z', -4}, {'R', 5}}));
+  EXPECT_FALSE(read("depth,R\n1,2\n"));
+  EXPECT_NE(error_.find(":1:1: unknown column 'depth'"), std::string::npos)
+      << error_;
+  EXPECT_NE(error_.find("--column 'depth=R' maps it"), std::string::npos);
+  EXPECT_FALSE(read("depth,R\n1,2\n", {{"depth", "Z"}, {"width", "W"}}));
+  EXPECT_NE(error_.find("--column width: the header has no column 'width'"),
+            std::string::npos)
+      << error_;
+  EXPECT_FALSE(read("depth,Z\n1,2\n", {{"depth", "Z"}}));
+  EXPECT_NE(error_.find("column 'Z' appears twice"), std::string::npos)
+      << error_;
 }
 
 TEST_F(BatchTableTest, NumberedIdsArePaddedToTheLargest) {
@@ -75,10 +116,12 @@ TEST_F(BatchTableTest, ErrorsSayWhere) {
       {"R,L\n", ":1:3: 'L' is not a G65 argument (G, L, N, O and P are not); "
                 "use its variable #N instead"},
       {"R,speed\n", ":1:3: unknown column 'speed' (a G65 argument letter "
-                    "such as R, a variable such as #100, or id)"},
+                    "such as R, a variable such as #100, or id; --column "
+                    "'speed=R' maps it, --column 'speed=' ignores it)"},
       {"R,r\n", ":1:3: column 'r' appears twice"},
       {"#0\n", ":1:1: unknown column '#0' (a G65 argument letter such as R, "
-               "a variable such as #100, or id)"},
+               "a variable such as #100, or id; --column '#0=R' maps it, "
+               "--column '#0=' ignores it)"},
       {"R,H\n1,2\n1,2e\n", ":3:3: '2e' is not a number"},
       {"R,H\n1\n", ":2:1: 1 cells, but the header names 2 columns"},
       {"id,R\nx,1\n\"x\",2\n", ":3:1: id 'x' is used twice"},
