@@ -5,7 +5,7 @@ JOBS ?= 2
 DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev libcli11-dev help2man libxxhash-dev googletest libgtest-dev libgmock-dev parallel \
                 pkg-config pybind11-dev python3-dev python3-numpy python3-pandas \
-                python3-dask python3-distributed python3-pytest
+                python3-dask python3-distributed python3-pytest librsvg2-bin python3-pil
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps install-missing build install demo test test-asan fuzz bench difftest check-format \

@@ -31,6 +31,9 @@ extern "C" int mbc_aot_main(int argc, char** argv,
   } catch (const CLI::ParseError& e) {
     error = e.what();
   }
+  if (error.empty()) {
+    error = runOptionsProblem(o);
+  }
   if (!error.empty()) {
     std::fprintf(stderr, "%s: error: %s\n", self, error.c_str());
     std::fprintf(stderr, "%s: note: '%s --help' lists the options\n", self,

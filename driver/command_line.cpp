@@ -433,7 +433,7 @@ std::string checkCombinations(const Options& o) {
   if (o.command == "batch" && (o.paramsPath.empty() || o.outDir.empty())) {
     return "mbc batch needs --params TABLE.csv and --out DIR";
   }
-  return "";
+  return runOptionsProblem(o.run);
 }
 
 int usageError(const std::string& message, const std::string& command) {

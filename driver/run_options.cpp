@@ -67,6 +67,13 @@ bool parseArg(std::string_view text, std::pair<char, double>& out) {
 
 } // namespace
 
+std::string runOptionsProblem(const RunOptions& o) {
+  if (o.svgViewGiven && o.svgPath.empty()) {
+    return "--view chooses the view of --svg, which is not given";
+  }
+  return "";
+}
+
 CLI::Option* addValueOption(CLI::App& app, const std::string& names,
                             const std::string& valueName,
                             const std::string& help, std::string& error,
@@ -103,7 +110,20 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
          "write the variables set at the end as JSON");
     path("--gcode", o.gcodePath,
          "write the flattened program: the motion blocks as plain G-code");
-    path("--svg", o.svgPath, "draw the toolpath as an SVG picture");
+    path("--svg", o.svgPath,
+         "draw the toolpath as an SVG picture: holes, origin, legend, "
+         "feeds coloured by depth");
+    addValueOption(app, "--view", "xy|xz|yz|iso",
+                   "the view --svg draws (default: xy, from above)", error,
+                   [&o](const std::string& v) -> std::string {
+                     o.svgViewGiven = true;
+                     return parseSvgView(v, o.svgView)
+                                ? ""
+                                : fmt::format("unknown view '{}' (xy, xz, yz "
+                                              "or iso)",
+                                              v);
+                   })
+        ->group("Outputs");
     path("--state", o.statePath,
          "keep nonvolatile variables and offsets in this file from run to "
          "run");

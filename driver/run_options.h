@@ -3,6 +3,8 @@
 // arguments, limits, block skip and tracing.
 #pragma once
 
+#include "driver/svg_writer.h"
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -22,8 +24,10 @@ struct RunOptions {
   std::string toolpathPath;
   std::string gcodePath; // the flattened program
   std::string svgPath;   // the toolpath drawn
-  std::string statePath; // nonvolatile variables and offsets, kept
-  bool time = false;     // --time: the phases' wall-clock times
+  SvgView svgView = SvgView::XY;
+  bool svgViewGiven = false; // --view: an error without --svg
+  std::string statePath;     // nonvolatile variables and offsets, kept
+  bool time = false;         // --time: the phases' wall-clock times
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;
@@ -57,6 +61,10 @@ enum class RunOutputs {
 /// Adds the run options to `app`, in the help groups "Run" and "Outputs".
 void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
                    RunOutputs outputs);
+
+/// What is wrong with the run options as a whole ("" when nothing): an
+/// option that would do nothing without another.
+std::string runOptionsProblem(const RunOptions& o);
 
 /// Reads a number the way the C locale writes it, whatever the locale.
 bool parseNumber(std::string_view text, double& out);

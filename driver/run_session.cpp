@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -71,6 +72,20 @@ void printSummary(const mbrt_stats& st, const std::string& program,
     std::fprintf(log, "mbc: note: M99 in the main program ended the run "
                       "(a control would start it again)\n");
   }
+}
+
+/// The pictures' title: program, machine, moves, cycle time, alarm.
+std::string pictureTitle(const RunOptions& o, mbrt_ctx* ctx,
+                         const std::string& program, mbrt_status status) {
+  mbrt_stats st{};
+  mbrt_get_stats(ctx, &st);
+  const std::string machine =
+      o.machinePath.empty()
+          ? std::string("built-in 3-axis mill")
+          : std::filesystem::path(o.machinePath).filename().string();
+  return fmt::format("{} \u00b7 machine {} \u00b7 {} moves \u00b7 cycle {}{}",
+                     program, machine, st.moves, clockText(st.cycle_time),
+                     status != 0 ? " \u00b7 stopped by an alarm" : "");
 }
 
 /// The flattened program is one ISO tape: '%', the blocks, '%'.
@@ -132,7 +147,7 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       return false;
     }
     if (!o.svgPath.empty()) {
-      motions.svg.emplace();
+      motions.svg.emplace(o.svgView);
     }
   }
   if (motions.toolpath.get() != nullptr || motions.svg) {
@@ -253,7 +268,8 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
   if (!o.statePath.empty() && !saveState(ctx, o.statePath)) {
     lost(o.statePath);
   }
-  if (motions.svg && !replaceFile(o.svgPath, motions.svg->document())) {
+  const std::string title = pictureTitle(o, ctx, mainName, st);
+  if (motions.svg && !replaceFile(o.svgPath, motions.svg->document(title))) {
     lost(o.svgPath);
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx, o.varsOutPath)) {

@@ -1,9 +1,12 @@
-// The SVG of --svg. Points are workpiece X and Y with y negated (SVG's y
-// goes down), so a counter-clockwise arc has sweep flag 0. Arcs outside the
-// XY plane are drawn as short lines through points on them; the drawing's
-// box takes every arc's extreme points.
+// The SVG of --svg. Points are the view's u and v in workpiece units with
+// v negated (SVG's y goes down), so an arc that turns counter-clockwise in
+// the view has sweep flag 0. Arcs whose plane is not the view's are drawn
+// as short lines through points on them; the drawing's box takes every
+// arc's extreme points.
 #include "driver/svg_writer.h"
 
+#include "driver/arc_geometry.h"
+#include "driver/xml_text.h"
 #include <mbc/number_text.h>
 
 #include <fmt/format.h>
@@ -20,76 +23,6 @@ namespace {
 
 constexpr int kArcSamples = 64;
 
-int axisNamed(const mbrt_motion& m, char letter) {
-  for (int axis = 0; axis < m.axis_count; ++axis) {
-    if (m.axis_names[axis] == letter) {
-      return axis;
-    }
-  }
-  return -1;
-}
-
-/// An arc's plane axes, radius, start angle and signed sweep.
-struct Arc {
-  int p = -1;
-  int q = -1;
-  double radius = 0.0;
-  double begin = 0.0;
-  double sweep = 0.0; // > 0 counter-clockwise
-};
-
-Arc arcOf(const mbrt_motion& m) {
-  Arc arc;
-  arc.p = axisNamed(m, m.center_axes[0]);
-  arc.q = axisNamed(m, m.center_axes[1]);
-  const double sx = m.start[arc.p] - m.center[0];
-  const double sy = m.start[arc.q] - m.center[1];
-  const double ex = m.end[arc.p] - m.center[0];
-  const double ey = m.end[arc.q] - m.center[1];
-  arc.radius = std::hypot(sx, sy);
-  arc.begin = std::atan2(sy, sx);
-  const bool ccw = m.kind == MBRT_MOTION_CCW;
-  double sweep =
-      ccw ? std::atan2(ey, ex) - arc.begin : arc.begin - std::atan2(ey, ex);
-  constexpr double kTurn = 2.0 * std::numbers::pi;
-  sweep = std::fmod(sweep + 2.0 * kTurn, kTurn);
-  if (sweep < 1e-12) {
-    sweep = kTurn; // start == end: a full circle
-  }
-  arc.sweep = ccw ? sweep : -sweep;
-  return arc;
-}
-
-/// The point at fraction t of an arc: round in its plane, straight (helix)
-/// on the other axes.
-std::array<double, MBRT_MAX_AXES> arcPoint(const mbrt_motion& m, const Arc& arc,
-                                           double t) {
-  std::array<double, MBRT_MAX_AXES> point{};
-  for (int axis = 0; axis < m.axis_count; ++axis) {
-    point[axis] = m.start[axis] + t * (m.end[axis] - m.start[axis]);
-  }
-  const double angle = arc.begin + t * arc.sweep;
-  point[arc.p] = m.center[0] + arc.radius * std::cos(angle);
-  point[arc.q] = m.center[1] + arc.radius * std::sin(angle);
-  return point;
-}
-
-/// Where an arc passes 0, 90, 180 or 270 degrees, as fractions of it.
-std::vector<double> extremes(const Arc& arc) {
-  std::vector<double> fractions;
-  constexpr double kTurn = 2.0 * std::numbers::pi;
-  for (int quarter = 0; quarter < 4; ++quarter) {
-    const double angle = quarter * kTurn / 4.0;
-    const double ahead = arc.sweep > 0 ? angle - arc.begin : arc.begin - angle;
-    const double t =
-        std::fmod(ahead + 2.0 * kTurn, kTurn) / std::fabs(arc.sweep);
-    if (t <= 1.0) {
-      fractions.push_back(t);
-    }
-  }
-  return fractions;
-}
-
 std::string number(double value) {
   return trimmedFixed(value, 4);
 }
@@ -105,30 +38,225 @@ double niceLength(double limit) {
   return power;
 }
 
+// The colours of feeds and arcs: light at the top of the cut, dark at its
+// bottom.
+struct Ramp {
+  std::array<int, 3> light;
+  std::array<int, 3> dark;
+
+  std::string at(double t) const {
+    std::array<int, 3> c{};
+    for (int i = 0; i < 3; ++i) {
+      c[i] = static_cast<int>(std::lround(light[i] + t * (dark[i] - light[i])));
+    }
+    return fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+  }
+};
+
+constexpr Ramp kFeedRamp{{107, 174, 214}, {8, 48, 107}};
+constexpr Ramp kArcRamp{{188, 155, 224}, {74, 20, 134}};
+constexpr int kDepthLevels = 6;
+// The shade of a cut at one depth, and of the legend's samples.
+constexpr int kSingleDepthLevel = 3;
+
+// The view's axis letters along u and v; none for the isometric view.
+std::pair<char, char> viewAxes(SvgView view) {
+  switch (view) {
+    case SvgView::XY:
+      return {'X', 'Y'};
+    case SvgView::XZ:
+      return {'X', 'Z'};
+    case SvgView::YZ:
+      return {'Y', 'Z'};
+    case SvgView::Iso:
+      break;
+  }
+  return {0, 0};
+}
+
+const char* viewName(SvgView view) {
+  switch (view) {
+    case SvgView::XY:
+      return "XY";
+    case SvgView::XZ:
+      return "XZ";
+    case SvgView::YZ:
+      return "YZ";
+    case SvgView::Iso:
+      break;
+  }
+  return "isometric";
+}
+
+// X, Y and Z in the view: u right, v up. The isometric view looks from
+// the front right above: X runs right and down, Y right and up, Z up.
+std::pair<double, double> toView(SvgView view, double x, double y, double z) {
+  switch (view) {
+    case SvgView::XY:
+      return {x, y};
+    case SvgView::XZ:
+      return {x, z};
+    case SvgView::YZ:
+      return {y, z};
+    case SvgView::Iso:
+      break;
+  }
+  const double c = std::cos(std::numbers::pi / 6.0);
+  return {(x + y) * c, (y - x) * 0.5 + z};
+}
+
+// The mark of a hole: a ring with a cross, centred at (x, y) in SVG
+// coordinates.
+std::string holeMark(double x, double y, double font, double pixel) {
+  const double r = 0.45 * font;
+  return fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"#fff\" "
+                     "stroke=\"#c0392b\" stroke-width=\"{}\"/>"
+                     "<path d=\"M{} {}h{}M{} {}v{}\" stroke=\"#c0392b\" "
+                     "stroke-width=\"{}\"/>",
+                     number(x), number(y), number(r), number(1.2 * pixel),
+                     number(x - r), number(y), number(2 * r), number(x),
+                     number(y - r), number(2 * r), number(0.8 * pixel));
+}
+
 } // namespace
 
-void SvgWriter::include(double x, double y) {
-  minX_ = haveBox_ ? std::min(minX_, x) : x;
-  maxX_ = haveBox_ ? std::max(maxX_, x) : x;
-  minY_ = haveBox_ ? std::min(minY_, y) : y;
-  maxY_ = haveBox_ ? std::max(maxY_, y) : y;
+bool parseSvgView(std::string_view text, SvgView& view) {
+  constexpr std::pair<std::string_view, SvgView> kViews[] = {
+      {"xy", SvgView::XY},
+      {"xz", SvgView::XZ},
+      {"yz", SvgView::YZ},
+      {"iso", SvgView::Iso}};
+  for (const auto& [name, v] : kViews) {
+    if (text == name) {
+      view = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+SvgWriter::Point SvgWriter::project(const double* point,
+                                    const mbrt_motion& m) const {
+  const int x = axisNamed(m, 'X');
+  const int y = axisNamed(m, 'Y');
+  const int z = axisNamed(m, 'Z');
+  const auto [u, v] = toView(view_, x >= 0 ? point[x] : 0.0,
+                             y >= 0 ? point[y] : 0.0, z >= 0 ? point[z] : 0.0);
+  return {u, v};
+}
+
+void SvgWriter::include(Point p) {
+  minU_ = haveBox_ ? std::min(minU_, p.u) : p.u;
+  maxU_ = haveBox_ ? std::max(maxU_, p.u) : p.u;
+  minV_ = haveBox_ ? std::min(minV_, p.v) : p.v;
+  maxV_ = haveBox_ ? std::max(maxV_, p.v) : p.v;
   haveBox_ = true;
 }
 
-void SvgWriter::moveTo(bool rapid, double x, double y) {
-  std::string& path = rapid ? rapids_ : feeds_;
-  Pen& pen = rapid ? rapidPen_ : feedPen_;
-  if (!pen.open || pen.x != x || pen.y != y) {
-    path += fmt::format("M{} {}", number(x), number(-y));
+std::size_t SvgWriter::add(const mbrt_motion& m) {
+  const std::size_t before = rapids_.size() + programmed_.size() +
+                             feeds_.size() * sizeof(Piece) +
+                             holes_.size() * sizeof(Hole);
+  unit_ = m.decimals == 4 ? "inch" : "mm";
+  const int x = axisNamed(m, 'X');
+  const int y = axisNamed(m, 'Y');
+  if (view_ == SvgView::XY && x >= 0 && y >= 0) {
+    drawProgrammed(m, x, y);
   }
-  include(x, y);
+  const Point start = project(m.start, m);
+  const Point end = project(m.end, m);
+  include(start);
+  include(end);
+  std::size_t grown = 0;
+  if (m.kind == MBRT_MOTION_RAPID) {
+    if (!rapidPen_.open || rapidPen_.x != start.u || rapidPen_.y != start.v) {
+      rapids_ += fmt::format("M{} {}", number(start.u), number(-start.v));
+    }
+    rapids_ += fmt::format("L{} {}", number(end.u), number(-end.v));
+    rapidPen_ = {true, end.u, end.v};
+  } else {
+    const int z = axisNamed(m, 'Z');
+    Piece piece;
+    piece.depth = z >= 0 ? std::min(m.start[z], m.end[z]) : 0.0;
+    piece.arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
+    piece.d = fmt::format("M{} {}", number(start.u), number(-start.v));
+    if (piece.arc) {
+      drawArc(m, piece.d);
+    } else {
+      piece.d += fmt::format("L{} {}", number(end.u), number(-end.v));
+      recordHole(m);
+    }
+    grown = piece.d.size();
+    feeds_.push_back(std::move(piece));
+  }
+  return rapids_.size() + programmed_.size() + feeds_.size() * sizeof(Piece) +
+         holes_.size() * sizeof(Hole) + grown - before;
 }
 
-std::size_t SvgWriter::add(const mbrt_motion& m) {
-  const std::size_t before =
-      rapids_.size() + feeds_.size() + programmed_.size();
-  draw(m);
-  return rapids_.size() + feeds_.size() + programmed_.size() - before;
+void SvgWriter::drawArc(const mbrt_motion& m, std::string& d) {
+  const Arc arc = arcOf(m);
+  const auto [uAxis, vAxis] = viewAxes(view_);
+  // +1 when the arc's plane axes are the view's in order, -1 swapped (a
+  // G18 arc in the XZ view turns the other way there), 0 not flat.
+  const int turn = m.center_axes[0] == uAxis && m.center_axes[1] == vAxis   ? 1
+                   : m.center_axes[0] == vAxis && m.center_axes[1] == uAxis ? -1
+                                                                            : 0;
+  const bool flat = turn != 0;
+  for (const double t : extremes(arc)) {
+    include(project(arcPoint(m, arc, t).data(), m));
+  }
+  for (int i = 1; i <= kArcSamples; ++i) {
+    const Point p = project(
+        arcPoint(m, arc, static_cast<double>(i) / kArcSamples).data(), m);
+    include(p);
+    if (!flat) {
+      d += fmt::format("L{} {}", number(p.u), number(-p.v));
+    }
+  }
+  if (!flat) {
+    return;
+  }
+  // SVG draws no full circle in one arc: two halves.
+  const bool full = std::fabs(arc.sweep) >= 2.0 * std::numbers::pi;
+  const int sweepFlag = (arc.sweep > 0) == (turn > 0) ? 0 : 1;
+  const std::string radius = number(arc.radius);
+  if (full) {
+    const Point half = project(arcPoint(m, arc, 0.5).data(), m);
+    d += fmt::format("A{} {} 0 0 {} {} {}", radius, radius, sweepFlag,
+                     number(half.u), number(-half.v));
+  }
+  const Point end = project(m.end, m);
+  const int large = !full && std::fabs(arc.sweep) > std::numbers::pi;
+  d += fmt::format("A{} {} 0 {} {} {} {}", radius, radius, large, sweepFlag,
+                   number(end.u), number(-end.v));
+}
+
+void SvgWriter::recordHole(const mbrt_motion& m) {
+  const int x = axisNamed(m, 'X');
+  const int y = axisNamed(m, 'Y');
+  const int z = axisNamed(m, 'Z');
+  if (z < 0 || !(m.end[z] < m.start[z])) {
+    return;
+  }
+  for (int axis = 0; axis < m.axis_count; ++axis) {
+    if (axis != z && m.end[axis] != m.start[axis]) {
+      return; // not along Z alone
+    }
+  }
+  const double hx = x >= 0 ? m.end[x] : 0.0;
+  const double hy = y >= 0 ? m.end[y] : 0.0;
+  const std::pair<long long, long long> key{std::llround(hx * 1e3),
+                                            std::llround(hy * 1e3)};
+  const auto [it, added] =
+      holes_.try_emplace(key, Hole{project(m.end, m), m.start[z], m.end[z]});
+  Hole& hole = it->second;
+  if (!added) {
+    hole.top = std::max(hole.top, m.start[z]);
+    if (m.end[z] < hole.bottom) {
+      hole.bottom = m.end[z];
+      hole.at = project(m.end, m);
+    }
+  }
 }
 
 void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
@@ -137,14 +265,10 @@ void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
   if (!programmedPen_.open) {
     programmed_ +=
         fmt::format("M{} {}", number(m.start[x]), number(-m.start[y]));
-    lowX_ = highX_ = m.start[x];
-    lowY_ = highY_ = m.start[y];
   }
   compensated_ = compensated_ || px != m.end[x] || py != m.end[y];
-  lowX_ = std::min(lowX_, px);
-  highX_ = std::max(highX_, px);
-  lowY_ = std::min(lowY_, py);
-  highY_ = std::max(highY_, py);
+  // Under a pocket's tool path lies its outline: the box takes it too.
+  include({px, py});
   const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
   const Arc toolArc = arc ? arcOf(m) : Arc{};
   const bool flat = arc && toolArc.p == x && toolArc.q == y;
@@ -179,82 +303,147 @@ void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
   programmedPen_ = {true, px, py};
 }
 
-void SvgWriter::draw(const mbrt_motion& m) {
-  const int x = axisNamed(m, 'X');
-  const int y = axisNamed(m, 'Y');
-  if (x < 0 || y < 0) {
-    return;
+double SvgWriter::depthTop() const {
+  double top = feeds_.empty() ? 0.0 : feeds_.front().depth;
+  for (const Piece& p : feeds_) {
+    top = std::max(top, p.depth);
   }
-  unit_ = m.decimals == 4 ? "inch" : "mm";
-  drawProgrammed(m, x, y);
-  const bool rapid = m.kind == MBRT_MOTION_RAPID;
-  std::string& path = rapid ? rapids_ : feeds_;
-  moveTo(rapid, m.start[x], m.start[y]);
-  if (m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW) {
-    const Arc arc = arcOf(m);
-    const bool flat = arc.p == x && arc.q == y;
-    for (const double t : extremes(arc)) {
-      const auto point = arcPoint(m, arc, t);
-      include(point[x], point[y]);
-    }
-    for (int i = 1; i <= kArcSamples; ++i) {
-      const auto point = arcPoint(m, arc, static_cast<double>(i) / kArcSamples);
-      include(point[x], point[y]);
-      if (!flat) {
-        path += fmt::format("L{} {}", number(point[x]), number(-point[y]));
-      }
-    }
-    if (flat) {
-      // SVG draws no full circle in one arc: two halves.
-      const bool full = std::fabs(arc.sweep) >= 2.0 * std::numbers::pi;
-      const int sweepFlag = arc.sweep > 0 ? 0 : 1;
-      const std::string radius = number(arc.radius);
-      if (full) {
-        const auto half = arcPoint(m, arc, 0.5);
-        path += fmt::format("A{} {} 0 0 {} {} {}", radius, radius, sweepFlag,
-                            number(half[x]), number(-half[y]));
-      }
-      const int large = !full && std::fabs(arc.sweep) > std::numbers::pi;
-      path += fmt::format("A{} {} 0 {} {} {} {}", radius, radius, large,
-                          sweepFlag, number(m.end[x]), number(-m.end[y]));
-    }
-  } else {
-    path += fmt::format("L{} {}", number(m.end[x]), number(-m.end[y]));
-  }
-  include(m.end[x], m.end[y]);
-  Pen& pen = rapid ? rapidPen_ : feedPen_;
-  pen = {true, m.end[x], m.end[y]};
+  return top;
 }
 
-std::string SvgWriter::document() const {
-  // Under a pocket's tool path lies its outline: the box takes it too.
-  const double minX = compensated_ ? std::min(minX_, lowX_) : minX_;
-  const double maxX = compensated_ ? std::max(maxX_, highX_) : maxX_;
-  const double minY = compensated_ ? std::min(minY_, lowY_) : minY_;
-  const double maxY = compensated_ ? std::max(maxY_, highY_) : maxY_;
-  const double width = maxX - minX;
-  const double height = maxY - minY;
+double SvgWriter::depthBottom() const {
+  double bottom = feeds_.empty() ? 0.0 : feeds_.front().depth;
+  for (const Piece& p : feeds_) {
+    bottom = std::min(bottom, p.depth);
+  }
+  return bottom;
+}
+
+std::string SvgWriter::legend(double x, double y, double font,
+                              double pixel) const {
+  // Each entry: a sample 2 fonts long, its name, a gap.
+  const auto advance = [font](std::string_view name) {
+    return font * (2.6 + 0.55 * static_cast<double>(name.size()) + 1.0);
+  };
+  const auto label = [&](double at, std::string_view name) {
+    return fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\">{}</text>",
+                       number(at + 2.4 * font), number(y + 0.35 * font),
+                       number(0.8 * font), name);
+  };
+  const std::string width = number(1.6 * pixel);
+  std::string out = "<g class=\"legend\" font-family=\"sans-serif\">";
+  out +=
+      fmt::format("<path d=\"M{} {}h{}\" stroke=\"#888\" stroke-width=\"{}\" "
+                  "stroke-dasharray=\"{} {}\"/>",
+                  number(x), number(y), number(2 * font), width,
+                  number(6 * pixel), number(4 * pixel)) +
+      label(x, "rapid");
+  x += advance("rapid");
+  out += fmt::format(
+             "<path d=\"M{} {}h{}\" stroke=\"{}\" stroke-width=\"{}\"/>",
+             number(x), number(y), number(2 * font),
+             kFeedRamp.at(kSingleDepthLevel / (kDepthLevels - 1.0)), width) +
+         label(x, "feed");
+  x += advance("feed");
+  out += fmt::format("<path d=\"M{} {}a{} {} 0 0 1 {} 0\" fill=\"none\" "
+                     "stroke=\"{}\" stroke-width=\"{}\"/>",
+                     number(x), number(y + 0.4 * font), number(font),
+                     number(font), number(2 * font),
+                     kArcRamp.at(kSingleDepthLevel / (kDepthLevels - 1.0)),
+                     width) +
+         label(x, "arc");
+  x += advance("arc");
+  out += holeMark(x + font, y, font, pixel) + label(x, "plunge, depth");
+  x += advance("plunge, depth");
+  // The depth scale: its top and bottom, the colours between.
+  const double top = depthTop(), bottom = depthBottom();
+  out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\">Z {}</text>",
+                     number(x), number(y + 0.35 * font), number(0.8 * font),
+                     number(top));
+  x += font * (1.5 + 0.45 * static_cast<double>(number(top).size()));
+  // A cut at one depth has one colour: one swatch and no bottom.
+  const bool oneDepth = top - bottom <= 1e-9;
+  for (int k = oneDepth ? kSingleDepthLevel : 0;
+       k < (oneDepth ? kSingleDepthLevel + 1 : kDepthLevels); ++k) {
+    out +=
+        fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" "
+                    "fill=\"{}\"/>",
+                    number(x), number(y - 0.4 * font), number(0.8 * font),
+                    number(0.8 * font), kFeedRamp.at(k / (kDepthLevels - 1.0)));
+    x += 0.8 * font;
+  }
+  if (!oneDepth) {
+    out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\">{}</text>",
+                       number(x + 0.4 * font), number(y + 0.35 * font),
+                       number(0.8 * font), number(bottom));
+  }
+  return out + "</g>\n";
+}
+
+std::string SvgWriter::document(const std::string& title) const {
+  // The work origin and its axes are part of the picture.
+  const double anyU = haveBox_ ? minU_ : 0.0, anyV = haveBox_ ? minV_ : 0.0;
+  double minU = std::min(anyU, 0.0), maxU = std::max(haveBox_ ? maxU_ : 0, 0.0);
+  double minV = std::min(anyV, 0.0), maxV = std::max(haveBox_ ? maxV_ : 0, 0.0);
+  const double axisLength =
+      niceLength(std::max({maxU - minU, maxV - minV, 1.0}) / 8.0);
+  std::string axes;
+  const char* names = "XYZ";
+  const char* colors[] = {"#d62728", "#2ca02c", "#1f77b4"};
+  std::vector<std::pair<int, Point>> tips;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto [u, v] =
+        toView(view_, axis == 0 ? axisLength : 0.0,
+               axis == 1 ? axisLength : 0.0, axis == 2 ? axisLength : 0.0);
+    if (std::hypot(u, v) > axisLength * 1e-6) {
+      tips.push_back({axis, {u, v}});
+      minU = std::min(minU, u);
+      maxU = std::max(maxU, u);
+      minV = std::min(minV, v);
+      maxV = std::max(maxV, v);
+    }
+  }
+  const double width = maxU - minU;
+  const double height = maxV - minV;
   const double size = std::max({width, height, 1.0});
   const double margin = size * 0.05;
   const double font = size * 0.025;
-  const double bar = niceLength(size / 4.0);
-  // The scale sits under the drawing: in SVG coordinates below -minY.
-  const double barY = -minY + margin + font;
-  const double left = minX - margin;
-  const double top = -maxY - margin;
-  const double viewWidth = width + 2.0 * margin;
-  const double viewHeight = height + 3.0 * margin + 2.0 * font;
+  const double titleBand = 2.0 * font;
+  const double legendBand = 4.5 * font;
+  const double left = minU - margin;
+  const double top = -maxV - margin - titleBand;
+  const double viewWidth = size + 2.0 * margin;
+  const double viewHeight = height + 2.0 * margin + titleBand + legendBand;
+  // Strokes and dashes in drawing units, one per pixel of the 800 wide
+  // picture, so that every renderer draws them alike.
+  const double pixel = viewWidth / 800.0;
   std::string svg = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\" "
       "width=\"800\" height=\"{}\">\n",
       number(left), number(top), number(viewWidth), number(viewHeight),
       number(800.0 * viewHeight / viewWidth));
-  // Strokes and dashes in drawing units, one per pixel of the 800 wide
-  // picture, so that every renderer draws them alike.
-  const double pixel = viewWidth / 800.0;
+  svg += fmt::format("<rect class=\"paper\" x=\"{}\" y=\"{}\" width=\"{}\" "
+                     "height=\"{}\" fill=\"#fff\"/>\n",
+                     number(left), number(top), number(viewWidth),
+                     number(viewHeight));
+  // The grid: lines at a round spacing over the drawing.
+  const double spacing = niceLength(size / 8.0);
+  std::string grid;
+  for (double u = std::ceil(minU / spacing) * spacing; u <= maxU + 1e-9;
+       u += spacing) {
+    grid += fmt::format("M{} {}V{}", number(u), number(-maxV), number(-minV));
+  }
+  for (double v = std::ceil(minV / spacing) * spacing; v <= maxV + 1e-9;
+       v += spacing) {
+    grid += fmt::format("M{} {}H{}", number(minU), number(-v), number(maxU));
+  }
+  svg += fmt::format("<path class=\"grid\" fill=\"none\" stroke=\"#e4e4e4\" "
+                     "stroke-width=\"{}\" d=\"{}\"/>\n",
+                     number(0.8 * pixel), grid);
   const std::string stroke =
-      fmt::format("fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
-                  number(1.2 * pixel));
+      fmt::format("fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\" "
+                  "stroke-linecap=\"round\"",
+                  number(1.4 * pixel));
   svg += fmt::format("<path class=\"rapid\" {} stroke=\"#888\" "
                      "stroke-dasharray=\"{} {}\" d=\"{}\"/>\n",
                      stroke, number(6.0 * pixel), number(4.0 * pixel), rapids_);
@@ -266,16 +455,84 @@ std::string SvgWriter::document() const {
                        number(0.8 * pixel), number(2.0 * pixel),
                        number(2.0 * pixel), programmed_);
   }
-  svg += fmt::format("<path class=\"feed\" {} stroke=\"#0057b8\" d=\"{}\"/>\n",
-                     stroke, feeds_);
+  // Feeds and arcs by depth: one path per colour, the deepest drawn last.
+  const double depthTopZ = depthTop(), depthBottomZ = depthBottom();
+  const double range = depthTopZ - depthBottomZ;
+  for (int arc = 0; arc < 2; ++arc) {
+    std::array<std::string, kDepthLevels> levels;
+    for (const Piece& p : feeds_) {
+      if (p.arc == (arc == 1)) {
+        const int k =
+            range > 1e-9
+                ? static_cast<int>(std::lround((depthTopZ - p.depth) / range *
+                                               (kDepthLevels - 1)))
+                : kSingleDepthLevel;
+        levels[static_cast<std::size_t>(k)] += p.d;
+      }
+    }
+    for (int k = 0; k < kDepthLevels; ++k) {
+      const std::string& d = levels[static_cast<std::size_t>(k)];
+      if (!d.empty()) {
+        svg += fmt::format(
+            "<path class=\"{}\" {} stroke=\"{}\" d=\"{}\"/>\n",
+            arc ? "arc" : "feed", stroke,
+            (arc ? kArcRamp : kFeedRamp).at(k / (kDepthLevels - 1.0)), d);
+      }
+    }
+  }
+  // The holes, with their depth while there are few enough to read.
+  const bool labelled = holes_.size() <= 60;
+  for (const auto& [key, hole] : holes_) {
+    svg += "<g class=\"hole\">" + holeMark(hole.at.u, -hole.at.v, font, pixel);
+    if (labelled) {
+      svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" "
+                         "font-family=\"sans-serif\" fill=\"#a02020\">Z{}"
+                         "</text>",
+                         number(hole.at.u + 0.6 * font),
+                         number(-hole.at.v - 0.6 * font), number(0.7 * font),
+                         number(hole.bottom));
+    }
+    svg += "</g>\n";
+  }
+  // The work origin and its axes.
+  svg += "<g class=\"axes\" font-family=\"sans-serif\">";
+  for (const auto& [axis, tip] : tips) {
+    // An arrowhead at the tip: back along the axis, out to either side.
+    const double length = std::hypot(tip.u, tip.v);
+    const double du = tip.u / length, dv = -tip.v / length;
+    const double backU = tip.u - 0.6 * font * du;
+    const double backV = -tip.v - 0.6 * font * dv;
+    svg += fmt::format(
+        "<path d=\"M0 0L{} {}\" stroke=\"{}\" stroke-width=\"{}\"/>"
+        "<path d=\"M{} {}L{} {}L{} {}Z\" fill=\"{}\"/>"
+        "<text x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"{}\">{}</text>",
+        number(tip.u), number(-tip.v), colors[axis], number(1.6 * pixel),
+        number(tip.u), number(-tip.v), number(backU - 0.25 * font * dv),
+        number(backV + 0.25 * font * du), number(backU + 0.25 * font * dv),
+        number(backV - 0.25 * font * du), colors[axis],
+        number(tip.u + 0.3 * font), number(-tip.v - 0.3 * font),
+        number(0.8 * font), colors[axis], names[axis]);
+  }
+  svg += fmt::format("<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"#000\"/></g>\n",
+                     number(3.0 * pixel));
+  svg += fmt::format(
+      "<text class=\"title\" x=\"{}\" y=\"{}\" font-size=\"{}\" "
+      "font-family=\"sans-serif\" font-weight=\"bold\">{}</text>\n",
+      number(left + margin), number(top + 1.3 * font), number(0.9 * font),
+      xmlEscaped(title.empty() ? std::string("toolpath") : title));
+  // Under the drawing: the legend, then the scale and the view.
+  const double legendY = -minV + margin + 1.2 * font;
+  svg += legend(minU, legendY, font, pixel);
+  const double barY = legendY + 2.2 * font;
+  const double bar = niceLength(size / 4.0);
   svg += fmt::format("<path class=\"scale\" {} stroke=\"#000\" "
                      "d=\"M{} {}v{}h{}v{}\"/>\n",
-                     stroke, number(minX), number(barY - font * 0.3),
+                     stroke, number(minU), number(barY - font * 0.3),
                      number(font * 0.3), number(bar), number(-font * 0.3));
   svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" "
-                     "font-family=\"sans-serif\">{} {}</text>\n",
-                     number(minX + bar + font * 0.5), number(barY + font * 0.3),
-                     number(font), number(bar), unit_);
+                     "font-family=\"sans-serif\">{} {}; view {}</text>\n",
+                     number(minU + bar + font * 0.5), number(barY + font * 0.3),
+                     number(0.8 * font), number(bar), unit_, viewName(view_));
   svg += "</svg>\n";
   return svg;
 }

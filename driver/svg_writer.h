@@ -1,27 +1,68 @@
-// `mbc run --svg`: the toolpath drawn in the XY plane of the workpiece
-// coordinates, rapids dashed, feeds solid, XY arcs as arcs, with a scale;
-// under cutter compensation the programmed contour beside the tool centre.
+// `mbc run --svg`: the toolpath drawn in one view of the workpiece
+// coordinates (XY, XZ, YZ or isometric): rapids dashed, feeds and arcs
+// coloured by depth, the holes where the tool plunges marked with their
+// depth, the work origin and its axes, a grid, a title, a legend and a
+// scale; under cutter compensation, in the XY view, the programmed contour
+// beside the tool centre.
 #pragma once
 
 #include <mbc/runtime.h>
 
+#include <array>
+#include <map>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 namespace mbc::driver {
 
+enum class SvgView { XY, XZ, YZ, Iso };
+
+/// "xy", "xz", "yz" or "iso"; false for anything else.
+bool parseSvgView(std::string_view text, SvgView& view);
+
 class SvgWriter {
 public:
+  explicit SvgWriter(SvgView view = SvgView::XY) : view_(view) {}
+
   /// Records one move; returns the bytes the drawing grew by.
   std::size_t add(const mbrt_motion& m);
 
-  /// The whole drawing; it fits the moves with a margin.
-  std::string document() const;
+  /// The whole drawing under a title line; it fits the moves, the holes
+  /// and the origin with a margin.
+  std::string document(const std::string& title = "") const;
 
 private:
-  void draw(const mbrt_motion& m);
+  /// A point of the view: u to the right, v up.
+  struct Point {
+    double u = 0.0;
+    double v = 0.0;
+  };
+
+  /// A feed move's path data and the depth it is coloured by.
+  struct Piece {
+    double depth = 0.0;
+    bool arc = false;
+    std::string d;
+  };
+
+  /// Where the tool went down along Z alone: its top and its bottom.
+  struct Hole {
+    Point at; // the bottom, in the view
+    double top = 0.0;
+    double bottom = 0.0;
+  };
+
+  Point project(const double* point, const mbrt_motion& m) const;
+  void drawArc(const mbrt_motion& m, std::string& d);
   void drawProgrammed(const mbrt_motion& m, int x, int y);
-  void include(double x, double y);
-  void moveTo(bool rapid, double x, double y);
+  void recordHole(const mbrt_motion& m);
+  void include(Point p);
+  std::string legend(double x, double y, double font, double pixel) const;
+  /// The highest and the lowest depth of the feeds (0 without feeds).
+  double depthTop() const;
+  double depthBottom() const;
 
   /// Where a path's last segment ended.
   struct Pen {
@@ -30,16 +71,16 @@ private:
     double y = 0.0;
   };
 
+  SvgView view_;
   std::string rapids_; // path data, SVG coordinates (y down)
-  std::string feeds_;
-  std::string programmed_; // the programmed points, drawn if compensated_
   Pen rapidPen_;
-  Pen feedPen_;
+  std::vector<Piece> feeds_;
+  std::map<std::pair<long long, long long>, Hole> holes_; // by X, Y in um
+  std::string programmed_; // the programmed points, drawn if compensated_
   Pen programmedPen_;
   bool compensated_ = false; // a move's end is not its programmed point
-  double lowX_ = 0, highX_ = 0, lowY_ = 0, highY_ = 0; // programmed box
   bool haveBox_ = false;
-  double minX_ = 0, maxX_ = 0, minY_ = 0, maxY_ = 0;
+  double minU_ = 0, maxU_ = 0, minV_ = 0, maxV_ = 0;
   const char* unit_ = "mm";
 };
 

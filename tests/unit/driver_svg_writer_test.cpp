@@ -1,5 +1,6 @@
-// --svg (driver/svg_writer.cpp): path data for lines and arcs, the box
-// that holds every arc, and the scale.
+// --svg (driver/svg_writer.cpp): path data for lines and arcs in each view,
+// the box that holds every arc and the origin, holes, depth colours, the
+// axes and the scale.
 #include "driver/svg_writer.h"
 
 #include <gtest/gtest.h>
@@ -27,15 +28,16 @@ mbrt_motion move(int kind, double x0, double y0, double x1, double y1) {
   return m;
 }
 
-std::string drawing(std::initializer_list<mbrt_motion> moves) {
-  SvgWriter svg;
+std::string drawing(std::initializer_list<mbrt_motion> moves,
+                    SvgView view = SvgView::XY) {
+  SvgWriter svg(view);
   for (const mbrt_motion& m : moves) {
     svg.add(m);
   }
-  return svg.document();
+  return svg.document("O1 \"test\" <1>");
 }
 
-TEST(SvgWriter, RapidsDashedFeedsSolidOnePathEach) {
+TEST(SvgWriter, RapidsDashedFeedsSolidTitled) {
   const std::string svg = drawing({move(MBRT_MOTION_RAPID, 0, 0, 10, 0),
                                    move(MBRT_MOTION_LINEAR, 10, 0, 10, 5),
                                    move(MBRT_MOTION_LINEAR, 10, 5, 0, 5),
@@ -43,7 +45,9 @@ TEST(SvgWriter, RapidsDashedFeedsSolidOnePathEach) {
   EXPECT_NE(svg.find("class=\"rapid\""), std::string::npos);
   EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
   EXPECT_NE(svg.find("d=\"M0 0L10 0M0 -5L0 0\""), std::string::npos) << svg;
-  EXPECT_NE(svg.find("d=\"M10 0L10 -5L0 -5\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("d=\"M10 0L10 -5M10 -5L0 -5\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">O1 \"test\" &lt;1&gt;</text>"), std::string::npos)
+      << svg;
 }
 
 TEST(SvgWriter, ArcsAreArcsAndTheBoxHoldsThem) {
@@ -56,10 +60,11 @@ TEST(SvgWriter, ArcsAreArcsAndTheBoxHoldsThem) {
   // A full circle: two halves, clockwise (flag 1).
   EXPECT_NE(svg.find("A10 10 0 0 1 -30 0A10 10 0 0 1 -10 0"), std::string::npos)
       << svg;
-  // X -30..10, Y -10..10, a 5% margin of the larger side (40), and room
-  // for the scale below.
-  EXPECT_NE(svg.find("viewBox=\"-32 -12 44 28\""), std::string::npos) << svg;
-  EXPECT_NE(svg.find(">10 mm</text>"), std::string::npos) << svg;
+  // X -30..10, Y -10..10 (the origin and its axes 5 long inside), a 5%
+  // margin of the larger side (40), a title band (2 fonts of 1) above and
+  // the legend and the scale (4.5 fonts) below.
+  EXPECT_NE(svg.find("viewBox=\"-32 -14 44 30.5\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">10 mm; view XY</text>"), std::string::npos) << svg;
 }
 
 TEST(SvgWriter, ArcsInOtherPlanesAreLinesThroughTheirPoints) {
@@ -73,6 +78,60 @@ TEST(SvgWriter, ArcsInOtherPlanesAreLinesThroughTheirPoints) {
   const std::string svg = drawing({arc});
   EXPECT_NE(svg.find("L5 0\""), std::string::npos) << svg;
   EXPECT_EQ(svg.find(" A"), std::string::npos);
+  // In the XZ view it is an arc: G18's Z, X is the view's X, Z swapped, so
+  // three quarters clockwise about Y turn counter-clockwise there.
+  const std::string side = drawing({arc}, SvgView::XZ);
+  EXPECT_NE(side.find("M0 -5A5 5 0 1 0 5 0\""), std::string::npos) << side;
+}
+
+TEST(SvgWriter, PlungesAreHolesWithTheirDepth) {
+  mbrt_motion down = move(MBRT_MOTION_LINEAR, 10, 5, 10, 5);
+  down.start[2] = 2;
+  down.end[2] = -3;
+  mbrt_motion peck = down;
+  peck.start[2] = -3;
+  peck.end[2] = -8;
+  mbrt_motion other = move(MBRT_MOTION_LINEAR, 20, 5, 20, 5);
+  other.start[2] = 2;
+  other.end[2] = -4;
+  mbrt_motion slanted = move(MBRT_MOTION_LINEAR, 0, 0, 1, 0);
+  slanted.end[2] = -1;
+  const std::string svg = drawing({down, peck, other, slanted});
+  std::size_t holes = 0;
+  for (std::size_t at = svg.find("class=\"hole\""); at != std::string::npos;
+       at = svg.find("class=\"hole\"", at + 1)) {
+    ++holes;
+  }
+  EXPECT_EQ(holes, 2u) << svg;
+  EXPECT_NE(svg.find(">Z-8</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">Z-4</text>"), std::string::npos) << svg;
+}
+
+TEST(SvgWriter, FeedsColouredByDepthAndTheAxesOfTheView) {
+  mbrt_motion high = move(MBRT_MOTION_LINEAR, 0, 0, 10, 0);
+  mbrt_motion low = move(MBRT_MOTION_LINEAR, 10, 0, 10, 10);
+  low.start[2] = low.end[2] = -10;
+  const std::string top = drawing({high, low});
+  EXPECT_NE(top.find("stroke=\"#6baed6\" d=\"M0 0L10 0\""), std::string::npos)
+      << top;
+  EXPECT_NE(top.find("stroke=\"#08306b\" d=\"M10 0L10 -10\""),
+            std::string::npos)
+      << top;
+  EXPECT_NE(top.find(">X</text>"), std::string::npos);
+  EXPECT_NE(top.find(">Y</text>"), std::string::npos);
+  EXPECT_EQ(top.find(">Z</text>"), std::string::npos);
+  const std::string side = drawing({high, low}, SvgView::XZ);
+  EXPECT_EQ(side.find(">Y</text>"), std::string::npos);
+  EXPECT_NE(side.find(">Z</text>"), std::string::npos);
+  EXPECT_NE(side.find("view XZ"), std::string::npos);
+  const std::string iso = drawing({high, low}, SvgView::Iso);
+  for (const char* axis : {">X</text>", ">Y</text>", ">Z</text>"}) {
+    EXPECT_NE(iso.find(axis), std::string::npos) << axis;
+  }
+  SvgView view = SvgView::XY;
+  EXPECT_TRUE(parseSvgView("iso", view));
+  EXPECT_EQ(view, SvgView::Iso);
+  EXPECT_FALSE(parseSvgView("top", view));
 }
 
 // Under cutter compensation the programmed contour is drawn beside the
