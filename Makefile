@@ -2,10 +2,15 @@
 # machine with only git and make: they install what is missing first.
 BUILD_DIR ?= build
 JOBS ?= 2
+# The page of --html is built with npm (three.js from its registry). A node
+# that brings its own npm (NodeSource's) is kept: Debian's npm conflicts
+# with it.
+NPM_PACKAGES := $(if $(shell command -v npm),,nodejs npm)
 DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 nlohmann-json3-dev libcli11-dev help2man libxxhash-dev googletest libgtest-dev libgmock-dev parallel \
                 pkg-config pybind11-dev python3-dev python3-numpy python3-pandas \
-                python3-dask python3-distributed python3-pytest librsvg2-bin python3-pil
+                python3-dask python3-distributed python3-pytest librsvg2-bin python3-pil \
+                chromium $(NPM_PACKAGES)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps install-missing build install demo test test-asan fuzz bench difftest check-format \
@@ -47,14 +52,14 @@ demo: build
 	@echo "== mbc run examples/bolt_circle.nc (toolpath, DPRNT, variables) =="
 	$(BUILD_DIR)/mbc run examples/bolt_circle.nc --toolpath $(BUILD_DIR)/demo.toolpath.jsonl \
 	  --vars-out $(BUILD_DIR)/demo.vars.json --gcode $(BUILD_DIR)/demo.flat.nc \
-	  --svg $(BUILD_DIR)/demo.svg
+	  --svg $(BUILD_DIR)/demo.svg --html $(BUILD_DIR)/demo.html
 	@echo "== toolpath ($(BUILD_DIR)/demo.toolpath.jsonl) =="
 	@cat $(BUILD_DIR)/demo.toolpath.jsonl
 	@echo "== variables ($(BUILD_DIR)/demo.vars.json) =="
 	@cat $(BUILD_DIR)/demo.vars.json; echo
 	@echo "== flattened G-code ($(BUILD_DIR)/demo.flat.nc) =="
 	@cat $(BUILD_DIR)/demo.flat.nc
-	@echo "== drawing: open $(BUILD_DIR)/demo.svg in a browser =="
+	@echo "== pictures: open $(BUILD_DIR)/demo.svg and $(BUILD_DIR)/demo.html in a browser =="
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)

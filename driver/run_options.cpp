@@ -113,6 +113,10 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
     path("--svg", o.svgPath,
          "draw the toolpath as an SVG picture: holes, origin, legend, "
          "feeds coloured by depth");
+    path("--html", o.htmlPath,
+         "write the toolpath as one HTML page to open in a browser: a 3D "
+         "view to rotate, pan and zoom, the cut move by move, the source "
+         "line of a move");
     addValueOption(app, "--view", "xy|xz|yz|iso",
                    "the view --svg draws (default: xy, from above)", error,
                    [&o](const std::string& v) -> std::string {

@@ -26,6 +26,7 @@ struct RunOptions {
   std::string svgPath;   // the toolpath drawn
   SvgView svgView = SvgView::XY;
   bool svgViewGiven = false; // --view: an error without --svg
+  std::string htmlPath;      // the toolpath as an interactive 3D page
   std::string statePath;     // nonvolatile variables and offsets, kept
   bool time = false;         // --time: the phases' wall-clock times
   std::string dprntPath;

@@ -1,6 +1,7 @@
 // A run and its summary lines (see run_session.h).
 #include "driver/run_session.h"
 
+#include "driver/html_writer.h"
 #include "driver/interrupt_scope.h"
 #include "driver/output_files.h"
 #include "driver/state_file.h"
@@ -109,6 +110,7 @@ struct MotionOutputs {
   mbrt_ctx* ctx = nullptr;
   OutputFile toolpath;
   std::optional<SvgWriter> svg;
+  std::optional<HtmlWriter> html;
 
   static void write(void* self, const mbrt_motion* motion) {
     auto* outputs = static_cast<MotionOutputs*>(self);
@@ -118,6 +120,9 @@ struct MotionOutputs {
     }
     if (outputs->svg) {
       bytes += outputs->svg->add(*motion);
+    }
+    if (outputs->html) {
+      bytes += outputs->html->add(*motion);
     }
     mbrt_count_output(outputs->ctx, bytes);
   }
@@ -149,8 +154,11 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
     if (!o.svgPath.empty()) {
       motions.svg.emplace(o.svgView);
     }
+    if (!o.htmlPath.empty()) {
+      motions.html.emplace();
+    }
   }
-  if (motions.toolpath.get() != nullptr || motions.svg) {
+  if (motions.toolpath.get() != nullptr || motions.svg || motions.html) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
   }
   mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
@@ -271,6 +279,9 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
   const std::string title = pictureTitle(o, ctx, mainName, st);
   if (motions.svg && !replaceFile(o.svgPath, motions.svg->document(title))) {
     lost(o.svgPath);
+  }
+  if (motions.html && !replaceFile(o.htmlPath, motions.html->document(title))) {
+    lost(o.htmlPath);
   }
   if (!o.varsOutPath.empty() && !writeVariables(ctx, o.varsOutPath)) {
     lost(o.varsOutPath);

@@ -1,0 +1,12 @@
+// The page of `mbc run --html` with three.js inside, written at build time
+// by tools/html/make_page.py and kept in the executable.
+#pragma once
+
+#include <string_view>
+
+namespace mbc::driver {
+
+/// The page, with @TITLE@ and @TOOLPATH@ for the run to fill in.
+std::string_view toolpathPage();
+
+} // namespace mbc::driver

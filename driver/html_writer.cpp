@@ -1,0 +1,165 @@
+#include "driver/html_writer.h"
+
+#include "driver/arc_geometry.h"
+#include "driver/html_page.h"
+#include "driver/xml_text.h"
+#include <mbc/number_text.h>
+#include <mbc/read_file.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace mbc::driver {
+
+namespace {
+
+enum MoveKind { kRapid = 0, kFeed = 1, kArc = 2 };
+
+// Segments of an arc: about one per 7.5 degrees, at least 4.
+constexpr double kSegmentsPerTurn = 48.0;
+
+std::array<double, 3> xyz(const double* point, const mbrt_motion& m) {
+  std::array<double, 3> out{};
+  const char letters[] = {'X', 'Y', 'Z'};
+  for (int i = 0; i < 3; ++i) {
+    const int axis = axisNamed(m, letters[i]);
+    out[static_cast<std::size_t>(i)] = axis >= 0 ? point[axis] : 0.0;
+  }
+  return out;
+}
+
+template <typename T> std::string joined(const std::vector<T>& values) {
+  std::string out;
+  for (const T& v : values) {
+    out += out.empty() ? "" : ",";
+    if constexpr (std::is_floating_point_v<T>) {
+      out += trimmedFixed(static_cast<double>(v), 4);
+    } else {
+      out += std::to_string(v);
+    }
+  }
+  return out;
+}
+
+std::string jsonString(const std::string& text) {
+  return nlohmann::json(text).dump(-1, ' ', false,
+                                   nlohmann::json::error_handler_t::replace);
+}
+
+} // namespace
+
+int HtmlWriter::indexOf(std::vector<std::string>& names, const char* name) {
+  const std::string text = name != nullptr ? name : "";
+  // Moves come in runs from one file and program: the last one first.
+  if (!names.empty() && names.back() == text) {
+    return static_cast<int>(names.size()) - 1;
+  }
+  const auto it = std::find(names.begin(), names.end(), text);
+  if (it != names.end()) {
+    return static_cast<int>(it - names.begin());
+  }
+  names.push_back(text);
+  return static_cast<int>(names.size()) - 1;
+}
+
+void HtmlWriter::segmentTo(const std::array<double, 3>& from,
+                           const std::array<double, 3>& to) {
+  for (const auto& point : {from, to}) {
+    for (const double v : point) {
+      points_.push_back(static_cast<float>(v));
+    }
+  }
+  segmentMove_.push_back(static_cast<std::uint32_t>(kinds_.size() - 1));
+}
+
+std::size_t HtmlWriter::add(const mbrt_motion& m) {
+  const std::size_t before = points_.size();
+  const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
+  kinds_.push_back(m.kind == MBRT_MOTION_RAPID ? kRapid : arc ? kArc : kFeed);
+  files_.push_back(indexOf(fileNames_, m.file));
+  lines_.push_back(m.line);
+  programs_.push_back(indexOf(programNames_, m.program));
+  std::array<double, 3> from = xyz(m.start, m);
+  if (arc) {
+    const Arc a = arcOf(m);
+    const int pieces =
+        std::max(4, static_cast<int>(std::ceil(std::fabs(a.sweep) /
+                                               (2.0 * std::numbers::pi) *
+                                               kSegmentsPerTurn)));
+    for (int i = 1; i <= pieces; ++i) {
+      const auto point = arcPoint(m, a, static_cast<double>(i) / pieces);
+      const std::array<double, 3> to = xyz(point.data(), m);
+      segmentTo(from, to);
+      from = to;
+    }
+  } else {
+    segmentTo(from, xyz(m.end, m));
+  }
+  // About 8 bytes of the page per coordinate, 20 per move.
+  return (points_.size() - before) * 8 + 20;
+}
+
+std::string HtmlWriter::document(const std::string& title) const {
+  // The text of every source line a move came from.
+  std::set<std::pair<int, int>> wanted;
+  for (std::size_t i = 0; i < kinds_.size(); ++i) {
+    wanted.insert({files_[i], lines_[i]});
+  }
+  std::string source;
+  int readFileIndex = -1;
+  std::vector<std::string> fileLines;
+  for (const auto& [file, line] : wanted) {
+    if (file != readFileIndex) {
+      readFileIndex = file;
+      fileLines.clear();
+      std::string text;
+      if (readFile(fileNames_[static_cast<std::size_t>(file)], text) == 0) {
+        for (std::size_t at = 0; at <= text.size();) {
+          const std::size_t end = std::min(text.find('\n', at), text.size());
+          std::string one = text.substr(at, end - at);
+          if (!one.empty() && one.back() == '\r') {
+            one.pop_back();
+          }
+          fileLines.push_back(one.substr(0, 200));
+          at = end + 1;
+        }
+      }
+    }
+    if (line >= 1 && static_cast<std::size_t>(line) <= fileLines.size()) {
+      source += fmt::format(
+          "{}\"{}:{}\":{}", source.empty() ? "" : ",", file, line,
+          jsonString(fileLines[static_cast<std::size_t>(line - 1)]));
+    }
+  }
+  std::string names, programs;
+  for (const std::string& f : fileNames_) {
+    names += (names.empty() ? "" : ",") + jsonString(f);
+  }
+  for (const std::string& p : programNames_) {
+    programs += (programs.empty() ? "" : ",") + jsonString(p);
+  }
+  std::string data = fmt::format(
+      "{{\"title\":{},\"files\":[{}],\"programs\":[{}],\"source\":{{{}}},"
+      "\"moves\":{{\"kind\":[{}],\"file\":[{}],\"line\":[{}],\"program\":[{}]}}"
+      ","
+      "\"points\":[{}],\"segmentMove\":[{}]}}",
+      jsonString(title), names, programs, source, joined(kinds_),
+      joined(files_), joined(lines_), joined(programs_), joined(points_),
+      joined(segmentMove_));
+  // No "</script>" inside the script element: JSON may write "<\/".
+  for (std::size_t at = data.find("</"); at != std::string::npos;
+       at = data.find("</", at + 3)) {
+    data.insert(at + 1, "\\");
+  }
+  std::string page(toolpathPage());
+  page.replace(page.find("@TOOLPATH@"), 10, data);
+  page.replace(page.find("@TITLE@"), 7, xmlEscaped(title));
+  return page;
+}
+
+} // namespace mbc::driver

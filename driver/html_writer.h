@@ -1,0 +1,39 @@
+// `mbc run --html`: the toolpath as one page that a browser opens from
+// disk: an interactive 3D view (three.js, inside the page) with rapids,
+// feeds and arcs by colour, a slider and a play button that show the cut
+// move by move, and the source line of the move under the pointer.
+#pragma once
+
+#include <mbc/runtime.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mbc::driver {
+
+class HtmlWriter {
+public:
+  /// Records one move; returns the bytes the page grew by.
+  std::size_t add(const mbrt_motion& m);
+
+  /// The whole page under a title, with the text of the source lines the
+  /// moves came from (read from their files).
+  std::string document(const std::string& title) const;
+
+  std::size_t segments() const { return segmentMove_.size(); }
+
+private:
+  int indexOf(std::vector<std::string>& names, const char* name);
+  void segmentTo(const std::array<double, 3>& from,
+                 const std::array<double, 3>& to);
+
+  std::vector<float> points_; // x, y, z of both ends of each segment
+  std::vector<std::uint32_t> segmentMove_;
+  std::vector<int> kinds_, files_, lines_, programs_; // per move
+  std::vector<std::string> fileNames_, programNames_;
+};
+
+} // namespace mbc::driver

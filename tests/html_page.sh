@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# --html in a real browser: headless Chromium (Debian's) opens the page of
+# the demo from disk without network, and the page must load without an
+# error (its own count and the browser's console), hold a segment per move
+# (the demo has no arcs: 20 moves, 20 segments; a program with arcs more),
+# and look as docs/images/bolt_circle_html.png does within a tolerance
+# (software WebGL, SwiftShader, draws alike from run to run).
+#   html_page.sh MBC SOURCE_DIR PYTHON [--update]
+source_dir=$(realpath "$2")
+python=$3
+update=${4:-}
+source "$(dirname "$0")/script_env.sh" "$1"
+command -v chromium >/dev/null || fail "chromium is not installed (make test installs it)"
+browse() { # PAGE ARGS...: Chromium on the page, headless, offline
+  local page=$1; shift
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader \
+    --enable-unsafe-swiftshader --hide-scrollbars --no-first-run --disable-extensions \
+    --proxy-server=127.0.0.1:9 --user-data-dir="$work/profile" \
+    --enable-logging=stderr --v=0 "$@" "file://$work/$page"
+}
+"$mbc" run "$source_dir/examples/bolt_circle.nc" --html demo.html --dprnt /dev/null 2>/dev/null ||
+  fail "mbc run --html"
+grep -q '<title>O1000 · machine built-in 3-axis mill · 20 moves · cycle 0:22.1</title>' demo.html ||
+  fail "the page's title"
+! grep -qE '(src|href)="https?:' demo.html || fail "the page loads something from the network"
+browse demo.html --dump-dom >dom.html 2>console.txt || { tail -5 console.txt; fail "chromium --dump-dom"; }
+grep -q 'data-ready="1"' dom.html || { grep -i console console.txt; fail "the page did not draw"; }
+! grep -q 'data-errors=' dom.html || fail "the page had errors: $(grep -o 'data-errors="[0-9]*"' dom.html)"
+! grep -E 'CONSOLE.*(Uncaught|Error)' console.txt || fail "errors on the browser's console"
+grep -q 'data-segments="20" data-moves="20"' dom.html ||
+  fail "segments: $(grep -o 'data-segments="[0-9]*" data-moves="[0-9]*"' dom.html)"
+
+# The move under the pointer names its source line: the rapid of move 2.
+browse 'demo.html#probe=2' --dump-dom 2>/dev/null | tr '\n' ' ' >probe.html
+grep -q 'data-probe="[^"]*bolt_circle.nc:18  O9001  rapid 2 G00 X#28 Y#29"' probe.html ||
+  fail "the tip at move 2: $(grep -o 'data-probe="[^"]*"' probe.html)"
+
+# Arcs are segments of their own: a full circle and a quarter.
+printf '%%\nO1(ARCS)\nG90G54G17G0X10.Y0Z5.\nG1Z-1.F100\nG3I-10.\nG2X0Y10.R10.\nG0Z5.\nM30\n%%\n' >arcs.nc
+"$mbc" run arcs.nc --html arcs.html 2>/dev/null || fail "mbc run --html arcs"
+browse arcs.html --dump-dom >arcs-dom.html 2>/dev/null
+# 48 segments a turn, 12 for the quarter circle, 3 lines.
+grep -q 'data-segments="63" data-moves="5"' arcs-dom.html ||
+  fail "arc segments: $(grep -o 'data-segments="[0-9]*" data-moves="[0-9]*"' arcs-dom.html)"
+
+# No moves: an empty scene, no error.
+printf 'O2(NOTHING)\n#100=1\nM30\n' >none.nc
+"$mbc" run none.nc --html none.html 2>/dev/null || fail "mbc run --html without moves"
+browse none.html --dump-dom >none-dom.html 2>/dev/null
+grep -q 'data-segments="0" data-moves="0" data-ready="1"' none-dom.html && ! grep -q data-errors none-dom.html ||
+  fail "the page of a run without moves"
+
+browse demo.html --window-size=900,600 --screenshot="$work/demo.png" 2>/dev/null ||
+  fail "chromium --screenshot"
+expected="$source_dir/docs/images/bolt_circle_html.png"
+[ "$update" = --update ] && cp demo.png "$expected"
+"$python" "$source_dir/tests/compare_pictures.py" demo.png "$expected" --max-changed 0.002 ||
+  { cp demo.png demo.diff.png /tmp/ 2>/dev/null; fail "the page looks different (/tmp/demo.png, /tmp/demo.diff.png)"; }
+echo "html_page: the demo page in Chromium checks"
