@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -22,8 +21,6 @@ public:
   /// The whole page under a title, with the text of the source lines the
   /// moves came from (read from their files).
   std::string document(const std::string& title) const;
-
-  std::size_t segments() const { return segmentMove_.size(); }
 
 private:
   int indexOf(std::vector<std::string>& names, const char* name);
