@@ -1,6 +1,7 @@
 // A run and its summary lines (see run_session.h).
 #include "driver/run_session.h"
 
+#include "driver/html_page.h"
 #include "driver/html_writer.h"
 #include "driver/interrupt_scope.h"
 #include "driver/output_files.h"
@@ -155,6 +156,13 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       motions.svg.emplace(o.svgView);
     }
     if (!o.htmlPath.empty()) {
+      if (toolpathPage().empty()) {
+        std::fputs("mbc: error: --html is not available: this mbc was built "
+                   "without its page (npm could not fetch three.js from the "
+                   "npm registry; see the build's warning)\n",
+                   stderr);
+        return false;
+      }
       motions.html.emplace();
     }
   }

@@ -18,8 +18,13 @@ browse() { # PAGE ARGS...: Chromium on the page, headless, offline
     --proxy-server=127.0.0.1:9 --user-data-dir="$work/profile" \
     --enable-logging=stderr --v=0 "$@" "file://$work/$page"
 }
-"$mbc" run "$source_dir/examples/bolt_circle.nc" --html demo.html --dprnt /dev/null 2>/dev/null ||
-  fail "mbc run --html"
+if ! "$mbc" run "$source_dir/examples/bolt_circle.nc" --html demo.html --dprnt /dev/null 2>err.txt; then
+  # Built where npm could not reach its registry: said, and skipped.
+  grep -q "mbc: error: --html is not available: this mbc was built without its page" err.txt ||
+    { cat err.txt; fail "mbc run --html"; }
+  echo "SKIPPED: $(cat err.txt)"
+  exit 77
+fi
 grep -q '<title>O1000 · machine built-in 3-axis mill · 20 moves · cycle 0:22.1</title>' demo.html ||
   fail "the page's title"
 ! grep -qE '(src|href)="https?:' demo.html || fail "the page loads something from the network"

@@ -3,7 +3,9 @@
 (toolpath.html) with the page's script (toolpath.js) and three.js and its
 OrbitControls (from the npm package pinned in package-lock.json) as data:
 URLs of an import map, so that the page needs no network and no other file.
-@TITLE@ and @TOOLPATH@ are left for mbc to fill in.
+@TITLE@ and @TOOLPATH@ are left for mbc to fill in. Without three.js (npm
+could not fetch it: fetch_three.cmake) the page is empty, and mbc's --html
+says why.
 Usage: make_page.py TEMPLATE SCRIPT THREE_MODULE ORBIT_CONTROLS OUTPUT"""
 import base64
 import os
@@ -17,6 +19,10 @@ def main():
         with open(path, "rb") as f:
             return f.read()
 
+    if not (os.path.isfile(three) and os.path.isfile(orbit)):
+        with open(output, "w"):
+            pass
+        return
     page = read(template).decode()
     page = page.replace("@THREE@", base64.b64encode(read(three)).decode())
     page = page.replace("@ORBIT_CONTROLS@",
