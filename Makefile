@@ -52,14 +52,18 @@ demo: build
 	@echo "== mbc run examples/bolt_circle.nc (toolpath, DPRNT, variables) =="
 	$(BUILD_DIR)/mbc run examples/bolt_circle.nc --toolpath $(BUILD_DIR)/demo.toolpath.jsonl \
 	  --vars-out $(BUILD_DIR)/demo.vars.json --gcode $(BUILD_DIR)/demo.flat.nc \
-	  --svg $(BUILD_DIR)/demo.svg --html $(BUILD_DIR)/demo.html
+	  --svg $(BUILD_DIR)/demo.svg
 	@echo "== toolpath ($(BUILD_DIR)/demo.toolpath.jsonl) =="
 	@cat $(BUILD_DIR)/demo.toolpath.jsonl
 	@echo "== variables ($(BUILD_DIR)/demo.vars.json) =="
 	@cat $(BUILD_DIR)/demo.vars.json; echo
 	@echo "== flattened G-code ($(BUILD_DIR)/demo.flat.nc) =="
 	@cat $(BUILD_DIR)/demo.flat.nc
-	@echo "== pictures: open $(BUILD_DIR)/demo.svg and $(BUILD_DIR)/demo.html in a browser =="
+	@echo "== drawing: open $(BUILD_DIR)/demo.svg in a browser =="
+	@# The 3D page needs the page npm fetched at build time: said if missing.
+	@if why=$$($(BUILD_DIR)/mbc run examples/bolt_circle.nc --html $(BUILD_DIR)/demo.html \
+	     --dprnt /dev/null 2>&1 >/dev/null | grep 'error:'); then echo "$$why"; \
+	 else echo "== 3D view: open $(BUILD_DIR)/demo.html in a browser =="; fi
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
