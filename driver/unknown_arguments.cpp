@@ -18,15 +18,6 @@ std::string optionName(const std::string& arg) {
   return arg.substr(0, 2);
 }
 
-bool takes(const CLI::App& command, const std::string& name) {
-  for (const CLI::Option* opt : command.get_options()) {
-    if (opt->nonpositional() && opt->check_name(name)) {
-      return true;
-    }
-  }
-  return false;
-}
-
 std::vector<std::string> optionNames(const CLI::App& command) {
   std::vector<std::string> names;
   for (const CLI::Option* opt : command.get_options()) {
@@ -57,7 +48,7 @@ std::string unknownOptionMessage(const CLI::App& root, const CLI::App& command,
   const std::string self = command.get_name();
   std::vector<std::string> owners;
   for (const CLI::App* other : root.get_subcommands({})) {
-    if (other != &command && takes(*other, name)) {
+    if (other != &command && other->get_option_no_throw(name) != nullptr) {
       owners.push_back(other->get_name());
     }
   }
