@@ -14,6 +14,24 @@ int axisNamed(const mbrt_motion& m, char letter) {
   return -1;
 }
 
+mbrt_motion inRadii(const mbrt_motion& m) {
+  mbrt_motion out = m;
+  for (int axis = 0; axis < m.axis_count; ++axis) {
+    if ((m.diameter_mask >> axis & 1) != 0) {
+      out.end[axis] /= 2.0;
+      out.start[axis] /= 2.0;
+      out.machine[axis] /= 2.0;
+      out.programmed[axis] /= 2.0;
+      for (int i = 0; i < 2; ++i) {
+        if (m.center_axes[i] == m.axis_names[axis]) {
+          out.center[i] /= 2.0;
+        }
+      }
+    }
+  }
+  return out;
+}
+
 Arc arcOf(const mbrt_motion& m) {
   Arc arc;
   arc.p = axisNamed(m, m.center_axes[0]);

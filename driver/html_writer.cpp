@@ -77,7 +77,8 @@ void HtmlWriter::segmentTo(const std::array<double, 3>& from,
   segmentMove_.push_back(static_cast<std::uint32_t>(kinds_.size() - 1));
 }
 
-std::size_t HtmlWriter::add(const mbrt_motion& m) {
+std::size_t HtmlWriter::add(const mbrt_motion& motion) {
+  const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
   const std::size_t before = points_.size();
   const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
   kinds_.push_back(m.kind == MBRT_MOTION_RAPID ? kRapid : arc ? kArc : kFeed);

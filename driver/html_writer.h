@@ -16,7 +16,7 @@ namespace mbc::driver {
 class HtmlWriter {
 public:
   /// Records one move; returns the bytes the page grew by.
-  std::size_t add(const mbrt_motion& m);
+  std::size_t add(const mbrt_motion& motion);
 
   /// The whole page under a title, with the text of the source lines the
   /// moves came from (read from their files).

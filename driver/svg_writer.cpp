@@ -153,7 +153,8 @@ void SvgWriter::include(Point p) {
   haveBox_ = true;
 }
 
-std::size_t SvgWriter::add(const mbrt_motion& m) {
+std::size_t SvgWriter::add(const mbrt_motion& motion) {
+  const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
   const std::size_t before = rapids_.size() + programmed_.size() +
                              feeds_.size() * sizeof(Piece) +
                              holes_.size() * sizeof(Hole);

@@ -27,7 +27,7 @@ public:
   explicit SvgWriter(SvgView view = SvgView::XY) : view_(view) {}
 
   /// Records one move; returns the bytes the drawing grew by.
-  std::size_t add(const mbrt_motion& m);
+  std::size_t add(const mbrt_motion& motion);
 
   /// The whole drawing under a title line; it fits the moves, the holes
   /// and the origin with a margin.

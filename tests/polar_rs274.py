@@ -13,12 +13,11 @@ installs it).
 """
 
 import json
-import pathlib
 import re
-import shutil
 import subprocess
 import sys
-import tempfile
+
+from rs274_oracle import collect
 
 # One move per row: the FANUC block (in G16) and LinuxCNC's.
 MOVES = [
@@ -62,17 +61,11 @@ def rs274_points(folder):
 
 
 def main():
-    if shutil.which("rs274") is None:
-        print("rs274 is not installed (make bench installs linuxcnc-uspace)")
-        return 77
-    with tempfile.TemporaryDirectory() as tmp:
-        folder = pathlib.Path(tmp)
-        ours = mbc_points(sys.argv[1], folder)
-        theirs = rs274_points(folder)
-    if len(ours) != len(MOVES) or len(theirs) != len(MOVES):
-        print(f"moves: mbc {len(ours)}, rs274 {len(theirs)}, "
-              f"expected {len(MOVES)}")
-        return 1
+    both = collect(lambda folder: mbc_points(sys.argv[1], folder),
+                   rs274_points, len(MOVES))
+    if isinstance(both, int):
+        return both
+    ours, theirs = both
     failed = 0
     for (fanuc, linuxcnc), mine, other in zip(MOVES, ours, theirs):
         # rs274 prints 4 decimals; mbc rounds to the 0.001 mm increment.

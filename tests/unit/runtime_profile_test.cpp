@@ -12,17 +12,6 @@
 namespace mbc::test {
 namespace {
 
-/// The error mbrt_create gives for a bad profile ("" when it accepts it).
-std::string profileError(const char* json) {
-  char err[512] = "";
-  mbrt_ctx* ctx = mbrt_create(json, err, sizeof err);
-  if (ctx != nullptr) {
-    mbrt_destroy(ctx);
-    return "";
-  }
-  return err;
-}
-
 TEST(RuntimeProfile, DefaultIsAThreeAxisMetricMill) {
   Machine m;
   ASSERT_EQ(m.block("G00 X1. Y2. Z3."), 0);

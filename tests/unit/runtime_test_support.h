@@ -51,6 +51,17 @@ inline std::vector<mbrt_word> parseWords(std::string_view text) {
   return words;
 }
 
+/// The error mbrt_create gives for a bad profile ("" when it accepts it).
+inline std::string profileError(const char* json) {
+  char err[512] = "";
+  mbrt_ctx* ctx = mbrt_create(json, err, sizeof err);
+  if (ctx != nullptr) {
+    mbrt_destroy(ctx);
+    return "";
+  }
+  return err;
+}
+
 /// A context running "O1000" from "test.nc" whose sinks record everything.
 class Machine {
 public:

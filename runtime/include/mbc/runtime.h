@@ -109,6 +109,10 @@ typedef struct mbrt_motion {
   /* The block's end point as the program commands it, like `end`: under
    * cutter compensation `end` is the tool centre, beside it. */
   double programmed[MBRT_MAX_AXES];
+  /* Bit n: axis n is programmed and shown as a diameter (a lathe's X):
+   * its coordinates and centre are diameters, twice the distance from the
+   * spindle axis that the geometry of the move follows. */
+  unsigned diameter_mask;
 } mbrt_motion;
 
 /* Sinks run in the middle of a block: from inside one, mbrt_run_main (and

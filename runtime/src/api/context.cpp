@@ -53,7 +53,7 @@ void loadProfile(mbrt_ctx& ctx) {
   for (int index = 0; index < kWorkOffsetCount; ++index) {
     for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
       ctx.workOffsets[index][axis] = static_cast<Counts>(
-          roundToCounts(profile.workOffsets[index][axis], ctx.axisScale(axis)));
+          roundToAxisCounts(ctx, axis, profile.workOffsets[index][axis]));
     }
   }
   ctx.toolOffsets = profile.toolOffsets;
@@ -79,6 +79,11 @@ void clearModalCodes(mbrt_ctx& ctx) {
   const bool inch = ctx.modal.inch;
   ctx.modal = ModalState{};
   ctx.modal.inch = inch;
+  if (ctx.profile.lathe()) {
+    // A lathe starts in G18, and feeds per revolution unless 3402#4 FPM.
+    ctx.modal.plane = 18;
+    ctx.modal.feedMode = ctx.profile.parameterBit(3402, 4) ? 94 : 95;
+  }
   ctx.lastWords = {};
 }
 
@@ -93,6 +98,7 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.intermediate = AxisCounts{};
   ctx.intermediateMask = 0;
   ctx.compensation = CompensationState{};
+  ctx.spindleLimit = 0.0;
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   clearModalCodes(ctx);
   ctx.clockMs = 0.0;

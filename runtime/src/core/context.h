@@ -103,6 +103,7 @@ struct ModalState {
   int feedMode = 94;                // G93 G94 G95
   int workOffset = kFirstG54Offset; // index into workOffsets
   double feed = 0.0;                // modal F
+  bool surfaceSpeed = false;        // G96: S is a surface speed (lathes)
 };
 
 /// The coordinate frames between a program and the machine (frames.h):
@@ -143,6 +144,12 @@ struct MoveOrigin {
   // The block's programmed end point (workpiece frame) when the move's end
   // is elsewhere: cutter compensation's tool centre.
   const AxisCounts* programmed = nullptr;
+  // A lathe's spindle: in G96 `spindle` is the surface speed and the speed
+  // at each X follows from it, capped at `spindleLimit` (0: none); a G32
+  // thread's F is its lead along its longer axis.
+  bool surfaceSpeed = false;
+  double spindleLimit = 0.0;
+  bool threading = false;
 };
 
 /// A programmed move as cutter compensation holds it (cutter_comp.h), in
@@ -291,6 +298,9 @@ struct mbrt_ctx {
   mbc::rt::AxisCounts intermediate{};
   std::uint32_t intermediateMask = 0;
   mbc::rt::CompensationState compensation;
+  // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
+  // G92 S in B and C), rpm; 0: none given.
+  double spindleLimit = 0.0;
 
   // The run: the block being executed and the count of blocks.
   // A signal handler or another thread lowers block.max_blocks to stop the
@@ -331,17 +341,67 @@ struct mbrt_ctx {
     return letter >= 'A' && letter <= 'Z' ? axisIndex[letter - 'A'] : -1;
   }
 
-  /// Counts per input unit: 1000 (0.001 mm) or 10000 (0.0001 inch).
-  double scale() const { return modal.inch ? 10000.0 : 1000.0; }
+  /// Least input increments per unit: 1000 (0.001 mm) or 10000 (0.0001
+  /// inch).
+  double inputScale() const { return modal.inch ? 10000.0 : 1000.0; }
+
+  /// Counts per least input increment: 2 on a machine with an axis
+  /// programmed as a diameter, whose increment (0.001 mm of diameter) is
+  /// half an increment of its radius. Geometry works on radii, so every
+  /// linear count is that half increment there.
+  int countsPerIncrement() const { return profile.diameterMask != 0 ? 2 : 1; }
+
+  /// Counts per input unit of a radius or a length.
+  double scale() const { return inputScale() * countsPerIncrement(); }
 
   bool isRotary(int axis) const {
     return (profile.rotaryMask >> axis & 1) != 0;
   }
 
-  /// Counts per unit of an axis: a rotary axis counts 0.001 degree whatever
-  /// G20/G21.
+  /// The axis an incremental address moves on a lathe in G code system A
+  /// (U: X, V: Y, W: Z, H: C), -1 for other letters and machines.
+  int incrementalAxisOf(char letter) const {
+    if (!profile.lathe() || profile.gCodeSystem != 'A' || axisOf(letter) >= 0) {
+      return -1;
+    }
+    switch (letter) {
+      case 'U':
+        return axisOf('X');
+      case 'V':
+        return axisOf('Y');
+      case 'W':
+        return axisOf('Z');
+      case 'H':
+        return axisOf('C');
+      default:
+        return -1;
+    }
+  }
+
+  /// The axis an address moves, absolute or incremental.
+  int movedAxisOf(char letter) const {
+    const int axis = axisOf(letter);
+    return axis >= 0 ? axis : incrementalAxisOf(letter);
+  }
+
+  bool isDiameter(int axis) const {
+    return (profile.diameterMask >> axis & 1) != 0;
+  }
+
+  /// Counts per unit of an axis as programs write it and the control shows
+  /// it: a rotary axis counts 0.001 degree whatever G20/G21, a diameter
+  /// axis counts its radius, so a unit of diameter is half the counts.
   double axisScale(int axis) const {
-    return isRotary(axis) ? mbc::rt::kCountsPerDegree : scale();
+    if (isRotary(axis)) {
+      return mbc::rt::kCountsPerDegree;
+    }
+    return isDiameter(axis) ? inputScale() : scale();
+  }
+
+  /// Counts per least input increment of an axis (axisScale over the
+  /// increments per unit).
+  int axisCountsPerIncrement(int axis) const {
+    return isRotary(axis) || isDiameter(axis) ? 1 : countsPerIncrement();
   }
 
   bool rollsOver(int axis) const {
@@ -371,7 +431,10 @@ struct mbrt_ctx {
   /// Counts per unit of an axis in the summary's box, in G20 (`inch`) or
   /// G21: mm, or degrees.
   double boxScale(int axis, bool inch) const {
-    return isRotary(axis) ? mbc::rt::kCountsPerDegree : countsPerMm(inch);
+    if (isRotary(axis)) {
+      return mbc::rt::kCountsPerDegree;
+    }
+    return countsPerMm(inch) / (isDiameter(axis) ? 2.0 : 1.0);
   }
 
   int decimals() const { return modal.inch ? 4 : 3; }
@@ -379,8 +442,8 @@ struct mbrt_ctx {
   /// Counts per mm, for parameters given in mm whatever the input unit.
   double countsPerMm() const { return countsPerMm(modal.inch); }
 
-  static double countsPerMm(bool inch) {
-    return inch ? 10000.0 / 25.4 : 1000.0;
+  double countsPerMm(bool inch) const {
+    return (inch ? 10000.0 / 25.4 : 1000.0) * countsPerIncrement();
   }
 
   mbc::rt::LocalLevel& locals() { return levels.back(); }
@@ -464,6 +527,18 @@ inline double roundToCounts(double value, double scale) {
     whole += 1.0;
   }
   return value < 0 ? -whole : whole;
+}
+
+/// A value in an axis's units (a diameter on a diameter axis) to counts:
+/// rounded to the least input increment first, as the control reads it.
+inline double roundToAxisCounts(const mbrt_ctx& ctx, int axis, double value) {
+  const int per = ctx.axisCountsPerIncrement(axis);
+  return roundToCounts(value, ctx.axisScale(axis) / per) * per;
+}
+
+/// A radius or length in input units to counts, rounded to the increment.
+inline double roundToLengthCounts(const mbrt_ctx& ctx, double value) {
+  return roundToCounts(value, ctx.inputScale()) * ctx.countsPerIncrement();
 }
 
 /// Least increments per unit of an address: 1000 or 10000 on axes, arc

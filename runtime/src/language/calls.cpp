@@ -30,7 +30,7 @@ struct IjkSets {
 };
 
 bool scalesLiteral(const mbrt_ctx& ctx, char letter) {
-  return ctx.axisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
+  return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
          letter == 'K' || letter == 'R' || letter == 'Q';
 }
 
@@ -173,7 +173,7 @@ double argumentScale(const mbrt_ctx& ctx, int local) {
       return addressCountsPerUnit(ctx, letter);
     }
   }
-  return ctx.scale(); // the I, J, K of specification II
+  return ctx.inputScale(); // the I, J, K of specification II
 }
 
 mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number) {

@@ -18,6 +18,7 @@
 #include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frames.h"
+#include "lathe_codes.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -179,12 +180,13 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
           findToolOffset<Series, ShortForm>(ctx, index, &field)) {
     return status;
   }
-  const double counts = roundToCounts(numeric(value), ctx.scale());
+  const double counts = roundToCounts(numeric(value), ctx.inputScale());
   if (!fitsAddress(counts)) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
                  fmt::format("tool offset {}", numeric(value)));
   }
-  const double units = countsToUnits(static_cast<Counts>(counts), ctx.scale());
+  const double units =
+      countsToUnits(static_cast<Counts>(counts), ctx.inputScale());
   ctx.toolOffsets[index + 1].*field = units;
   flattenToolOffset(ctx, offsetL(field), index + 1, units);
   return 0;
@@ -291,6 +293,9 @@ mbrt_status readMainProgram(mbrt_ctx& ctx, int, Num* out) {
 /// #4001+g: the G code of modal group g (spec §6.4); groups mbc keeps in one
 /// fixed state read their only code.
 double modalGroupValue(const mbrt_ctx& ctx, int group) {
+  if (ctx.profile.lathe()) {
+    return latheModalGroupValue(ctx, group);
+  }
   const ModalState& modal = ctx.modal;
   switch (group) {
     case 1:
@@ -405,7 +410,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
           refuseUnderCompensation(ctx, "writing a work offset")) {
     return status;
   }
-  const double counts = roundToCounts(numeric(value), ctx.axisScale(axis));
+  const double counts = roundToAxisCounts(ctx, axis, numeric(value));
   if (!fitsAddress(counts)) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
                  fmt::format("work offset {}", numeric(value)));

@@ -406,7 +406,7 @@ mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
   }
   const PlaneIndex plane = planeIndex(ctx);
   const bool mirrored = arcFrame(ctx, plane.p, plane.q).reversed;
-  move.offset = roundToCounts(std::fabs(value), ctx.scale());
+  move.offset = roundToLengthCounts(ctx, std::fabs(value));
   move.side = (ctx.modal.compensation == 41) == (value >= 0.0) ? 1 : -1;
   if (mirrored) {
     move.side = -move.side;

@@ -209,7 +209,7 @@ mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
   const double value = number == 0 ? 0.0
                                    : ctx.toolOffsets[number].hGeometry +
                                          ctx.toolOffsets[number].hWear;
-  const auto counts = static_cast<Counts>(roundToCounts(value, ctx.scale()));
+  const auto counts = static_cast<Counts>(roundToLengthCounts(ctx, value));
   frames.lengthMode = mode;
   frames.lengthAxis = axis;
   frames.length = mode == 44 ? -counts : counts;

@@ -14,7 +14,9 @@
 
 #include "cutter_comp.h"
 #include "frames.h"
+#include "lathe_codes.h"
 #include "plane_geometry.h"
+#include "spindle.h"
 
 namespace mbc::rt {
 
@@ -30,9 +32,14 @@ PlaneAxes planeAxes(int plane) {
 }
 
 MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
-  return {ctx.block.file, ctx.block.line,     ctx.programName(),
-          ctx.modal.feed, ctx.modal.feedMode, ctx.lastWords[kLastSIndex],
-          cycle};
+  MoveOrigin origin{
+      ctx.block.file, ctx.block.line,     ctx.programName(),
+      ctx.modal.feed, ctx.modal.feedMode, ctx.lastWords[kLastSIndex],
+      cycle};
+  origin.surfaceSpeed = ctx.modal.surfaceSpeed;
+  origin.spindleLimit = ctx.spindleLimit;
+  origin.threading = ctx.modal.motion == kThreadingMotion;
+  return origin;
 }
 
 PlaneIndex planeIndex(const mbrt_ctx& ctx) {
@@ -72,7 +79,7 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
     if ((words.axisMask >> axis & 1) == 0) {
       continue;
     }
-    if (ctx.modal.incremental) {
+    if (ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0) {
       target[axis] = start[axis] + words.axis[axis];
     } else if (ctx.rollsOver(axis)) {
       target[axis] = rolloverTarget(ctx, axis, start[axis], words.axis[axis]);
@@ -96,6 +103,7 @@ void passTime(mbrt_ctx& ctx, double seconds) {
 struct Travel {
   double units = 0.0;
   double mm = 0.0;
+  double lead = 0.0; // the longest linear axis travel, input units
 };
 
 /// Feed moves take length / F minutes (G94), 1 / F (G93) or length / (F S)
@@ -103,15 +111,22 @@ struct Travel {
 /// whatever the input unit (degrees at the same number when only rotary
 /// axes move). `timed`: the length F applies to, in input units, which for
 /// a helix is the arc in its plane (FANUC: F is the feed along the arc).
+/// A thread (G32) goes its lead F per revolution along its longer axis.
+/// `turnMinutes`: one revolution's mean time in G96 (spindle.h), else 0.
 void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid, double timed,
-                  const MoveOrigin& origin) {
+                  const MoveOrigin& origin, double turnMinutes = 0.0) {
   double minutes = 0.0;
+  if (origin.threading && !rapid) {
+    timed = travel.lead;
+  }
   if (rapid) {
     minutes =
         (travel.mm > 0.0 ? travel.mm : travel.units) / ctx.profile.rapidRate;
   } else if (origin.feedMode == 93) {
     minutes = 1.0 / origin.feed;
-  } else if (origin.feedMode == 95) {
+  } else if (turnMinutes > 0.0) {
+    minutes = timed / origin.feed * turnMinutes;
+  } else if (origin.feedMode == 95 || origin.threading) {
     minutes = timed / (origin.feed * origin.spindle);
   } else {
     minutes = timed / origin.feed;
@@ -157,6 +172,7 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.kind = kind;
   motion.axis_count = ctx.axisCount();
   motion.axis_names = ctx.profile.axes.c_str();
+  motion.diameter_mask = ctx.profile.diameterMask;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     const double axisScale = ctx.axisScale(axis);
     motion.end[axis] = countsToUnits(ctx.shown(axis, work[axis]), axisScale);
@@ -172,8 +188,11 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.plane = ctx.modal.plane;
   motion.center_axes[0] = plane.letters[0];
   motion.center_axes[1] = plane.letters[1];
-  motion.center[0] = center.x / scale;
-  motion.center[1] = center.y / scale;
+  for (int i = 0; i < 2; ++i) {
+    const int axis = ctx.axisOf(plane.letters[i]);
+    motion.center[i] = (i == 0 ? center.x : center.y) /
+                       (axis >= 0 ? ctx.axisScale(axis) : scale);
+  }
   motion.decimals = ctx.decimals();
   motion.file = origin.file;
   motion.line = origin.line;
@@ -221,10 +240,12 @@ Travel travel(const mbrt_ctx& ctx, const AxisCounts& machine,
               std::uint32_t pathAxes, double path) {
   double linear = 0.0;
   double rotary = 0.0;
+  double lead = 0.0;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((pathAxes >> axis & 1) == 0) {
       const auto delta = static_cast<double>(machine[axis] - ctx.machine[axis]);
       (ctx.isRotary(axis) ? rotary : linear) += delta * delta;
+      lead = ctx.isRotary(axis) ? lead : std::max(lead, std::fabs(delta));
     }
   }
   // hypot(0, d) is d exactly; std::hypot is slow enough to show per move.
@@ -233,7 +254,7 @@ Travel travel(const mbrt_ctx& ctx, const AxisCounts& machine,
   const double units = counts / ctx.scale();
   const double degrees = std::sqrt(rotary) / kCountsPerDegree;
   return {degrees == 0.0 ? units : std::hypot(units, degrees),
-          counts / ctx.countsPerMm()};
+          counts / ctx.countsPerMm(), lead / ctx.scale()};
 }
 
 /// The points of an arc farthest along its plane axes, where it passes
@@ -362,18 +383,22 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   const double arc = radius * sweep;
   const AxisCounts machine = workToMachine(ctx, work);
   const MoveOrigin origin = blockOrigin(ctx);
-  advanceClock(ctx,
-               travel(ctx, machine,
-                      (std::uint32_t{1} << p) | (std::uint32_t{1} << q), arc),
-               false, arc / ctx.scale(), origin);
-  ctx.program = target;
   const AxisCounts workStart = machineToWork(ctx, ctx.machine);
+  const Point startPoint{static_cast<double>(workStart[p]),
+                         static_cast<double>(workStart[q])};
+  advanceClock(
+      ctx,
+      travel(ctx, machine, (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
+             arc),
+      false, arc / ctx.scale(), origin,
+      arcTurnMinutes(ctx, origin,
+                     {p, q, workCenter, startPoint, sweep, turnsClockwise},
+                     workStart));
+  ctx.program = target;
   moveTo(ctx, turnsClockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
          workCenter, origin);
-  widenBoxByArc(
-      ctx, p, q, workCenter,
-      {static_cast<double>(workStart[p]), static_cast<double>(workStart[q])},
-      radius, sweep, turnsClockwise);
+  widenBoxByArc(ctx, p, q, workCenter, startPoint, radius, sweep,
+                turnsClockwise);
   return 0;
 }
 
@@ -430,7 +455,7 @@ mbrt_status refuseFeedPerRevolution(mbrt_ctx& ctx) {
   return raise(ctx, AlarmId::Unsupported,
                fmt::format("F{} per minute: a lathe's feed per revolution "
                            "(G99 F{}; on a mill G95 feeds per revolution); "
-                           "mbc has no lathe profile yet",
+                           "a lathe profile has \"series\": \"T\"",
                            ctx.modal.feed, ctx.modal.feed));
 }
 
@@ -441,11 +466,20 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
   if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
     return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
   }
-  if (ctx.modal.feedMode == 95 && ctx.lastWords[kLastSIndex] <= 0.0) {
-    return raise(ctx, AlarmId::FeedZero, "G95 needs a spindle speed (S)");
+  const bool perRevolution =
+      ctx.modal.feedMode == 95 || ctx.modal.motion == kThreadingMotion;
+  if (perRevolution && ctx.lastWords[kLastSIndex] <= 0.0) {
+    return raise(ctx, AlarmId::FeedZero,
+                 ctx.modal.motion == kThreadingMotion
+                     ? "threading needs a spindle speed (S)"
+                 : ctx.profile.lathe()
+                     ? fmt::format("feed per revolution (G{}) needs a "
+                                   "spindle speed (S)",
+                                   writtenLatheCode(ctx, 950))
+                     : std::string("G95 needs a spindle speed (S)"));
   }
   if (ctx.modal.feed > 0.0) {
-    return ctx.modal.feedMode != 94 ||
+    return ctx.modal.feedMode != 94 || ctx.profile.lathe() ||
                    ctx.modal.feed >= kLeastFeed[ctx.modal.inch]
                ? 0
                : refuseFeedPerRevolution(ctx);
@@ -466,7 +500,10 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
   }
   const MoveOrigin origin = blockOrigin(ctx, cycle);
   const Travel length = travel(ctx, machine, 0, 0.0);
-  advanceClock(ctx, length, rapid, length.units, origin);
+  advanceClock(ctx, length, rapid, length.units, origin,
+               rapid ? 0.0
+                     : lineTurnMinutes(ctx, origin,
+                                       machineToWork(ctx, ctx.machine), work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
   return 0;
@@ -508,7 +545,10 @@ void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
                       const MoveOrigin& origin) {
   const AxisCounts machine = workToMachine(ctx, work);
   const Travel length = travel(ctx, machine, 0, 0.0);
-  advanceClock(ctx, length, rapid, length.units, origin);
+  advanceClock(ctx, length, rapid, length.units, origin,
+               rapid ? 0.0
+                     : lineTurnMinutes(ctx, origin,
+                                       machineToWork(ctx, ctx.machine), work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
 }
@@ -523,11 +563,13 @@ void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
   const double radius = std::hypot(from.x - center.x, from.y - center.y);
   const double sweep = sweepBetween(from, to, center, clockwise);
   const AxisCounts machine = workToMachine(ctx, work);
-  advanceClock(ctx,
-               travel(ctx, machine,
-                      (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
-                      radius * sweep),
-               false, radius * sweep / ctx.scale(), origin);
+  advanceClock(
+      ctx,
+      travel(ctx, machine, (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
+             radius * sweep),
+      false, radius * sweep / ctx.scale(), origin,
+      arcTurnMinutes(ctx, origin, {p, q, center, from, sweep, clockwise},
+                     workStart));
   moveTo(ctx, clockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
          center, origin);
   widenBoxByArc(ctx, p, q, center, from, radius, sweep, clockwise);
@@ -694,7 +736,7 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
   const AxisCounts target = workTarget(ctx, words, start);
-  if (mode == 0 || mode == 1) {
+  if (mode == 0 || mode == 1 || mode == kThreadingMotion) {
     return moveLine(ctx, target, mode == 0, &words);
   }
   if (const mbrt_status status = checkFeed(ctx, 0)) {

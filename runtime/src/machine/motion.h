@@ -9,8 +9,11 @@ namespace mbc::rt {
 
 /// The words of one block that define its motion, in counts.
 struct MotionWords {
-  std::uint32_t axisMask = 0;   // bit a: axis a was written
-  AxisCounts axis{};            // as written (absolute or incremental)
+  std::uint32_t axisMask = 0; // bit a: axis a was written
+  AxisCounts axis{};          // as written (absolute or incremental)
+  // Bit a: axis a was written with its incremental address (a lathe's U
+  // for X, W for Z), whatever G90/G91 says.
+  std::uint32_t incrementalMask = 0;
   std::uint32_t centerMask = 0; // bit 0: I, 1: J, 2: K
   std::array<Counts, 3> center{};
   bool hasR = false;

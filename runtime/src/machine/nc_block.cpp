@@ -14,6 +14,7 @@
 #include "frame_codes.h"
 #include "frames.h"
 #include "g_codes.h"
+#include "lathe_codes.h"
 #include "look_ahead.h"
 #include "motion.h"
 #include "polar.h"
@@ -98,33 +99,38 @@ double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
   if (letter == 'G') {
     return 10.0;
   }
-  if (const int axis = ctx.axisOf(letter); axis >= 0) {
-    return ctx.axisScale(axis);
+  if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
+    return ctx.axisScale(axis) / ctx.axisCountsPerIncrement(axis);
   }
   if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F') {
-    return ctx.scale();
+    return ctx.inputScale();
   }
   return 1.0;
 }
 
 namespace {
 
-/// An axis or arc word in counts of `scale` per unit: a literal without
-/// decimal point already is counts (unless 3401#0), everything else is
-/// rounded to the increment.
-mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, double scale,
-                     Counts* out) {
+/// An axis or arc word in counts, `perIncrement` of them to each of the
+/// `increments` per unit: a literal without decimal point already is
+/// increments (unless 3401#0), everything else is rounded to the increment.
+mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, double increments,
+                     int perIncrement, Counts* out) {
   const double value = numeric(word.value);
   const double counts =
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
-          : roundToCounts(value, scale);
+          : roundToCounts(value, increments);
   if (!fitsAddress(counts)) {
     return raise(ctx, AlarmId::TooManyDigits,
                  fmt::format("{}{}", word.letter, value));
   }
-  *out = static_cast<Counts>(counts);
+  *out = static_cast<Counts>(counts) * perIncrement;
   return 0;
+}
+
+/// A radius, arc centre or depth word (R, I, J, K, Q) in counts.
+mbrt_status toLengthCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
+  return toCounts(ctx, word, ctx.inputScale(), ctx.countsPerIncrement(), out);
 }
 
 mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, Block& block) {
@@ -140,6 +146,16 @@ mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, Block& block) {
 
 double gTenths(const mbrt_word& word) {
   return roundHalfAway(numeric(word.value) * 10.0);
+}
+
+/// The code a G word executes as (lathe_codes.h): on a mill its own tenths;
+/// on a lathe -1 when its G code system has no such code.
+double executedCode(const mbrt_ctx& ctx, const mbrt_word& word) {
+  const double tenths = gTenths(word);
+  if (!ctx.profile.lathe() || !(tenths >= 0.0 && tenths <= 9999.0)) {
+    return tenths;
+  }
+  return latheCode(ctx.profile.gCodeSystem, static_cast<int>(tenths));
 }
 
 /// The G codes that set one field of the modal state and cannot alarm, and
@@ -184,6 +200,20 @@ bool setsOneField(double tenths) {
 /// last one of a block wins.
 mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
                        Block& block) {
+  if (ctx.profile.lathe()) {
+    switch (tenths) {
+      case kLatheThreading:
+        next.motion = kThreadingMotion;
+        return 0;
+      case kLatheOwnCode + 690: // G69: no mirror image is ever on
+        return 0;
+      case 960:
+        next.surfaceSpeed = true;
+        return 0;
+      default:
+        break;
+    }
+  }
   switch (tenths) {
     case 0:
     case 10:
@@ -275,9 +305,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       next.compensation = tenths / 10;
       ctx.compensation.codeInBlock = true;
       return 0;
-    // The one state mbc keeps these groups in (#4001.. reads them).
+    case 970: // G97 (a mill keeps it, its one state)
+      next.surfaceSpeed = false;
+      return 0;
+    // The one state mbc keeps this group in (#4001.. reads it).
     case 670: // G67
-    case 970: // G97
       return 0;
     default:
       break;
@@ -347,10 +379,18 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (words[i].letter != 'G') {
       continue;
     }
-    const double tenths = gTenths(words[i]);
-    if (tenths < 0.0 || tenths > 9999.0) {
+    const double written = gTenths(words[i]);
+    const double tenths = executedCode(ctx, words[i]);
+    if (tenths < 0.0 || written > 9999.0) {
       return raise(ctx, AlarmId::ImproperGCode,
                    fmt::format("G{}", numeric(words[i].value)));
+    }
+    if (const char* name = ctx.profile.lathe()
+                               ? unmodelledLatheCode(static_cast<int>(tenths))
+                               : nullptr) {
+      return raise(
+          ctx, AlarmId::Unsupported,
+          fmt::format("{} ({})", gCodeText(static_cast<int>(written)), name));
     }
     if (const mbrt_status status =
             applyGCode(ctx, next, static_cast<int>(tenths), block)) {
@@ -396,7 +436,7 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
 /// Every word but G, P and L, in program order.
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
-  if (block.nonModal == 40 && letter == 'X') {
+  if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
     // X1.5 is 1.5 s; X1500 counts milliseconds, like P, unless literals
     // are whole units (3401#0 DPI).
     block.dwellSeconds =
@@ -409,18 +449,24 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
   }
-  if (const int axis = ctx.axisOf(letter); axis >= 0) {
-    block.motion.axisMask |= std::uint32_t{1} << axis;
-    return toCounts(ctx, word, ctx.axisScale(axis), &block.motion.axis[axis]);
+  if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
+    // X after U in one block: the last of the two counts.
+    const std::uint32_t bit = std::uint32_t{1} << axis;
+    block.motion.axisMask |= bit;
+    block.motion.incrementalMask = ctx.axisOf(letter) >= 0
+                                       ? block.motion.incrementalMask & ~bit
+                                       : block.motion.incrementalMask | bit;
+    return toCounts(ctx, word, addressCountsPerUnit(ctx, letter),
+                    ctx.axisCountsPerIncrement(axis), &block.motion.axis[axis]);
   }
   if (letter == 'R') {
     block.motion.hasR = true;
-    return toCounts(ctx, word, ctx.scale(), &block.motion.r);
+    return toLengthCounts(ctx, word, &block.motion.r);
   }
   if (isArcCenterLetter(letter)) {
     const int index = letter - 'I';
     block.motion.centerMask |= std::uint32_t{1} << index;
-    return toCounts(ctx, word, ctx.scale(), &block.motion.center[index]);
+    return toLengthCounts(ctx, word, &block.motion.center[index]);
   }
   if (numeric(word.value) < 0.0 &&
       (letter == 'F' || isWholeNumberAddress(letter))) {
@@ -436,19 +482,26 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   if (letter == 'Q') {
     block.q.emplace();
-    return toCounts(ctx, word, ctx.scale(), &*block.q);
+    return toLengthCounts(ctx, word, &*block.q);
   }
   const int index = lastWordIndex(letter);
   if (index < 0) {
-    // U and W are the incremental X and Z of a lathe (G code system A).
+    // U and W are the incremental X and Z of a lathe in G code system A.
+    const bool latheAddress = letter == 'U' || letter == 'W';
     return raise(
         ctx, AlarmId::ImproperNcAddress,
-        letter == 'U' || letter == 'W'
-            ? fmt::format("{} is not an address of this machine (on "
-                          "a lathe {} is the incremental {}; mbc "
-                          "has no lathe profile yet)",
-                          letter, letter, letter == 'U' ? 'X' : 'Z')
-            : fmt::format("{} is not an address of this machine", letter));
+        !latheAddress
+            ? fmt::format("{} is not an address of this machine", letter)
+        : ctx.profile.lathe()
+            ? fmt::format("{} is not an address of this machine (the "
+                          "incremental {} of G code system A; in system "
+                          "{} write G91 {})",
+                          letter, letter == 'U' ? 'X' : 'Z',
+                          ctx.profile.gCodeSystem, letter == 'U' ? 'X' : 'Z')
+            : fmt::format("{} is not an address of this machine (on "
+                          "a lathe {} is the incremental {}: give the "
+                          "profile \"series\": \"T\")",
+                          letter, letter, letter == 'U' ? 'X' : 'Z'));
   }
   if (word.kind == MBRT_WORD_DEC_LITERAL && isWholeNumberAddress(letter)) {
     // M3.0 is no M code (spec §1.5); a value, M[3.0] or M#1, is rounded.
@@ -461,6 +514,10 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   if (value > kMaxCodeValue) {
     return raise(ctx, AlarmId::TooManyDigits,
                  fmt::format("{}{}: at most 8 digits", letter, value));
+  }
+  if (letter == 'S' && block.frames.code == 920 && ctx.profile.lathe()) {
+    ctx.spindleLimit = value; // G50 S: not a spindle speed
+    return 0;
   }
   ctx.lastWords[index] = value;
   switch (letter) {
@@ -554,7 +611,7 @@ mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
 
 /// G00..G03 motion, when the block has any.
 mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
-  const bool arcMode = ctx.modal.motion >= 2;
+  const bool arcMode = ctx.modal.motion == 2 || ctx.modal.motion == 3;
   // An arc block may leave out the end point: a full circle (I J K) or, with
   // R, no motion at all.
   if (motion.axisMask != 0 ||
@@ -577,7 +634,7 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
     return raise(ctx, AlarmId::Unsupported,
                  "G50 with axis words or S: a lathe's coordinate system "
                  "setting or spindle speed limit (on a mill G50 cancels "
-                 "scaling); mbc has no lathe profile yet");
+                 "scaling); a lathe profile has \"series\": \"T\"");
   }
   const auto isG99 = [](const mbrt_word& w) {
     return w.letter == 'G' && gTenths(w) == 990.0;
@@ -589,8 +646,8 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
     return raise(ctx, AlarmId::Unsupported,
                  fmt::format("G99 F{}: a lathe's feed per revolution (on a "
                              "mill G99 is the canned cycle's R level and F "
-                             "is per minute; G95 feeds per revolution); mbc "
-                             "has no lathe profile yet",
+                             "is per minute; G95 feeds per revolution); "
+                             "a lathe profile has \"series\": \"T\"",
                              ctx.modal.feed));
   }
   return 0;
@@ -609,7 +666,7 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
   }
   if (ctx.compensation.codeInBlock && ctx.compensation.engaged &&
       ctx.modal.compensation != 40 && block.motion.centerMask != 0 &&
-      ctx.modal.motion <= 1) {
+      (ctx.modal.motion <= 1 || ctx.modal.motion == kThreadingMotion)) {
     return refuseUnderCompensation(
         ctx, fmt::format("G{} with I, J or K in offset mode (a vector "
                          "direction)",
@@ -704,7 +761,8 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
 
 /// P, L, Q, H and what kind of G codes the block holds, before anything
 /// executes.
-void scanWords(const mbrt_word* words, size_t count, Block& block) {
+void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+               Block& block) {
   for (size_t i = 0; i < count; ++i) {
     const char letter = words[i].letter;
     if (letter == 'P' || letter == 'L') {
@@ -719,7 +777,7 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
     } else if (letter == 'H') {
       block.frames.hasH = true;
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
-      const double tenths = gTenths(words[i]);
+      const double tenths = executedCode(ctx, words[i]);
       if (!setsOneField(tenths) || block.oneFieldCount == kMaxOneFieldCodes) {
         block.gCodes = GCodes::Other;
         continue;
@@ -733,7 +791,7 @@ void scanWords(const mbrt_word* words, size_t count, Block& block) {
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
   Block block;
-  scanWords(words, count, block);
+  scanWords(ctx, words, count, block);
   ctx.feedInBlock = false;
   ctx.compensation.codeInBlock = false;
   ctx.callingCode = {'\0', 0.0};
@@ -764,7 +822,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   // Lathe forms need a G code (G50, G99): most blocks have none.
   if (const mbrt_status status =
-          block.gCodes != GCodes::None
+          block.gCodes != GCodes::None && !ctx.profile.lathe()
               ? refuseLatheForms(ctx, block, words, count)
               : 0) {
     return status;

@@ -62,7 +62,7 @@ int axisDecimals(const mbrt_ctx& ctx, int axis) {
 void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
                           const mbrt_word& word) {
   const int axis = ctx.axisOf(word.letter);
-  const double scale = axis >= 0 ? ctx.axisScale(axis) : ctx.scale();
+  const double scale = addressCountsPerUnit(ctx, word.letter);
   const double value = numeric(word.value);
   const double counts =
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput

@@ -29,10 +29,11 @@ constexpr std::array kParameters = {
     ParameterSpec{1008, 1008, 0, 255, 0, true, true},     // #0 ROA, #1 RAB
     ParameterSpec{1260, 1260, 0, 999999, 0, false, true}, // deg per turn
     ParameterSpec{3401, 3401, 0, 255, 0, true},           // #0 DPI
-    ParameterSpec{3402, 3402, 0, 255, 0, true},           // #6 CLR
-    ParameterSpec{3403, 3403, 0, 255, 0, true},           // #5 CIR
-    ParameterSpec{3410, 3410, 0, 1e9, 0.02, false}, // arc radius tolerance
-    ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
+    ParameterSpec{3402, 3402, 0, 255, 0, true},      // #4 FPM (lathe), #6 CLR
+    ParameterSpec{3403, 3403, 0, 255, 0, true},      // #5 CIR
+    ParameterSpec{3410, 3410, 0, 1e9, 0.02, false},  // arc radius tolerance
+    ParameterSpec{3772, 3772, 0, 99999999, 0, true}, // maximum spindle speed
+    ParameterSpec{5001, 5001, 0, 255, 0, true},      // #0 TLC, #1 TLB
     ParameterSpec{5003, 5003, 0, 255, 0, true},     // #0 SUP, #1 SUV: CRC start
     ParameterSpec{5008, 5008, 0, 255, 0, true},     // #1 CNC, #3 CNV: CRC check
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift

@@ -279,11 +279,64 @@ std::uint32_t rotaryAxes(const Profile& profile) {
   return mask;
 }
 
+/// 1006#3 DIA per axis when the profile gives 1006; otherwise a lathe's X
+/// is programmed as a diameter.
+std::uint32_t diameterAxes(const Profile& profile) {
+  if (!profile.lathe()) {
+    return 0;
+  }
+  const auto dia = profile.axisParameters.find(1006);
+  if (dia == profile.axisParameters.end()) {
+    const auto x = profile.axes.find('X');
+    return x != std::string::npos ? std::uint32_t{1} << x : 0;
+  }
+  std::uint32_t mask = 0;
+  for (std::size_t axis = 0; axis < profile.axes.size(); ++axis) {
+    const bool diameter = (static_cast<long>(dia->second[axis]) & 8) != 0;
+    mask |= diameter ? std::uint32_t{1} << axis : 0;
+  }
+  return mask;
+}
+
+/// "series": the T series is a lathe, by default with the axes X and Z.
+void parseSeries(const json& root, Profile& profile) {
+  if (!root.contains("series")) {
+    return;
+  }
+  const json& value = root["series"];
+  if (value != "M" && value != "T") {
+    fail("series", "must be \"M\" (machining centre) or \"T\" (lathe)");
+  }
+  profile.series = static_cast<Series>(value.get<std::string>()[0]);
+  if (profile.lathe()) {
+    profile.axes = "XZ";
+  }
+}
+
+/// What the T series adds once every key is read: the G code system and
+/// the diameter axes.
+void finishLathe(Profile& profile) {
+  if (!profile.lathe()) {
+    return;
+  }
+  if (profile.axes.find('X') == std::string::npos ||
+      profile.axes.find('Z') == std::string::npos) {
+    fail("axes", "must name X and Z on a lathe (\"series\": \"T\")");
+  }
+  if (profile.parameterBit(3401, 6) && profile.parameterBit(3401, 7)) {
+    fail("parameters.3401", "must not set both bit 6 GSB and bit 7 GSC");
+  }
+  profile.gCodeSystem = profile.parameterBit(3401, 7)   ? 'C'
+                        : profile.parameterBit(3401, 6) ? 'B'
+                                                        : 'A';
+}
+
 Profile parseTopLevel(const json& root) {
   if (!root.is_object()) {
     throw ProfileError("machine profile: the top level must be an object");
   }
   Profile profile = defaultProfile();
+  parseSeries(root, profile);
   // Axes first: work offsets are checked against the axis count.
   if (root.contains("axes")) {
     parseAxes(root["axes"], profile);
@@ -292,7 +345,7 @@ Profile parseTopLevel(const json& root) {
     parseToolOffsets(root["tool_offsets"], profile);
   }
   for (const auto& [key, item] : root.items()) {
-    if (key == "axes" || key == "tool_offsets") {
+    if (key == "axes" || key == "tool_offsets" || key == "series") {
       continue;
     }
     if (key == "units") {
@@ -332,6 +385,8 @@ Profile parseTopLevel(const json& root) {
     }
   }
   profile.rotaryMask = rotaryAxes(profile);
+  profile.diameterMask = diameterAxes(profile) & ~profile.rotaryMask;
+  finishLathe(profile);
   for (int axis = 0; axis < static_cast<int>(profile.axes.size()); ++axis) {
     const auto bits = static_cast<long>(profile.axisParameter(1008, axis));
     const std::uint32_t bit = std::uint32_t{1} << axis;

@@ -36,8 +36,17 @@ struct ToolOffset {
 
 using AxisValues = std::array<double, MBRT_MAX_AXES>;
 
+/// FANUC's two series: M (machining centres) and T (lathes).
+enum class Series : char { Mill = 'M', Lathe = 'T' };
+
 struct Profile {
+  Series series = Series::Mill;
+  // The lathe's G code system A, B or C (3401#6 GSB, #7 GSC).
+  char gCodeSystem = 'A';
   std::string axes = "XYZ";
+  // Bit n: axis n is programmed as a diameter (1006#3 DIA; by default X on
+  // a lathe).
+  std::uint32_t diameterMask = 0;
   // Bit n: axis n is rotary (1006#0 ROT; by default A, B and C): degrees,
   // 0.001 degree whatever G20/G21.
   std::uint32_t rotaryMask = 0;
@@ -86,6 +95,9 @@ struct Profile {
   /// it, 0 for a parameter mbc does not model.
   double parameter(int number) const;
   bool parameterBit(int number, int bit) const;
+
+  bool lathe() const { return series == Series::Lathe; }
+
   /// A per-axis parameter's value for `axis`, 0 when the profile does not
   /// set it.
   double axisParameter(int number, int axis) const;

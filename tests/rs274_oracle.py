@@ -1,0 +1,23 @@
+"""What the rs274 oracle tests share: both sides run in a scratch folder,
+and a side that loses or gains a move fails before any comparison."""
+
+import pathlib
+import shutil
+import tempfile
+
+
+def collect(mbc_side, rs274_side, expected):
+    """(mbc's moves, rs274's moves) from `side(folder)`, or the exit status:
+    77 when rs274 is not installed, 1 when a side has not `expected`."""
+    if shutil.which("rs274") is None:
+        print("rs274 is not installed (make bench installs linuxcnc-uspace)")
+        return 77
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = pathlib.Path(tmp)
+        ours = mbc_side(folder)
+        theirs = rs274_side(folder)
+    if len(ours) != expected or len(theirs) != expected:
+        print(f"moves: mbc {len(ours)}, rs274 {len(theirs)}, "
+              f"expected {expected}")
+        return 1
+    return ours, theirs

@@ -1,0 +1,211 @@
+// The T series (lathe) profile: G code systems A, B and C, diameter
+// programming, U/W, G50, constant surface speed and the clock of feeds per
+// revolution and threads. Expected times are derived by hand in comments.
+#include <cmath>
+#include <numbers>
+
+#include "runtime_test_support.h"
+
+namespace mbc::test {
+namespace {
+
+constexpr const char* kLathe = R"({"series": "T"})";
+constexpr const char* kSystemB =
+    R"({"series": "T", "parameters": {"3401": 64}})";
+constexpr const char* kSystemC =
+    R"({"series": "T", "parameters": {"3401": 128}})";
+
+bool reports(const Machine& m, std::string_view text) {
+  return m.report().find(text) != std::string::npos;
+}
+
+TEST(RuntimeLathe, ProfileKeys) {
+  EXPECT_EQ(profileError(R"({"series": "T"})"), "");
+  EXPECT_EQ(profileError(R"({"series": "T", "axes": ["X", "Z", "C"]})"), "");
+  EXPECT_NE(profileError(R"({"series": "L"})").find("\"series\" must be"),
+            std::string::npos);
+  EXPECT_NE(profileError(R"({"series": "T", "axes": ["X", "Y"]})")
+                .find("must name X and Z on a lathe"),
+            std::string::npos);
+  EXPECT_NE(profileError(R"({"series": "T", "parameters": {"3401": 192}})")
+                .find("GSB"),
+            std::string::npos);
+}
+
+TEST(RuntimeLathe, PowerOnState) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G00 X20. Z1."), 0);
+  EXPECT_STREQ(m.motions()[0].axis_names, "XZ");
+  EXPECT_EQ(m.read(4016), 18.0); // G18
+  EXPECT_EQ(m.read(4005), 99.0); // feed per revolution, system A
+  EXPECT_EQ(m.read(4002), 97.0);
+  EXPECT_EQ(m.read(4003), 0.0); // system A has no G90/G91
+  Machine fpm(R"({"series": "T", "parameters": {"3402": 16}})");
+  EXPECT_EQ(fpm.read(4005), 98.0); // 3402#4 FPM
+}
+
+TEST(RuntimeLathe, DiameterWordsReadAndShowDiameters) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G00 X40.001 Z10."), 0);
+  EXPECT_EQ(m.read(5001), 40.001); // half an increment of radius, exact
+  EXPECT_EQ(m.motions()[0].end[0], 40.001);
+  ASSERT_EQ(m.block("G00 X40001 Z10"), 0); // increments: 40.001, 0.010
+  EXPECT_EQ(m.read(5001), 40.001);
+  EXPECT_EQ(m.read(5002), 0.01);
+  ASSERT_EQ(m.block("G00 Z10.0004"), 0); // rounded to the increment
+  EXPECT_EQ(m.read(5002), 10.0);
+  ASSERT_EQ(m.block("G01 U-10. W-5. F0.2 S500"), 0);
+  EXPECT_EQ(m.read(5001), 30.001);
+  EXPECT_EQ(m.read(5002), 5.0);
+  // One block with X and U: the later word counts.
+  ASSERT_EQ(m.block("G00 X10. U4."), 0);
+  EXPECT_EQ(m.read(5001), 34.001);
+  ASSERT_EQ(m.block("G00 U4. X10."), 0);
+  EXPECT_EQ(m.read(5001), 10.0);
+}
+
+// The feed of an arc follows its true (radius) geometry; I is a radius.
+TEST(RuntimeLathe, ArcsUseRadii) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G98 G00 X0 Z0"), 0);
+  // From radius 0 to radius 10 about (r 10, z 0): a quarter circle of
+  // radius 10, 15.708 mm at F100: 9.4248 s.
+  ASSERT_EQ(m.block("G02 X20. Z-10. I10. K0 F100."), 0);
+  const mbrt_motion& arc = m.motions()[1];
+  EXPECT_EQ(arc.end[0], 20.0);
+  EXPECT_EQ(arc.center_axes[0], 'Z');
+  EXPECT_EQ(arc.center[0], 0.0);
+  EXPECT_EQ(arc.center[1], 20.0); // shown as a diameter, like X
+  EXPECT_EQ(m.read(3001), std::floor(5.0 * std::numbers::pi / 100.0 * 60000.0));
+  // R is a radius too: X20 Z-10 to X40 Z-20 with R10, another quarter.
+  ASSERT_EQ(m.block("G03 X40. Z-20. R10."), 0);
+  EXPECT_EQ(m.read(3001),
+            std::floor(10.0 * std::numbers::pi / 100.0 * 60000.0));
+}
+
+TEST(RuntimeLathe, CoordinateSettingAndSpindleLimit) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G50 X200. Z100."), 0);
+  EXPECT_TRUE(m.motions().empty());
+  EXPECT_EQ(m.read(5041), 200.0);
+  EXPECT_EQ(m.read(5042), 100.0);
+  ASSERT_EQ(m.block("G00 U-20."), 0);
+  EXPECT_EQ(m.read(5001), 180.0);
+  EXPECT_EQ(m.read(5021), -20.0); // the machine moved 10 mm of radius
+  ASSERT_EQ(m.block("S800 M03"), 0);
+  ASSERT_EQ(m.block("G50 S2000"), 0); // a limit, not a speed
+  EXPECT_EQ(m.read(4119), 800.0);
+}
+
+// Feed per revolution in G97: F0.2 at 1000 rpm is 200 mm/min: 10 mm take
+// 3 s.
+TEST(RuntimeLathe, FeedPerRevolution) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S1000 M03"), 0);
+  ASSERT_EQ(m.block("G00 X20. Z0"), 0);
+  const double before = m.read(3001);
+  ASSERT_EQ(m.block("G01 W-10. F0.2"), 0);
+  EXPECT_NEAR(m.read(3001) - before, 3000.0, 1.0);
+  Machine stopped(kLathe);
+  ASSERT_EQ(stopped.block("G00 X20. Z0"), 0);
+  EXPECT_EQ(stopped.block("G01 W-10. F0.2"), status(AlarmId::FeedZero));
+  EXPECT_TRUE(reports(stopped, "feed per revolution (G99) needs a spindle"));
+}
+
+// G96 facing from X100 to X0 at 200 m/min, limited to 2000 rpm, F0.2 per
+// revolution. A revolution takes 2 pi r / 200000 min at radius r mm; the
+// limit holds below rc = 200000 / (2 pi 2000) = 15.9155 mm, where it takes
+// 1/2000 min. Time = (1/F) [pi (50^2 - rc^2) / 200000 + rc / 2000]
+// = 5 (0.0352913 + 0.0079577) min = 12.9747 s.
+TEST(RuntimeLathe, ConstantSurfaceSpeedFacing) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G50 S2000"), 0);
+  ASSERT_EQ(m.block("G00 X100. Z0"), 0);
+  const double before = m.read(3001);
+  ASSERT_EQ(m.block("G96 S200 M03"), 0);
+  ASSERT_EQ(m.block("G01 X0 F0.2"), 0);
+  const double rc = 200000.0 / (2.0 * std::numbers::pi * 2000.0);
+  const double minutes =
+      5.0 * (std::numbers::pi * (2500.0 - rc * rc) / 200000.0 + rc / 2000.0);
+  EXPECT_NEAR(m.read(3001) - before, minutes * 60000.0, 1.0);
+  // Without a limit the speed rises to the centre: the mean time of a
+  // revolution is pi 50 / 200000 min over the 50 mm: 5 pi 2500 / 200000.
+  Machine free(kLathe);
+  ASSERT_EQ(free.block("G00 X100. Z0"), 0);
+  const double start = free.read(3001);
+  ASSERT_EQ(free.block("G96 S200 G01 X0 F0.2"), 0);
+  EXPECT_NEAR(free.read(3001) - start,
+              5.0 * std::numbers::pi * 2500.0 / 200000.0 * 60000.0, 1.0);
+}
+
+// G32: F is the lead per revolution along the longer axis: 30 mm of Z at
+// 2 mm and 500 rpm take 30 / 1000 min = 1.8 s, taper or not, G98 or G99.
+TEST(RuntimeLathe, ThreadingLead) {
+  for (const char* mode : {"G99", "G98"}) {
+    Machine m(kLathe);
+    ASSERT_EQ(m.block(std::string(mode) + " G97 S500 M03"), 0);
+    ASSERT_EQ(m.block("G00 X30. Z5."), 0);
+    double before = m.read(3001);
+    ASSERT_EQ(m.block("G32 W-30. F2."), 0);
+    EXPECT_NEAR(m.read(3001) - before, 1800.0, 1.0) << mode;
+    EXPECT_EQ(m.read(4001), 32.0);
+    ASSERT_EQ(m.block("G00 U10. W30."), 0);
+    before = m.read(3001);
+    ASSERT_EQ(m.block("G32 U-10. W-30. F2."), 0);
+    EXPECT_NEAR(m.read(3001) - before, 1800.0, 1.0) << mode;
+  }
+}
+
+TEST(RuntimeLathe, DwellWords) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G04 U1.5"), 0);
+  EXPECT_EQ(m.read(3001), 1500.0);
+  ASSERT_EQ(m.block("G04 X2."), 0);
+  ASSERT_EQ(m.block("G04 P500"), 0);
+  EXPECT_EQ(m.read(3001), 4000.0);
+  EXPECT_TRUE(m.motions().empty());
+}
+
+TEST(RuntimeLathe, SystemBAndC) {
+  Machine b(kSystemB);
+  EXPECT_EQ(b.read(4005), 95.0);
+  EXPECT_EQ(b.read(4003), 90.0);
+  ASSERT_EQ(b.block("G92 X100. Z50. S1500"), 0); // system B's G50
+  EXPECT_EQ(b.read(5041), 100.0);
+  ASSERT_EQ(b.block("G91 G00 X-20."), 0);
+  EXPECT_EQ(b.read(5001), 80.0);
+  ASSERT_EQ(b.block("G94 G90"), 0);
+  EXPECT_EQ(b.read(4005), 94.0);
+  ASSERT_EQ(b.block("S600 G33 Z20. F1.5"), 0);
+  EXPECT_EQ(b.read(4001), 33.0);
+  EXPECT_EQ(b.block("G00 U5."), status(AlarmId::ImproperNcAddress));
+  EXPECT_TRUE(reports(b, "in system B write G91 X"));
+  Machine c(kSystemC);
+  ASSERT_EQ(c.block("G70"), 0); // inch in system C
+  EXPECT_EQ(c.read(4006), 70.0);
+}
+
+TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"G71 U2. R1.", "G71 (stock removal in turning)"},
+      {"G90 X40. Z-20. F0.2", "G90 (outer diameter/internal diameter"},
+      {"G41 G01 X20. Z0", "G41 (tool nose radius compensation left)"},
+  };
+  for (const auto& [block, text] : cases) {
+    Machine m(kLathe);
+    EXPECT_EQ(m.block(block), status(AlarmId::Unsupported)) << block;
+    EXPECT_TRUE(reports(m, text)) << m.report();
+  }
+  Machine a(kLathe);
+  EXPECT_EQ(a.block("G91 U1."), status(AlarmId::ImproperGCode));
+  Machine b(kSystemB);
+  EXPECT_EQ(b.block("G77 X40. Z-20. F0.2"), status(AlarmId::Unsupported));
+  EXPECT_TRUE(reports(b, "G77 (outer diameter"));
+  Machine mill;
+  EXPECT_EQ(mill.block("G43 H1"), 0);
+  Machine lathe(kLathe);
+  EXPECT_EQ(lathe.block("G43 H1"), status(AlarmId::ImproperGCode));
+}
+
+} // namespace
+} // namespace mbc::test
