@@ -207,5 +207,95 @@ TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   EXPECT_EQ(lathe.block("G43 H1"), status(AlarmId::ImproperGCode));
 }
 
+constexpr const char* kOffsets = R"({"series": "T", "tool_offsets": {
+  "1": {"x_geometry": -250, "z_geometry": -400, "x_wear": 0.04,
+        "z_wear": -0.02, "r_geometry": 0.8, "tip": 3}}})";
+
+// The geometry offset shifts the coordinates (the tool stays); the wear
+// offset moves the tool in the T code's block.
+TEST(RuntimeLatheOffsets, TCodeShiftsAndMoves) {
+  Machine m(kOffsets);
+  ASSERT_EQ(m.block("T0101"), 0);
+  ASSERT_EQ(m.motions().size(), 1U); // the wear: 0.04 of diameter, -0.02
+  EXPECT_EQ(m.motions()[0].kind, MBRT_MOTION_RAPID);
+  EXPECT_NEAR(m.motions()[0].machine[0], 0.04, 1e-12);
+  EXPECT_NEAR(m.motions()[0].machine[1], -0.02, 1e-12);
+  EXPECT_EQ(m.read(5001), 250.0); // the tool tip, geometry shifted
+  EXPECT_EQ(m.read(5002), 400.0);
+  EXPECT_NEAR(m.read(5081), -249.96, 1e-9);
+  ASSERT_EQ(m.block("G00 X50. Z2."), 0);
+  EXPECT_NEAR(m.motions()[1].machine[0], 50.0 - 250.0 + 0.04, 1e-9);
+  EXPECT_NEAR(m.motions()[1].machine[1], 2.0 - 400.0 - 0.02, 1e-9);
+  EXPECT_EQ(m.motions()[1].end[0], 50.0);
+  // T0100 takes the wear back off; the geometry offset stays (5002#5 LGC).
+  ASSERT_EQ(m.block("T0100"), 0);
+  EXPECT_NEAR(m.motions()[2].machine[0], 50.0 - 250.0, 1e-9);
+  EXPECT_EQ(m.read(5001), 50.0);
+  EXPECT_NEAR(m.read(5081), -250.0, 1e-9);
+}
+
+TEST(RuntimeLatheOffsets, Variables) {
+  Machine m(kOffsets);
+  EXPECT_EQ(m.read(2001), 0.04);
+  EXPECT_EQ(m.read(10001), 0.04);
+  EXPECT_EQ(m.read(2101), -0.02);
+  EXPECT_EQ(m.read(2701), -250.0);
+  EXPECT_EQ(m.read(15001), -250.0);
+  EXPECT_EQ(m.read(16001), -400.0);
+  EXPECT_EQ(m.read(2901), 0.8);
+  EXPECT_EQ(m.read(17001), 0.8);
+  EXPECT_EQ(m.read(2301), 3.0);
+  EXPECT_EQ(m.read(13001), 3.0);
+  EXPECT_EQ(m.read(2264), 0.0);
+  ASSERT_EQ(m.write(2001, 0.1), 0);
+  EXPECT_EQ(m.read(10001), 0.1);
+  ASSERT_EQ(m.write(12002, 0.40004), 0); // rounded to the increment
+  EXPECT_EQ(m.read(2202), 0.4);
+  mbrt_num value = 0;
+  for (const double n : {2065.0, 2401.0, 14001.0, 10065.0, 18001.0}) {
+    EXPECT_EQ(mbrt_read_var(m.ctx(), n, &value),
+              status(AlarmId::VariableOutOfRange))
+        << n;
+  }
+  EXPECT_EQ(m.write(2301, 10.0), status(AlarmId::ArgumentOutOfRange));
+  Machine y(R"({"series": "T", "axes": ["X", "Y", "Z"]})");
+  EXPECT_EQ(y.read(2401), 0.0);
+  EXPECT_EQ(y.read(19001), 0.0);
+  Machine combined(
+      R"({"series": "T", "tool_offsets": {"geometry_wear": false}})");
+  EXPECT_EQ(mbrt_read_var(combined.ctx(), 2701, &value),
+            status(AlarmId::VariableOutOfRange));
+  EXPECT_TRUE(reports(combined, "geometry offsets need"));
+  Machine mill;
+  EXPECT_EQ(mbrt_read_var(mill.ctx(), 2801, &value),
+            status(AlarmId::VariableOutOfRange));
+  EXPECT_TRUE(reports(mill, "a lathe's tool offset"));
+}
+
+TEST(RuntimeLatheOffsets, G10WritesOffsets) {
+  Machine m(kOffsets);
+  ASSERT_EQ(m.block("G10 P10002 X-200. Z-300. R0.4 Q2"), 0);
+  ASSERT_EQ(m.block("G10 P2 X0.1 W-0.05"), 0);
+  ASSERT_EQ(m.block("G10 P2 U0.02 W-0.01 C0.1"), 0);
+  EXPECT_TRUE(m.motions().empty());
+  EXPECT_EQ(m.read(2702), -200.0);
+  EXPECT_EQ(m.read(2802), -300.0);
+  EXPECT_EQ(m.read(2902), 0.4);
+  EXPECT_EQ(m.read(2302), 2.0);
+  EXPECT_NEAR(m.read(2002), 0.12, 1e-12);
+  EXPECT_NEAR(m.read(2102), -0.06, 1e-12);
+  EXPECT_NEAR(m.read(2202), 0.1, 1e-12);
+  ASSERT_EQ(m.block("G10 P1 X200"), 0); // increments: 0.2
+  EXPECT_NEAR(m.read(2001), 0.2, 1e-12);
+  EXPECT_EQ(m.block("G10 P65 X0"), status(AlarmId::IllegalPInG10));
+  EXPECT_EQ(m.block("T0165"), status(AlarmId::IllegalOffsetNumber));
+  Machine combined(
+      R"({"series": "T", "tool_offsets": {"geometry_wear": false}})");
+  EXPECT_EQ(combined.block("G10 P10001 X1."), status(AlarmId::IllegalPInG10));
+  ASSERT_EQ(combined.block("G10 P1 X-100. Z-50."), 0);
+  ASSERT_EQ(combined.block("T0101"), 0);
+  EXPECT_NEAR(combined.motions()[0].machine[0], -100.0, 1e-9);
+}
+
 } // namespace
 } // namespace mbc::test

@@ -57,6 +57,7 @@ void loadProfile(mbrt_ctx& ctx) {
     }
   }
   ctx.toolOffsets = profile.toolOffsets;
+  ctx.latheOffsets = profile.latheOffsets;
   ctx.commons.fill(vacant());
   ctx.commons98000.fill(vacant());
   for (const auto& [number, value] : profile.variables) {

@@ -127,6 +127,10 @@ struct Frames {
   int lengthMode = 49; // 43, 44, 49
   int lengthAxis = -1; // the axis the tool length offset moves
   Counts length = 0;   // the offset on that axis, signed
+  // A lathe's tool position offset (lathe_tools.h): the geometry and wear
+  // of the offset the last T code selected, per axis.
+  AxisCounts toolGeometry{};
+  AxisCounts toolWear{};
 
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
 };
@@ -257,6 +261,7 @@ struct mbrt_ctx {
   std::array<std::uint32_t, 4> outputWords{}; // UO000-UO031 ... UO300-UO331
   std::array<std::uint32_t, 4> inputWords{};  // UI000-UI031 ... UI300-UI331
   std::vector<mbc::rt::ToolOffset> toolOffsets;
+  std::vector<mbc::rt::LatheOffset> latheOffsets; // a lathe's instead
   std::vector<mbc::rt::AxisCounts> workOffsets;
   double clockMs = 0.0;
   double clockHours = 0.0;

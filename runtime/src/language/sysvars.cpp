@@ -19,6 +19,7 @@
 #include "flat_gcode.h"
 #include "frames.h"
 #include "lathe_codes.h"
+#include "lathe_offset_vars.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -190,6 +191,23 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   ctx.toolOffsets[index + 1].*field = units;
   flattenToolOffset(ctx, offsetL(field), index + 1, units);
   return 0;
+}
+
+/// #2801-#2999 hold a lathe's geometry offsets (lathe_offset_vars.h, read
+/// before this table); a mill has none.
+mbrt_status refuseLatheOffset(mbrt_ctx& ctx, int index) {
+  return raise(ctx, AlarmId::VariableOutOfRange,
+               fmt::format("#{} (a lathe's tool offset: a profile with "
+                           "\"series\": \"T\" has it)",
+                           2801 + index));
+}
+
+mbrt_status readLatheOnly(mbrt_ctx& ctx, int index, Num*) {
+  return refuseLatheOffset(ctx, index);
+}
+
+mbrt_status writeLatheOnly(mbrt_ctx& ctx, int index, Num, const char*) {
+  return refuseLatheOffset(ctx, index);
 }
 
 /// #98000-#98499: commons a profile with "common_98000" has.
@@ -389,8 +407,10 @@ Counts skipPosition(const mbrt_ctx& ctx, int axis) {
   return ctx.skipPosition[axis];
 }
 
+/// #5081+: the tool length offset, or a lathe's tool position offset.
 Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
-  return axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
+  return (axis == ctx.frames.lengthAxis ? ctx.frames.length : 0) +
+         ctx.frames.toolGeometry[axis] + ctx.frames.toolWear[axis];
 }
 
 /// Axes beyond the machine's read 0 and ignore writes, so that programs
@@ -462,6 +482,7 @@ constexpr std::array kSystemVariables = {
                 true},
     SysVarRange{2601, 2800, readToolOffset<3, true>, writeToolOffset<3, true>,
                 true},
+    SysVarRange{2801, 2999, readLatheOnly, writeLatheOnly, true},
     SysVarRange{3000, 3000, readZero, writeMacroAlarm},
     SysVarRange{3001, 3001, readClockMs, writeClockMs},
     SysVarRange{3002, 3002, readClockHours, writeClockHours},
@@ -579,6 +600,9 @@ bool dependsOnProfile(int n) {
 namespace mbc::rt {
 
 mbrt_status readSystemVariable(mbrt_ctx& ctx, long n, Num* out) {
+  if (ctx.profile.lathe() && isLatheOffsetNumber(n)) {
+    return readLatheOffset(ctx, n, out);
+  }
   const SysVarRange* range = findSystemVariable(n);
   if (range == nullptr) {
     return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
@@ -588,6 +612,9 @@ mbrt_status readSystemVariable(mbrt_ctx& ctx, long n, Num* out) {
 
 mbrt_status writeSystemVariable(mbrt_ctx& ctx, long n, Num value,
                                 const char* comment) {
+  if (ctx.profile.lathe() && isLatheOffsetNumber(n)) {
+    return writeLatheOffset(ctx, n, value);
+  }
   const SysVarRange* range = findSystemVariable(n);
   if (range == nullptr) {
     return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));

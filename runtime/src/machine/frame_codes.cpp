@@ -13,6 +13,8 @@
 #include "data_input.h"
 #include "frames.h"
 #include "g_codes.h"
+#include "lathe_codes.h"
+#include "lathe_tools.h"
 
 namespace mbc::rt {
 
@@ -238,6 +240,8 @@ mbrt_status executeFrameCode(mbrt_ctx& ctx, const FrameWords& words) {
       return setRotation(ctx, words);
     case 100:
       return programmableDataInput(ctx, words);
+    case kLatheG10:
+      return writeLatheOffsets(ctx, words);
     default:
       return 0;
   }
@@ -255,7 +259,7 @@ namespace {
 /// What of a block's frame words mbc does not model under cutter
 /// compensation, or "" (G10 offset data is fine).
 std::string frameChangeName(const FrameWords& words) {
-  if (words.code != 0 && words.code != 100) {
+  if (words.code != 0 && words.code != 100 && words.code != kLatheG10) {
     return gCodeText(words.code);
   }
   if (words.cancelScaling || words.cancelRotation) {

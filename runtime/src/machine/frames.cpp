@@ -105,7 +105,8 @@ AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
 AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work) {
   AxisCounts machine = originOf(ctx);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    machine[axis] += work[axis];
+    machine[axis] +=
+        work[axis] + ctx.frames.toolGeometry[axis] + ctx.frames.toolWear[axis];
   }
   if (ctx.frames.lengthAxis >= 0) {
     machine[ctx.frames.lengthAxis] += ctx.frames.length;
@@ -117,7 +118,8 @@ AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
   const AxisCounts origin = originOf(ctx);
   AxisCounts work{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    work[axis] = machine[axis] - origin[axis];
+    work[axis] = machine[axis] - origin[axis] - ctx.frames.toolGeometry[axis] -
+                 ctx.frames.toolWear[axis];
   }
   if (ctx.frames.lengthAxis >= 0) {
     work[ctx.frames.lengthAxis] -= ctx.frames.length;

@@ -14,6 +14,7 @@ inline constexpr int kLatheThreading = kLatheOwnCode + 320;    // G32
 inline constexpr int kLatheTurningCycle = kLatheOwnCode + 900; // G90
 inline constexpr int kLatheThreadCycle = kLatheOwnCode + 920;  // G92
 inline constexpr int kLatheFacingCycle = kLatheOwnCode + 940;  // G94
+inline constexpr int kLatheG10 = kLatheOwnCode + 100;          // offsets
 
 /// The lathe's group 01 codes of their own, as ModalState::motion holds
 /// them (system A's numbers).

@@ -15,6 +15,7 @@
 #include "frames.h"
 #include "g_codes.h"
 #include "lathe_codes.h"
+#include "lathe_tools.h"
 #include "look_ahead.h"
 #include "motion.h"
 #include "polar.h"
@@ -205,7 +206,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       case kLatheThreading:
         next.motion = kThreadingMotion;
         return 0;
+
       case kLatheOwnCode + 690: // G69: no mirror image is ever on
+        return 0;
+      case kLatheG10: // the block's words are offset data
+        block.frames.code = kLatheG10;
         return 0;
       case 960:
         next.surfaceSpeed = true;
@@ -774,7 +779,7 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
           (letter == 'P' && words[i].kind == MBRT_WORD_DEC_LITERAL);
     } else if (letter == 'Q') {
       block.qWritten = numeric(words[i].value);
-    } else if (letter == 'H') {
+    } else if (letter == 'H' && !ctx.profile.lathe()) {
       block.frames.hasH = true;
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
       const double tenths = executedCode(ctx, words[i]);
@@ -811,7 +816,8 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
     return status;
   }
-  for (size_t i = 0; i < count; ++i) {
+  // A lathe's G10 reads its own words (U adds, C is the nose radius).
+  for (size_t i = 0; i < count && block.frames.code != kLatheG10; ++i) {
     const char letter = words[i].letter;
     if (letter == 'G' || letter == 'P' || letter == 'L') {
       continue;
@@ -831,6 +837,16 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (const mbrt_status status =
           executeFrameCodes(ctx, block.frames, &lengthChanged)) {
     return status;
+  }
+  // A lathe's T code selects offsets, unless it calls O9000 (6001#5 TCS).
+  if (block.codes.t && ctx.profile.lathe() &&
+      !ctx.profile.parameterBit(6001, 5)) {
+    bool wearChanged = false;
+    if (const mbrt_status status =
+            selectLatheOffset(ctx, *block.codes.t, &wearChanged)) {
+      return status;
+    }
+    lengthChanged = lengthChanged || wearChanged;
   }
   const std::uint64_t movesBefore = ctx.moves;
   const std::uint64_t planeMovesBefore = ctx.compensation.planeMoves;

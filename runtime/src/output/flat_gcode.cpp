@@ -40,7 +40,7 @@ void appendFixedText(std::string& out, double value) {
 
 /// K is the repeat count of a canned cycle.
 bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
-  return ctx.axisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
+  return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
          (letter == 'K' && ctx.modal.cycle == 0) || letter == 'R' ||
          letter == 'Q';
 }
@@ -61,7 +61,7 @@ int axisDecimals(const mbrt_ctx& ctx, int axis) {
 
 void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
                           const mbrt_word& word) {
-  const int axis = ctx.axisOf(word.letter);
+  const int axis = ctx.movedAxisOf(word.letter);
   const double scale = addressCountsPerUnit(ctx, word.letter);
   const double value = numeric(word.value);
   const double counts =
@@ -72,14 +72,16 @@ void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
   appendUnitsText(out, counts / scale, axisDecimals(ctx, axis));
 }
 
-/// G04, G51, G68 and the look-ahead switches: blocks whose coordinate
-/// letters are no coordinates.
-bool hasOtherMeanings(const mbrt_word* words, size_t count) {
+/// G04, G51, G68, the look-ahead switches and a lathe's G10: blocks whose
+/// coordinate letters are no coordinates.
+bool hasOtherMeanings(const mbrt_ctx& ctx, const mbrt_word* words,
+                      size_t count) {
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter == 'G') {
       const double tenths = std::round(numeric(words[i].value) * 10.0);
       if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0 ||
-          isLookAheadCode(static_cast<int>(tenths))) {
+          isLookAheadCode(static_cast<int>(tenths)) ||
+          (tenths == 100.0 && ctx.profile.lathe())) {
         return true;
       }
     }
@@ -133,8 +135,13 @@ void send(mbrt_ctx& ctx, const std::string& line) {
   sendText(ctx, ctx.gcodeSink, line);
 }
 
-/// G10 writes in G90; a run in G91 goes back to it after.
+/// G10 writes in G90; a run in G91 goes back to it after. In a lathe's G
+/// code system A, G90 is a cycle and X is absolute anyway.
 void sendData(mbrt_ctx& ctx, const std::string& data) {
+  if (ctx.profile.lathe() && ctx.profile.gCodeSystem == 'A') {
+    send(ctx, data + '\n');
+    return;
+  }
   send(ctx,
        fmt::format("G90 {}\n{}", data, ctx.modal.incremental ? "G91\n" : ""));
 }
@@ -144,7 +151,7 @@ void sendData(mbrt_ctx& ctx, const std::string& data) {
 void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                   const mbrt_flow& flow) {
   const bool dropTransfer = transfers(words, count);
-  const bool exact = hasOtherMeanings(words, count);
+  const bool exact = hasOtherMeanings(ctx, words, count);
   const auto [callLetter, callValue] = ctx.callingCode;
   const bool codeCall =
       flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
@@ -200,6 +207,19 @@ void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
   }
   std::string data = fmt::format("G10 L{} P{} R", l, number);
   appendUnitsText(data, value, ctx.decimals());
+  sendData(ctx, data);
+}
+
+void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  std::string data = fmt::format("G10 P{} {}", p, letter);
+  if (letter == 'Q') {
+    data += fmt::format("{}", value);
+  } else {
+    appendUnitsText(data, value, ctx.decimals());
+  }
   sendData(ctx, data);
 }
 

@@ -20,6 +20,10 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset);
 /// D geometry, L13 D wear.
 void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value);
 
+/// A macro statement wrote a lathe's offset: G10 P (n wear, 10000 + n
+/// geometry) with the word of the value written (X, Y, Z, R, Q the tip).
+void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value);
+
 /// Cutter compensation's look-ahead was stopped by a macro statement (a
 /// read of the tool position): `blocks` dwells of 0, blocks without motion
 /// in the plane, stop it for a control as well.

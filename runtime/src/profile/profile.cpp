@@ -138,8 +138,70 @@ void parseToolOffset(const json& value, const std::string& path, char memory,
   }
 }
 
+/// A lathe's offset: the geometry fields only with geometry_wear.
+void parseLatheOffset(const json& value, const std::string& path,
+                      bool geometryWear, LatheOffset& offset) {
+  static constexpr std::pair<const char*, double LatheOffset::*> kFields[] = {
+      {"x_wear", &LatheOffset::xWear},
+      {"z_wear", &LatheOffset::zWear},
+      {"y_wear", &LatheOffset::yWear},
+      {"r_wear", &LatheOffset::rWear},
+      {"tip", &LatheOffset::tip},
+      {"x_geometry", &LatheOffset::xGeometry},
+      {"z_geometry", &LatheOffset::zGeometry},
+      {"y_geometry", &LatheOffset::yGeometry},
+      {"r_geometry", &LatheOffset::rGeometry}};
+  constexpr std::size_t kWithoutGeometry = 5;
+  for (const auto& [key, item] : object(value, path).items()) {
+    const std::string itemPath = child(path, key);
+    const auto* end = std::begin(kFields) +
+                      (geometryWear ? std::size(kFields) : kWithoutGeometry);
+    const auto* field =
+        std::find_if(std::begin(kFields), end,
+                     [&](const auto& f) { return key == f.first; });
+    if (field == end) {
+      unknownKey(itemPath);
+    }
+    offset.*(field->second) = number(item, itemPath);
+  }
+  if (offset.tip != std::floor(offset.tip) || offset.tip < 0 ||
+      offset.tip > 9) {
+    fail(child(path, "tip"), "must be a whole number from 0 to 9");
+  }
+}
+
+/// A lathe's "tool_offsets": count (64 by default), geometry_wear and one
+/// object per offset number.
+void parseLatheOffsets(const json& offsets, Profile& profile) {
+  profile.toolOffsetCount =
+      offsets.contains("count")
+          ? integer(offsets["count"], "tool_offsets.count", 1, kMaxToolOffsets)
+          : kDefaultLatheOffsets;
+  if (offsets.contains("geometry_wear")) {
+    profile.geometryWear =
+        boolean(offsets["geometry_wear"], "tool_offsets.geometry_wear");
+  }
+  profile.latheOffsets.assign(profile.toolOffsetCount + 1, LatheOffset{});
+  for (const auto& [key, item] : offsets.items()) {
+    if (key == "count" || key == "geometry_wear") {
+      continue;
+    }
+    const std::string path = child("tool_offsets", key);
+    const auto n = keyNumber(key);
+    if (!n || *n < 1 || *n > profile.toolOffsetCount) {
+      unknownKey(path);
+    }
+    parseLatheOffset(item, path, profile.geometryWear,
+                     profile.latheOffsets[*n]);
+  }
+}
+
 void parseToolOffsets(const json& value, Profile& profile) {
   const json& offsets = object(value, "tool_offsets");
+  if (profile.lathe()) {
+    parseLatheOffsets(offsets, profile);
+    return;
+  }
   if (offsets.contains("count")) {
     profile.toolOffsetCount =
         integer(offsets["count"], "tool_offsets.count", 1, kMaxToolOffsets);
@@ -310,6 +372,8 @@ void parseSeries(const json& root, Profile& profile) {
   profile.series = static_cast<Series>(value.get<std::string>()[0]);
   if (profile.lathe()) {
     profile.axes = "XZ";
+    profile.toolOffsetCount = kDefaultLatheOffsets;
+    profile.latheOffsets.assign(kDefaultLatheOffsets + 1, LatheOffset{});
   }
 }
 

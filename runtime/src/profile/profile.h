@@ -34,6 +34,22 @@ struct ToolOffset {
   double dWear = 0.0;
 };
 
+/// A lathe's offset: X (a diameter on a diameter axis), Z and Y position
+/// offsets, the tool nose radius R and the imaginary tip direction T (0-9).
+struct LatheOffset {
+  double xGeometry = 0.0;
+  double xWear = 0.0;
+  double zGeometry = 0.0;
+  double zWear = 0.0;
+  double yGeometry = 0.0;
+  double yWear = 0.0;
+  double rGeometry = 0.0;
+  double rWear = 0.0;
+  double tip = 0.0;
+};
+
+inline constexpr int kDefaultLatheOffsets = 64;
+
 using AxisValues = std::array<double, MBRT_MAX_AXES>;
 
 /// FANUC's two series: M (machining centres) and T (lathes).
@@ -62,10 +78,14 @@ struct Profile {
   std::map<int, double> parameters;
   std::map<int, AxisValues> axisParameters; // 1241: one value per axis
   int toolOffsetCount = 400;
-  char toolOffsetMemory = 'C';                   // offset memory type A, B or C
-  std::vector<ToolOffset> toolOffsets;           // index 0 unused
-  std::vector<AxisValues> workOffsets;           // kWorkOffsetCount entries
-  std::vector<std::pair<int, double>> variables; // #500..#999 start values
+  char toolOffsetMemory = 'C';         // offset memory type A, B or C
+  std::vector<ToolOffset> toolOffsets; // index 0 unused
+  // A lathe's offsets instead (index 0 unused), geometry and wear apart
+  // unless `geometryWear` is false (one value, in the wear fields).
+  std::vector<LatheOffset> latheOffsets;
+  bool geometryWear = true;
+  std::vector<AxisValues> workOffsets;              // kWorkOffsetCount entries
+  std::vector<std::pair<int, double>> variables;    // #500..#999 start values
   std::vector<std::pair<int, double>> inputSignals; // #1000..#1035
   bool extendedCommon = false;
   bool commons98000 = false; // #98000-#98499
