@@ -187,8 +187,8 @@ TEST(RuntimeLathe, SystemBAndC) {
 
 TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   const std::pair<const char*, const char*> cases[] = {
-      {"G71 U2. R1.", "G71 (stock removal in turning)"},
-      {"G90 X40. Z-20. F0.2", "G90 (outer diameter/internal diameter"},
+      {"G34 Z-20. F2. K0.1", "G34 (variable-lead threading)"},
+      {"G07.1 C20.", "G7.1 (cylindrical interpolation)"},
       {"G41 G01 X20. Z0", "G41 (tool nose radius compensation left)"},
   };
   for (const auto& [block, text] : cases) {
@@ -199,8 +199,8 @@ TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   Machine a(kLathe);
   EXPECT_EQ(a.block("G91 U1."), status(AlarmId::ImproperGCode));
   Machine b(kSystemB);
-  EXPECT_EQ(b.block("G77 X40. Z-20. F0.2"), status(AlarmId::Unsupported));
-  EXPECT_TRUE(reports(b, "G77 (outer diameter"));
+  EXPECT_EQ(b.block("G12.1"), status(AlarmId::Unsupported));
+  EXPECT_TRUE(reports(b, "G12.1 (polar coordinate interpolation mode)"));
   Machine mill;
   EXPECT_EQ(mill.block("G43 H1"), 0);
   Machine lathe(kLathe);
@@ -295,6 +295,260 @@ TEST(RuntimeLatheOffsets, G10WritesOffsets) {
   ASSERT_EQ(combined.block("G10 P1 X-100. Z-50."), 0);
   ASSERT_EQ(combined.block("T0101"), 0);
   EXPECT_NEAR(combined.motions()[0].machine[0], -100.0, 1e-9);
+}
+
+/// The end points of the motions from `first` on, as (X, Z) pairs.
+std::vector<std::pair<double, double>> ends(const Machine& m,
+                                            std::size_t first = 0) {
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = first; i < m.motions().size(); ++i) {
+    out.emplace_back(m.motions()[i].end[0], m.motions()[i].end[1]);
+  }
+  return out;
+}
+
+using Points = std::vector<std::pair<double, double>>;
+
+// G90 from A (X52 Z2): rapid to the cut's X, feed to the end, feed out in
+// X, rapid back; X alone repeats with the same Z; R tapers (the cut starts
+// at X + 2R).
+TEST(RuntimeLatheCycles, OuterDiameterCycle) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S1000 G00 X52. Z2."), 0);
+  ASSERT_EQ(m.block("G90 X45. Z-30. F0.25"), 0);
+  ASSERT_EQ(m.block("X40."), 0);
+  EXPECT_EQ(ends(m, 1), (Points{{45, 2},
+                                {45, -30},
+                                {52, -30},
+                                {52, 2},
+                                {40, 2},
+                                {40, -30},
+                                {52, -30},
+                                {52, 2}}));
+  EXPECT_EQ(m.motions()[1].kind, MBRT_MOTION_RAPID);
+  EXPECT_EQ(m.motions()[2].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.motions()[3].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.motions()[4].kind, MBRT_MOTION_RAPID);
+  EXPECT_EQ(m.motions()[2].cycle, 90);
+  EXPECT_EQ(m.read(4001), 90.0);
+  EXPECT_EQ(m.read(5001), 52.0); // back at A
+  ASSERT_EQ(m.block("G90 X40. Z-30. R-2.5"), 0);
+  EXPECT_EQ(ends(m, 9)[0], std::make_pair(35.0, 2.0));
+  EXPECT_EQ(ends(m, 9)[1], std::make_pair(40.0, -30.0));
+  ASSERT_EQ(m.block("G00 X60."), 0); // G00 ends the cycle
+  EXPECT_EQ(m.read(4001), 0.0);
+  Machine b(kSystemB);
+  ASSERT_EQ(b.block("G95 S1000 G00 X52. Z2."), 0);
+  ASSERT_EQ(b.block("G77 X45. Z-30. F0.25"), 0);
+  EXPECT_EQ(b.motions()[2].cycle, 77);
+  EXPECT_EQ(b.read(4001), 77.0);
+}
+
+// G94 faces: rapid in Z, feed in X, feed back in Z, rapid back in X. G92
+// threads with rapid returns; its time follows the lead: 25 mm at 1.5 mm
+// and 1000 rpm take 1 s.
+TEST(RuntimeLatheCycles, FaceAndThreadCycles) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S1000 G00 X52. Z2."), 0);
+  ASSERT_EQ(m.block("G94 X20. Z-2. F0.2"), 0);
+  EXPECT_EQ(ends(m, 1), (Points{{52, -2}, {20, -2}, {20, 2}, {52, 2}}));
+  ASSERT_EQ(m.block("G00 X25. Z5."), 0);
+  ASSERT_EQ(m.block("G92 X19.3 Z-20. F1.5"), 0);
+  EXPECT_EQ(ends(m, 6), (Points{{19.3, 5}, {19.3, -20}, {25, -20}, {25, 5}}));
+  EXPECT_EQ(m.motions()[8].kind, MBRT_MOTION_RAPID);
+  const double before = m.read(3001);
+  ASSERT_EQ(m.block("G98 X18.9"), 0);
+  // In 3.05 and out 3.05 of radius, back 25 along Z, at 10 m/min.
+  const double rapids = (3.05 + 3.05 + 25.0) / 10000.0 * 60000.0;
+  EXPECT_NEAR(m.read(3001) - before, 1000.0 + rapids, 1.0);
+}
+
+// G74 on the centre: pecks of 5 mm backing out 1 mm, then back to A.
+TEST(RuntimeLatheCycles, FacePeckDrilling) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S800 G00 X0 Z2."), 0);
+  ASSERT_EQ(m.block("G74 R1."), 0);
+  ASSERT_EQ(m.block("G74 Z-20. Q5000 F0.1"), 0);
+  EXPECT_EQ(ends(m, 1), (Points{{0, -3},
+                                {0, -2},
+                                {0, -8},
+                                {0, -7},
+                                {0, -13},
+                                {0, -12},
+                                {0, -18},
+                                {0, -17},
+                                {0, -20},
+                                {0, 2}}));
+  EXPECT_EQ(m.motions()[1].cycle, 74);
+}
+
+// G75: columns 1.5 mm apart in Z, pecks of 1.5 mm of radius (3 of
+// diameter) in X backing out 0.3, then rapid out and across.
+TEST(RuntimeLatheCycles, Grooving) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S600 G00 X26. Z-24."), 0);
+  ASSERT_EQ(m.block("G75 R0.3"), 0);
+  ASSERT_EQ(m.block("G75 X20. Z-25.5 P1500 Q1500 F0.06"), 0);
+  EXPECT_EQ(ends(m, 1), (Points{{23, -24},
+                                {23.6, -24},
+                                {20, -24},
+                                {26, -24},
+                                {26, -25.5},
+                                {23, -25.5},
+                                {23.6, -25.5},
+                                {20, -25.5},
+                                {26, -25.5},
+                                {26, -24}}));
+  EXPECT_EQ(m.block("G75 X20. Z-30. P0 Q1500 F0.06"),
+            status(AlarmId::IllegalRepetitiveCycle));
+}
+
+// G76 M20x2.5: k 1.534, first depth 0.5, least 0.1, allowance 0.05, one
+// finishing pass, no chamfer, 60 degrees: depths 0.5 sqrt(n), but at least
+// 0.1 deeper each pass (the 7th and 8th), up to 1.484, then 1.534; each
+// pass starts depth x tan 30 towards the thread's end.
+TEST(RuntimeLatheCycles, MultipleThreading) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S500 G00 X24. Z5."), 0);
+  ASSERT_EQ(m.block("G76 P010060 Q100 R0.05"), 0);
+  ASSERT_EQ(m.block("G76 X16.933 Z-30. P1534 Q500 F2.5"), 0);
+  const double depths[] = {0.5,
+                           0.5 * std::sqrt(2.0),
+                           0.5 * std::sqrt(3.0),
+                           1.0,
+                           0.5 * std::sqrt(5.0),
+                           0.5 * std::sqrt(6.0),
+                           0.5 * std::sqrt(6.0) + 0.1,
+                           0.5 * std::sqrt(6.0) + 0.2,
+                           1.484,
+                           1.534};
+  ASSERT_EQ(m.motions().size(), 1 + 4 * std::size(depths));
+  const double flank = std::tan(std::numbers::pi / 6.0);
+  for (std::size_t i = 0; i < std::size(depths); ++i) {
+    const mbrt_motion& in = m.motions()[1 + 4 * i];
+    const mbrt_motion& thread = m.motions()[2 + 4 * i];
+    EXPECT_NEAR(in.end[0], 16.933 + 2.0 * (1.534 - depths[i]), 0.0011) << i;
+    EXPECT_NEAR(in.end[1], 5.0 - depths[i] * flank, 0.0011) << i;
+    EXPECT_EQ(thread.end[1], -30.0);
+    EXPECT_EQ(thread.kind, MBRT_MOTION_LINEAR);
+    EXPECT_EQ(m.motions()[3 + 4 * i].end[0], 24.0);
+    EXPECT_EQ(m.motions()[4 + 4 * i].end[1], 5.0);
+  }
+  EXPECT_EQ(m.block("G76 X16.933 Z-30. P0 Q500 F2.5"),
+            status(AlarmId::IllegalRepetitiveCycle));
+}
+
+/// Points equal but for the last bits of arithmetic.
+void expectPath(const Points& path, const Points& expected) {
+  ASSERT_EQ(path.size(), expected.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    EXPECT_NEAR(path[i].first, expected[i].first, 1e-9) << i;
+    EXPECT_NEAR(path[i].second, expected[i].second, 1e-9) << i;
+  }
+}
+
+/// Runs blocks, each of which must pass; the end points of every motion.
+Points blocks(Machine& m, std::initializer_list<const char*> texts) {
+  for (const char* text : texts) {
+    const std::string_view block(text);
+    EXPECT_EQ(m.block(block), 0) << block << m.report();
+  }
+  return ends(m);
+}
+
+// G71 type I, OD: from A (X60 Z2) cuts 2 mm deep (X56, 52, ... 32), each
+// from Z2 to the shape shifted by the allowance (0.4 of diameter, 0.1 in
+// Z), escaping 0.5 at 45 degrees; then along the shifted shape and back to
+// A. The shape's blocks move nothing as they are read. G70 then follows
+// the shape at its own F and returns to A.
+TEST(RuntimeLatheShapes, StockRemovalInTurningThenFinishing) {
+  Machine m(kLathe);
+  blocks(m, {"G97 S1000 G00 X60. Z2.", "G71 U2. R0.5",
+             "G71 P10 Q20 U0.4 W0.1 F0.25", "N10 G00 X30.", "G01 Z-20. F0.1",
+             "X50. Z-30."});
+  EXPECT_EQ(m.motions().size(), 1U); // reading the shape
+  const Points path = blocks(m, {"N20 Z-40."});
+  Points expected{{60, 2}};
+  const double stops[] = {-39.9, -39.9, -28.7, -26.7, -24.7, -22.7, -20.7};
+  double level = 60.0;
+  for (const double stop : stops) {
+    level -= 4.0;
+    expected.insert(expected.end(), {{level, 2},
+                                     {level, stop},
+                                     {level + 1.0, stop + 0.5},
+                                     {level + 1.0, 2}});
+  }
+  expected.insert(
+      expected.end(),
+      {{30.4, 2.1}, {30.4, -19.9}, {50.4, -29.9}, {50.4, -39.9}, {60, 2}});
+  expectPath(path, expected);
+  EXPECT_EQ(m.motions()[2].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.motions()[2].feed, 0.25);
+  EXPECT_EQ(m.motions()[2].cycle, 71);
+  EXPECT_EQ(m.read(5001), 60.0);
+  const std::size_t before = m.motions().size();
+  blocks(m, {"G70 P10 Q20"});
+  EXPECT_EQ(ends(m, before),
+            (Points{{30, 2}, {30, -20}, {50, -30}, {50, -40}, {60, 2}}));
+  EXPECT_EQ(m.motions()[before].kind, MBRT_MOTION_RAPID);
+  EXPECT_EQ(m.motions()[before + 1].feed, 0.1);
+  EXPECT_EQ(m.motions()[before + 1].cycle, 70);
+}
+
+// G72 type I: the same with the axes exchanged: cuts 2 mm apart in Z (Z0,
+// -2, -4) along X to the shape shifted by the allowance (0.2 of diameter,
+// 0.1 in Z).
+TEST(RuntimeLatheShapes, StockRemovalInFacing) {
+  Machine m(kLathe);
+  const Points path = blocks(m, {"G97 S1000 G00 X62. Z2.", "G72 W2. R0.5",
+                                 "G72 P30 Q40 U0.2 W0.1 F0.2", "N30 G00 Z-6.",
+                                 "G01 X40.", "N40 X20. Z-2."});
+  const Points expected{{62, 2},    {62, 0},      {20.2, 0},    {21.2, 0.5},
+                        {62, 0.5},  {62, -2},     {20.7, -2},   {21.7, -1.5},
+                        {62, -1.5}, {62, -4},     {30.7, -4},   {31.7, -3.5},
+                        {62, -3.5}, {62.2, -5.9}, {40.2, -5.9}, {20.2, -1.9},
+                        {62, 2}};
+  expectPath(path, expected);
+}
+
+// G73: three passes along the shape shifted by the allowance plus a relief
+// of 3 (radius) and 1 (Z) shrinking to 0, each from A and back to it.
+TEST(RuntimeLatheShapes, PatternRepeating) {
+  Machine m(kLathe);
+  const Points path =
+      blocks(m, {"G97 S1000 G00 X60. Z5.", "G73 U3. W1. R3",
+                 "G73 P50 Q60 U0.4 W0.1 F0.2", "N50 G00 X30. Z1.", "G01 Z-20.",
+                 "N60 X50. Z-30."});
+  const Points expected{{60, 5}, {36.4, 2.1}, {36.4, -18.9}, {56.4, -28.9},
+                        {60, 5}, {33.4, 1.6}, {33.4, -19.4}, {53.4, -29.4},
+                        {60, 5}, {30.4, 1.1}, {30.4, -19.9}, {50.4, -29.9},
+                        {60, 5}};
+  expectPath(path, expected);
+}
+
+TEST(RuntimeLatheShapes, Alarms) {
+  Machine missing(kLathe);
+  EXPECT_EQ(missing.block("G70 P10"), status(AlarmId::ShapeAddressMissing));
+  Machine arc(kLathe);
+  blocks(arc, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0.4 W0.1 F0.2"});
+  EXPECT_EQ(arc.block("N10 G02 X30. Z-2. R2."),
+            status(AlarmId::ShapeFirstBlock));
+  Machine back(kLathe);
+  blocks(back, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2",
+                "N10 G00 X30.", "G01 Z-10.", "X40."});
+  EXPECT_EQ(back.block("N20 X35. Z-20."), status(AlarmId::ShapeNotMonotonic));
+  Machine pockets(kLathe);
+  blocks(pockets, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2"});
+  EXPECT_EQ(pockets.block("N10 G00 X30. Z0"), 0);
+  EXPECT_EQ(pockets.block("N20 G01 Z-10."), status(AlarmId::Unsupported));
+  EXPECT_TRUE(reports(pockets, "G71 type II"));
+  Machine elsewhere(kLathe);
+  blocks(elsewhere, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2"});
+  EXPECT_EQ(elsewhere.block("N5 G00 X30."), status(AlarmId::Unsupported));
+  Machine ending(kLathe);
+  blocks(ending,
+         {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2", "N10 G00 X30."});
+  EXPECT_EQ(ending.block("M30"), status(AlarmId::ShapeCommand));
 }
 
 } // namespace

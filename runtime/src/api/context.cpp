@@ -100,6 +100,9 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.intermediateMask = 0;
   ctx.compensation = CompensationState{};
   ctx.spindleLimit = 0.0;
+  ctx.cycleSettings.clear();
+  ctx.shapes.clear();
+  ctx.shapes.clear();
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   clearModalCodes(ctx);
   ctx.clockMs = 0.0;
@@ -121,6 +124,7 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.subDepth = 0;
   ctx.levels.assign(1, LocalLevel{});
   ctx.compensation = CompensationState{};
+  ctx.shapeReading.code = 0; // a shape cycle an interrupted run was reading
   if (ctx.profile.clearOnReset) {
     clearModalCodes(ctx);
   } else {

@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lathe_shape.h"
 #include "profile.h"
 
 namespace mbc::rt {
@@ -86,9 +87,19 @@ struct CycleData {
   double p = 0; // dwell at the bottom, ms
 };
 
+/// A lathe's single cycle (G90, G92, G94) keeps its end point and taper
+/// from block to block while it is in force: workpiece counts (X a radius).
+struct SingleCycleData {
+  bool hasX = false;
+  bool hasZ = false;
+  Counts x = 0;
+  Counts z = 0;
+  Counts r = 0; // the taper: the cut's start less its end (radius or Z)
+};
+
 /// Modal G codes (#4001..) and F.
 struct ModalState {
-  int motion = 0; // 0 1 2 3
+  int motion = 0; // 0 1 2 3; a lathe's 32, 90, 92, 94 (lathe_codes.h)
   int plane = 17;
   bool incremental = false;
   bool polar = false;    // G16: plane words are a radius and an angle
@@ -104,6 +115,7 @@ struct ModalState {
   int workOffset = kFirstG54Offset; // index into workOffsets
   double feed = 0.0;                // modal F
   bool surfaceSpeed = false;        // G96: S is a surface speed (lathes)
+  SingleCycleData singleCycle;
 };
 
 /// The coordinate frames between a program and the machine (frames.h):
@@ -244,6 +256,34 @@ template <class Fn> struct Sink {
   void* user = nullptr;
 };
 
+/// A lathe's shape cycle (G70-G73) reading the blocks ns to nf of its
+/// shape program as they run (lathe_shapes.h): they move nothing, their
+/// moves make the shape, and the state before them comes back after nf.
+struct ShapeReading {
+  int code = 0; // the cycle (lathe_codes.h) while reading, else 0
+  double ns = 0.0;
+  double nf = 0.0;
+  bool started = false; // block ns has run
+  bool feedSet = false; // a block of the shape gave F
+  Shape shape;
+  // The cycle's settings: the finishing allowance (G71-G73), G73's relief
+  // and divisions, all in counts, x a radius.
+  ShapePoint allowance;
+  ShapePoint relief;
+  int divisions = 1;
+  // The state the shape's blocks run over, back after nf.
+  AxisCounts machine{};
+  AxisCounts program{};
+  ModalState modal;
+  Frames frames;
+  std::array<double, 30> lastWords{};
+  double clockMs = 0.0;
+  double clockHours = 0.0;
+  RunStats stats;
+  std::uint64_t moves = 0;
+  Sink<mbrt_motion_fn> motionSink;
+};
+
 } // namespace mbc::rt
 
 struct mbrt_ctx {
@@ -306,6 +346,16 @@ struct mbrt_ctx {
   // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
   // G92 S in B and C), rpm; 0: none given.
   double spindleLimit = 0.0;
+  // The parameters of a lathe's multiple repetitive cycles (5130-5143)
+  // that a cycle's first block set, until power-off (lengths in mm).
+  std::map<int, double> cycleSettings;
+  mbc::rt::ShapeReading shapeReading;
+  // The shapes read so far by (ns, nf), for G70.
+  std::map<std::pair<double, double>, mbc::rt::Shape> shapes;
+  int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
+  // The N of the block running, -1 for none: a lathe's flattened program
+  // keeps it, for the P and Q of its shape cycles.
+  double blockSequence = -1.0;
 
   // The run: the block being executed and the count of blocks.
   // A signal handler or another thread lowers block.max_blocks to stop the

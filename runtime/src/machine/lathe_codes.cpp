@@ -101,14 +101,14 @@ constexpr std::array kLatheGCodes = {
                "mirror image for double turrets on"},
     LatheGCode{690, 690, 690, own(690), true,
                "mirror image for double turrets off"},
-    LatheGCode{700, 700, 720, own(700), false, "finishing cycle"},
-    LatheGCode{710, 710, 730, own(710), false, "stock removal in turning"},
-    LatheGCode{720, 720, 740, own(720), false, "stock removal in facing"},
-    LatheGCode{730, 730, 750, own(730), false, "pattern repeating cycle"},
-    LatheGCode{740, 740, 760, own(740), false, "end face peck drilling cycle"},
-    LatheGCode{750, 750, 770, own(750), false,
+    LatheGCode{700, 700, 720, own(700), true, "finishing cycle"},
+    LatheGCode{710, 710, 730, own(710), true, "stock removal in turning"},
+    LatheGCode{720, 720, 740, own(720), true, "stock removal in facing"},
+    LatheGCode{730, 730, 750, own(730), true, "pattern repeating cycle"},
+    LatheGCode{740, 740, 760, own(740), true, "end face peck drilling cycle"},
+    LatheGCode{750, 750, 770, own(750), true,
                "outer diameter/internal diameter drilling cycle"},
-    LatheGCode{760, 760, 780, own(760), false, "multiple-thread cutting cycle"},
+    LatheGCode{760, 760, 780, own(760), true, "multiple-thread cutting cycle"},
     LatheGCode{800, 800, 800, 800, true, "canned cycle for drilling cancel"},
     LatheGCode{830, 830, 830, own(830), false, "cycle for face drilling"},
     LatheGCode{840, 840, 840, own(840), false, "cycle for face tapping"},
@@ -116,10 +116,10 @@ constexpr std::array kLatheGCodes = {
     LatheGCode{870, 870, 870, own(870), false, "cycle for side drilling"},
     LatheGCode{880, 880, 880, own(880), false, "cycle for side tapping"},
     LatheGCode{890, 890, 890, own(890), false, "cycle for side boring"},
-    LatheGCode{900, 770, 200, kLatheTurningCycle, false,
+    LatheGCode{900, 770, 200, kLatheTurningCycle, true,
                "outer diameter/internal diameter cutting cycle"},
-    LatheGCode{920, 780, 210, kLatheThreadCycle, false, "threading cycle"},
-    LatheGCode{940, 790, 240, kLatheFacingCycle, false,
+    LatheGCode{920, 780, 210, kLatheThreadCycle, true, "threading cycle"},
+    LatheGCode{940, 790, 240, kLatheFacingCycle, true,
                "end face turning cycle"},
     LatheGCode{960, 960, 960, 960, true, "constant surface speed control"},
     LatheGCode{970, 970, 970, 970, true,
@@ -171,9 +171,9 @@ double latheModalGroupValue(const mbrt_ctx& ctx, int group) {
   const ModalState& modal = ctx.modal;
   const bool systemA = ctx.profile.gCodeSystem == 'A';
   switch (group) {
-    case 1:
-      return modal.motion == kThreadingMotion
-                 ? writtenLatheCode(ctx, kLatheThreading)
+    case 1: // G32 and the single cycles in system A's numbers
+      return modal.motion > 3
+                 ? writtenLatheCode(ctx, kLatheOwnCode + modal.motion * 10)
                  : modal.motion;
     case 2:
       return modal.surfaceSpeed ? 96 : 97;

@@ -17,8 +17,21 @@ inline constexpr int kLatheFacingCycle = kLatheOwnCode + 940;  // G94
 inline constexpr int kLatheG10 = kLatheOwnCode + 100;          // offsets
 
 /// The lathe's group 01 codes of their own, as ModalState::motion holds
-/// them (system A's numbers).
+/// them (system A's numbers): G32 and the single cycles (lathe_cycles.h).
 inline constexpr int kThreadingMotion = 32;
+inline constexpr int kTurningCycleMotion = 90;
+inline constexpr int kThreadCycleMotion = 92;
+inline constexpr int kFacingCycleMotion = 94;
+
+/// Whether moves in a motion mode cut a thread: F is the lead.
+inline bool cutsThread(int motion) {
+  return motion == kThreadingMotion || motion == kThreadCycleMotion;
+}
+
+inline bool isSingleCycle(int motion) {
+  return motion == kTurningCycleMotion || motion == kThreadCycleMotion ||
+         motion == kFacingCycleMotion;
+}
 
 /// What a G word (tenths) of a lathe's program does, in the numbering
 /// applyGCode executes: a mill's code where the function is the same

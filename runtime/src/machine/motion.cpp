@@ -15,6 +15,8 @@
 #include "cutter_comp.h"
 #include "frames.h"
 #include "lathe_codes.h"
+#include "lathe_cycles.h"
+#include "lathe_shapes.h"
 #include "plane_geometry.h"
 #include "spindle.h"
 
@@ -32,13 +34,16 @@ PlaneAxes planeAxes(int plane) {
 }
 
 MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
-  MoveOrigin origin{
-      ctx.block.file, ctx.block.line,     ctx.programName(),
-      ctx.modal.feed, ctx.modal.feedMode, ctx.lastWords[kLastSIndex],
-      cycle};
+  MoveOrigin origin{ctx.block.file,
+                    ctx.block.line,
+                    ctx.programName(),
+                    ctx.modal.feed,
+                    ctx.modal.feedMode,
+                    ctx.lastWords[kLastSIndex],
+                    cycle != 0 ? cycle : ctx.cycleLabel};
   origin.surfaceSpeed = ctx.modal.surfaceSpeed;
   origin.spindleLimit = ctx.spindleLimit;
-  origin.threading = ctx.modal.motion == kThreadingMotion;
+  origin.threading = cutsThread(ctx.modal.motion);
   return origin;
 }
 
@@ -463,20 +468,22 @@ mbrt_status refuseFeedPerRevolution(mbrt_ctx& ctx) {
 /// without S); `cycle` names the canned cycle; a feed per minute too small
 /// for a mill stops the run (refuseFeedPerRevolution).
 mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
+  if (readingShape(ctx)) {
+    return 0; // a shape's moves are read, not made
+  }
   if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
     return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
   }
   const bool perRevolution =
-      ctx.modal.feedMode == 95 || ctx.modal.motion == kThreadingMotion;
+      ctx.modal.feedMode == 95 || cutsThread(ctx.modal.motion);
   if (perRevolution && ctx.lastWords[kLastSIndex] <= 0.0) {
-    return raise(ctx, AlarmId::FeedZero,
-                 ctx.modal.motion == kThreadingMotion
-                     ? "threading needs a spindle speed (S)"
-                 : ctx.profile.lathe()
-                     ? fmt::format("feed per revolution (G{}) needs a "
-                                   "spindle speed (S)",
-                                   writtenLatheCode(ctx, 950))
-                     : std::string("G95 needs a spindle speed (S)"));
+    return raise(
+        ctx, AlarmId::FeedZero,
+        cutsThread(ctx.modal.motion) ? "threading needs a spindle speed (S)"
+        : ctx.profile.lathe() ? fmt::format("feed per revolution (G{}) needs a "
+                                            "spindle speed (S)",
+                                            writtenLatheCode(ctx, 950))
+                              : std::string("G95 needs a spindle speed (S)"));
   }
   if (ctx.modal.feed > 0.0) {
     return ctx.modal.feedMode != 94 || ctx.profile.lathe() ||
@@ -738,6 +745,9 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const AxisCounts target = workTarget(ctx, words, start);
   if (mode == 0 || mode == 1 || mode == kThreadingMotion) {
     return moveLine(ctx, target, mode == 0, &words);
+  }
+  if (isSingleCycle(mode)) {
+    return executeSingleCycle(ctx, words);
   }
   if (const mbrt_status status = checkFeed(ctx, 0)) {
     return status;

@@ -15,6 +15,8 @@
 #include "frames.h"
 #include "g_codes.h"
 #include "lathe_codes.h"
+#include "lathe_repetitive.h"
+#include "lathe_shapes.h"
 #include "lathe_tools.h"
 #include "look_ahead.h"
 #include "motion.h"
@@ -75,7 +77,10 @@ struct Block {
   double l = 0.0;
   std::optional<Counts> q;
   std::optional<double> qWritten; // Q as written: G05.1's switch
-  std::optional<double> k;        // the repeat count of a canned cycle
+  // Q as a lathe cycle reads it: increments unless written with a decimal
+  // point (a value from a variable counts increments, as P does).
+  std::optional<Counts> incrementQ;
+  std::optional<double> k; // the repeat count of a canned cycle
   // G04 (40), G28 (280), G29, G30, G31, G39 (390), G53 (530) and the
   // look-ahead switches G05, G05.1, G05.4, G08.
   int nonModal = 0;
@@ -206,11 +211,28 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
       case kLatheThreading:
         next.motion = kThreadingMotion;
         return 0;
-
+      case kLatheTurningCycle:
+      case kLatheThreadCycle:
+      case kLatheFacingCycle:
+        // A new cycle starts from no end point; its own repeats keep it.
+        if (next.motion != tenths / 10 - kLatheOwnCode / 10) {
+          next.singleCycle = SingleCycleData{};
+        }
+        next.motion = tenths / 10 - kLatheOwnCode / 10;
+        return 0;
       case kLatheOwnCode + 690: // G69: no mirror image is ever on
         return 0;
       case kLatheG10: // the block's words are offset data
         block.frames.code = kLatheG10;
+        return 0;
+      case kLatheOwnCode + 700: // G70-G73 (lathe_shapes.h)
+      case kLatheOwnCode + 710:
+      case kLatheOwnCode + 720:
+      case kLatheOwnCode + 730:
+      case kLatheOwnCode + 740: // G74-G76 (lathe_repetitive.h)
+      case kLatheOwnCode + 750:
+      case kLatheOwnCode + 760:
+        block.nonModal = tenths;
         return 0;
       case 960:
         next.surfaceSpeed = true;
@@ -684,6 +706,17 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
+  if (block.nonModal >= kLatheOwnCode + 700 &&
+      block.nonModal <= kLatheOwnCode + 730) {
+    return startShapeCycle(ctx, block.nonModal, block.frames);
+  }
+  if (block.nonModal >= kLatheOwnCode) {
+    return executeRepetitiveCycle(
+        ctx, block.nonModal,
+        {&motion, block.incrementQ,
+         block.hasP ? std::optional<double>(block.p) : std::nullopt,
+         std::nullopt});
+  }
   if (isLookAheadCode(block.nonModal)) {
     return switchLookAhead(
         ctx, block.nonModal,
@@ -779,6 +812,10 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
           (letter == 'P' && words[i].kind == MBRT_WORD_DEC_LITERAL);
     } else if (letter == 'Q') {
       block.qWritten = numeric(words[i].value);
+      block.incrementQ = static_cast<Counts>(
+          words[i].kind == MBRT_WORD_DEC_LITERAL
+              ? roundToLengthCounts(ctx, *block.qWritten)
+              : roundHalfAway(*block.qWritten) * ctx.countsPerIncrement());
     } else if (letter == 'H' && !ctx.profile.lathe()) {
       block.frames.hasH = true;
     } else if (letter == 'G' && block.gCodes != GCodes::Other) {
@@ -880,7 +917,11 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                                  ? callAfterBlock(ctx, block.codes, flow)
                                  : 0;
   if (ctx.gcodeSink.fn != nullptr) {
-    flattenBlock(ctx, words, count, *flow);
+    const int code = block.nonModal;
+    flattenBlock(ctx, words, count, *flow,
+                 code >= kLatheOwnCode + 740   ? LatheCycleWords::Increments
+                 : code >= kLatheOwnCode + 700 ? LatheCycleWords::AsWritten
+                                               : LatheCycleWords::None);
   }
   return status;
 }
@@ -896,17 +937,31 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   *flow = mbrt_flow{};
   // The N number comes first: it only sets #4114, and a block of nothing
   // else does nothing more (it is no block G66.1 calls for, nor traced).
+  std::optional<double> sequence;
+  ctx->blockSequence = -1.0;
   if (count > 0 && words[0].letter == 'N') {
-    ctx->lastWords[lastWordIndex('N')] = mbc::numeric(words[0].value);
+    sequence = mbc::numeric(words[0].value);
+    ctx->blockSequence = *sequence;
+    ctx->lastWords[lastWordIndex('N')] = *sequence;
     ++words;
-    if (--count == 0) {
-      return 0;
-    }
+    --count;
   }
-  if (ctx->traceSink.fn != nullptr) {
+  // A lathe's shape cycle reads the blocks of its shape program as they
+  // run (lathe_shapes.h).
+  const bool shape = readingShape(*ctx);
+  if (count == 0 && !shape) {
+    return 0;
+  }
+  if (ctx->traceSink.fn != nullptr && count > 0) {
     mbrt_trace_words(ctx, "", words, count);
   }
-  const mbrt_status status = executeBlock(*ctx, words, count, flow);
+  mbrt_status status = shape ? enterShapeBlock(*ctx, sequence) : 0;
+  if (status == 0 && count > 0) {
+    status = executeBlock(*ctx, words, count, flow);
+  }
+  if (shape) {
+    status = leaveShapeBlock(*ctx, sequence, *flow, status);
+  }
   if (status != 0) {
     *flow = mbrt_flow{};
   }

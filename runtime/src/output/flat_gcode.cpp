@@ -149,14 +149,20 @@ void sendData(mbrt_ctx& ctx, const std::string& data) {
 } // namespace
 
 void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                  const mbrt_flow& flow) {
+                  const mbrt_flow& flow, LatheCycleWords cycle) {
   const bool dropTransfer = transfers(words, count);
-  const bool exact = hasOtherMeanings(ctx, words, count);
+  const bool exact = cycle == LatheCycleWords::AsWritten ||
+                     hasOtherMeanings(ctx, words, count);
+  const bool increments = cycle == LatheCycleWords::Increments;
   const auto [callLetter, callValue] = ctx.callingCode;
   const bool codeCall =
       flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
   std::string& line = ctx.gcodeLine;
   line.clear();
+  if (ctx.profile.lathe() && ctx.blockSequence >= 0.0) {
+    line += 'N';
+    appendInteger(line, static_cast<long long>(ctx.blockSequence));
+  }
   for (size_t i = 0; i < count; ++i) {
     const mbrt_word& word = words[i];
     if (dropTransfer &&
@@ -171,7 +177,12 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (!line.empty()) {
       line += ' ';
     }
-    if (!exact && isCoordinateLetter(ctx, word.letter)) {
+    if (increments && (word.letter == 'P' || word.letter == 'Q') &&
+        word.kind != MBRT_WORD_DEC_LITERAL) {
+      line += word.letter;
+      appendInteger(line,
+                    static_cast<long long>(roundHalfAway(numeric(word.value))));
+    } else if (!exact && isCoordinateLetter(ctx, word.letter)) {
       appendCoordinateText(line, ctx, word);
     } else {
       appendWordText(line, word);

@@ -10,8 +10,16 @@ namespace mbc::rt {
 
 /// An executed block, less the words that called a program (M98 P L, M99
 /// P, the M/T/S/B code of a code call) and G67. Only with a G-code sink.
+/// `words` says how a lathe's cycle blocks read their words.
+enum class LatheCycleWords {
+  None,       // the block's own G codes say (G04, G51, G68...)
+  AsWritten,  // G70-G73: sequence numbers, counts and lengths
+  Increments, // G74-G76: P and Q count increments, even from a variable
+};
+
 void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                  const mbrt_flow& flow);
+                  const mbrt_flow& flow,
+                  LatheCycleWords cycle = LatheCycleWords::None);
 
 /// A macro statement wrote a work offset (index into workOffsets).
 void flattenWorkOffset(mbrt_ctx& ctx, int offset);

@@ -33,7 +33,19 @@ constexpr std::array kParameters = {
     ParameterSpec{3403, 3403, 0, 255, 0, true},      // #5 CIR
     ParameterSpec{3410, 3410, 0, 1e9, 0.02, false},  // arc radius tolerance
     ParameterSpec{3772, 3772, 0, 99999999, 0, true}, // maximum spindle speed
-    ParameterSpec{5001, 5001, 0, 255, 0, true},      // #0 TLC, #1 TLB
+    // A lathe's multiple repetitive cycles, until a program's first cycle
+    // block gives them: 5130 G76 chamfer (0.1 lead), 5131 its angle, 5132
+    // and 5133 G71/G72 depth and escape, 5135 and 5136 G73 relief, 5137 G73
+    // divisions, 5139 G74/G75 return, 5140 G76 least depth, 5141 G76
+    // finishing allowance (mm), 5142 finishing passes, 5143 tool angle.
+    ParameterSpec{5130, 5130, 0, 99, 0, true},
+    ParameterSpec{5131, 5131, 0, 89, 0, true},
+    ParameterSpec{5132, 5136, -1e6, 1e6, 0, false},
+    ParameterSpec{5137, 5137, 1, 99999999, 1, true},
+    ParameterSpec{5139, 5141, 0, 1e6, 0, false},
+    ParameterSpec{5142, 5142, 1, 99, 1, true},
+    ParameterSpec{5143, 5143, 0, 120, 0, true},
+    ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
     ParameterSpec{5003, 5003, 0, 255, 0, true},     // #0 SUP, #1 SUV: CRC start
     ParameterSpec{5008, 5008, 0, 255, 0, true},     // #1 CNC, #3 CNV: CRC check
     ParameterSpec{5101, 5101, 0, 255, 0, true},     // #4 RD1, #5 RD2: G76 shift

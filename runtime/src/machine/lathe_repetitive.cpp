@@ -1,0 +1,269 @@
+// G74, G75 and G76 (lathe_repetitive.h). Lengths are counts in the
+// workpiece frame, X as a radius. Words without a decimal point (P, Q) are
+// least increments, as the control reads them.
+//
+// G74 / G75: from the start point A, columns from A towards the end point
+// B, Δi (P) apart across the peck axis (G74: X, G75: Z); in each column the
+// tool pecks along the other axis Δk (Q) at a time, backing out e after each
+// peck, is relieved Δd (R) at the bottom against the column direction and
+// returns at rapid; at the end it returns to A.
+//
+// G76: passes at depths Δd √n (at least Δdmin deeper each time) down to the
+// thread height k less the finishing allowance d, then m passes at k. Each
+// pass rapids to its depth at the start shifted along the flank (depth ×
+// tan(a / 2), towards the thread's end: one edge cuts), threads to the end
+// point's Z (with a 45 degree pull-out over r × 0.1 lead when r > 0),
+// rapids out in X and back to A.
+#include "lathe_repetitive.h"
+
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "lathe_codes.h"
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr int kG74 = kLatheOwnCode + 740;
+constexpr int kG76 = kLatheOwnCode + 760;
+
+/// A cycle setting: the value a first block gave, else the parameter.
+double setting(const mbrt_ctx& ctx, int parameter) {
+  const auto it = ctx.cycleSettings.find(parameter);
+  return it != ctx.cycleSettings.end() ? it->second
+                                       : ctx.profile.parameter(parameter);
+}
+
+Counts lengthSetting(const mbrt_ctx& ctx, int parameter) {
+  return static_cast<Counts>(
+      roundHalfAway(setting(ctx, parameter) * ctx.countsPerMm()));
+}
+
+void keepLength(mbrt_ctx& ctx, int parameter, Counts counts) {
+  ctx.cycleSettings[parameter] =
+      static_cast<double>(counts) / ctx.countsPerMm();
+}
+
+/// PS0062 with the cycle and what is wrong.
+mbrt_status illegal(mbrt_ctx& ctx, int code, std::string_view what) {
+  return raise(ctx, AlarmId::IllegalRepetitiveCycle,
+               fmt::format("G{}: {}", writtenLatheCode(ctx, code), what));
+}
+
+/// The block's end point: X(U) and Z(W), the start's where left out.
+AxisCounts endPoint(const mbrt_ctx& ctx, const MotionWords& words) {
+  AxisCounts end = ctx.program;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((words.axisMask >> axis & 1) != 0) {
+      const bool incremental =
+          ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
+      end[axis] =
+          incremental ? ctx.program[axis] + words.axis[axis] : words.axis[axis];
+    }
+  }
+  return end;
+}
+
+Counts towards(Counts from, Counts to, Counts step) {
+  return from + (to >= from ? step : -step);
+}
+
+/// G74 (pecks along Z, columns in X) and G75 (pecks along X, columns in Z).
+mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
+  const MotionWords& motion = *words.motion;
+  if (motion.axisMask == 0) { // the first block: R is the return e
+    if (motion.hasR) {
+      keepLength(ctx, 5139, motion.r);
+    }
+    return 0;
+  }
+  const int peckAxis = ctx.axisOf(code == kG74 ? 'Z' : 'X');
+  const int columnAxis = ctx.axisOf(code == kG74 ? 'X' : 'Z');
+  const int perIncrement = ctx.countsPerIncrement();
+  // G74: P shifts X, Q pecks Z; G75: P pecks X, Q shifts Z.
+  const Counts p = static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
+  const Counts q = words.q.value_or(0);
+  const Counts peck = std::llabs(code == kG74 ? q : p);
+  const Counts shift = std::llabs(code == kG74 ? p : q);
+  const Counts relief = motion.hasR ? std::llabs(motion.r) : 0;
+  const Counts back = lengthSetting(ctx, 5139);
+  const AxisCounts start = ctx.program;
+  const AxisCounts end = endPoint(ctx, motion);
+  if (peck == 0 && end[peckAxis] != start[peckAxis]) {
+    return illegal(ctx, code, "the peck depth is 0");
+  }
+  if (shift == 0 && end[columnAxis] != start[columnAxis]) {
+    return illegal(ctx, code, "the shift between cuts is 0");
+  }
+  const Counts depth = end[peckAxis];
+  const Counts columnEnd = end[columnAxis];
+  const int label = static_cast<int>(writtenLatheCode(ctx, code));
+  const auto move = [&](const AxisCounts& to, bool rapid) {
+    return moveStraight(ctx, to, rapid, label);
+  };
+  AxisCounts at = start;
+  for (bool last = false; !last;) {
+    last = at[columnAxis] == columnEnd;
+    // Peck down the column.
+    const Counts top = start[peckAxis];
+    Counts reached = top;
+    while (reached != depth) {
+      const Counts next = std::abs(depth - reached) <= peck
+                              ? depth
+                              : towards(reached, depth, peck);
+      at[peckAxis] = next;
+      if (const mbrt_status status = move(at, false)) {
+        return status;
+      }
+      reached = next;
+      if (reached != depth && back > 0) {
+        at[peckAxis] = towards(reached, top, back);
+        if (const mbrt_status status = move(at, true)) {
+          return status;
+        }
+      }
+    }
+    // Relieve against the column direction, return to the top.
+    const Counts column = at[columnAxis];
+    if (relief > 0) {
+      at[columnAxis] = columnEnd != start[columnAxis]
+                           ? towards(column, start[columnAxis], relief)
+                           : column - relief;
+      if (const mbrt_status status = move(at, true)) {
+        return status;
+      }
+    }
+    at[peckAxis] = top;
+    if (const mbrt_status status = move(at, true)) {
+      return status;
+    }
+    at[columnAxis] = last || std::abs(columnEnd - column) <= shift
+                         ? columnEnd
+                         : towards(column, columnEnd, shift);
+    if (!last) {
+      if (const mbrt_status status = move(at, true)) {
+        return status;
+      }
+    }
+  }
+  return at == start ? 0 : move(start, true);
+}
+
+/// G76's pass depths (from the crest), increasing to k.
+std::vector<Counts> threadDepths(Counts first, Counts least, Counts height,
+                                 Counts allowance, int finishing) {
+  std::vector<Counts> depths;
+  const Counts rough = height - allowance;
+  Counts depth = 0;
+  for (int n = 1; depth < rough; ++n) {
+    Counts next = static_cast<Counts>(
+        roundHalfAway(static_cast<double>(first) * std::sqrt(n)));
+    next = std::max(next, depth + std::max<Counts>(least, 1));
+    depth = std::min(next, rough);
+    depths.push_back(depth);
+  }
+  depths.insert(depths.end(), finishing, height);
+  return depths;
+}
+
+mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
+  const MotionWords& motion = *words.motion;
+  const int perIncrement = ctx.countsPerIncrement();
+  if (motion.axisMask == 0) { // the first block: P(m)(r)(a) Q(Δdmin) R(d)
+    if (words.p) {
+      const auto p = static_cast<long>(*words.p);
+      const double tenths = static_cast<double>(p / 100 % 100);
+      const double angle = static_cast<double>(p % 100);
+      ctx.cycleSettings[5142] = static_cast<double>(p / 10000);
+      ctx.cycleSettings[5130] = tenths;
+      ctx.cycleSettings[5143] = angle;
+    }
+    if (words.q) {
+      keepLength(ctx, 5140, *words.q);
+    }
+    if (motion.hasR) {
+      keepLength(ctx, 5141, motion.r);
+    }
+    return 0;
+  }
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  const Counts height =
+      static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
+  const Counts first = words.q.value_or(0);
+  const double lead = ctx.modal.feed;
+  if (height <= 0 || first <= 0) {
+    return illegal(ctx, kG76,
+                   "the thread height P and first depth Q must be "
+                   "greater than 0");
+  }
+  const int finishing = static_cast<int>(setting(ctx, 5142));
+  const double angle = setting(ctx, 5143);
+  const Counts least = lengthSetting(ctx, 5140);
+  const Counts allowance = lengthSetting(ctx, 5141);
+  if (allowance >= height) {
+    return illegal(ctx, kG76,
+                   "the finishing allowance is not less than the "
+                   "thread height");
+  }
+  const AxisCounts start = ctx.program;
+  const AxisCounts end = endPoint(ctx, motion);
+  const Counts taper = motion.hasR ? motion.r : 0;
+  // The crest lies towards A: an outer thread is cut inwards.
+  const Counts outward = start[x] >= end[x] ? 1 : -1;
+  const Counts forward = end[z] >= start[z] ? 1 : -1;
+  const double flank = std::tan(angle / 2.0 * std::numbers::pi / 180.0);
+  const Counts chamfer = static_cast<Counts>(
+      roundHalfAway(setting(ctx, 5130) * 0.1 * lead * ctx.scale()));
+  const int label = static_cast<int>(writtenLatheCode(ctx, kG76));
+  const auto move = [&](Counts px, Counts pz, bool rapid) {
+    AxisCounts to = ctx.program;
+    to[x] = px;
+    to[z] = pz;
+    return moveStraight(ctx, to, rapid, label);
+  };
+  const auto pass = [&](Counts depth) {
+    const Counts atDepth = end[x] + outward * (height - depth);
+    const auto shift =
+        static_cast<Counts>(roundHalfAway(static_cast<double>(depth) * flank)) *
+        forward;
+    const Counts threadEnd = end[z] - forward * chamfer;
+    mbrt_status status = move(atDepth + taper, start[z] + shift, true);
+    if (status == 0) {
+      status = move(atDepth, threadEnd, false);
+    }
+    if (status == 0 && chamfer > 0) {
+      status = move(atDepth + outward * chamfer, end[z], false);
+    }
+    if (status == 0) {
+      status = move(start[x], ctx.program[z], true);
+    }
+    return status != 0 ? status : move(start[x], start[z], true);
+  };
+  // The feed moves thread: F is the lead, whatever G98/G99.
+  const int motionMode = ctx.modal.motion;
+  ctx.modal.motion = kThreadingMotion;
+  mbrt_status status = 0;
+  for (const Counts depth :
+       threadDepths(first, least, height, allowance, finishing)) {
+    if ((status = pass(depth)) != 0) {
+      break;
+    }
+  }
+  ctx.modal.motion = motionMode;
+  return status;
+}
+
+} // namespace
+
+mbrt_status executeRepetitiveCycle(mbrt_ctx& ctx, int code,
+                                   const CycleWords& words) {
+  return code == kG76 ? threadCycle(ctx, words) : grooveCycle(ctx, code, words);
+}
+
+} // namespace mbc::rt

@@ -1,0 +1,342 @@
+// A lathe's shape cycles (lathe_shapes.h): reading the shape program as it
+// runs, and running the path lathe_roughing.h makes of it.
+#include "lathe_shapes.h"
+
+#include <mbc/arith.h>
+
+#include <fmt/format.h>
+
+#include "lathe_codes.h"
+#include "lathe_roughing.h"
+#include "motion.h"
+
+namespace mbc::rt {
+
+namespace {
+
+constexpr int kG70 = kLatheOwnCode + 700;
+constexpr int kG71 = kLatheOwnCode + 710;
+constexpr int kG72 = kLatheOwnCode + 720;
+constexpr int kG73 = kLatheOwnCode + 730;
+
+int writtenCode(const mbrt_ctx& ctx, int code) {
+  return static_cast<int>(writtenLatheCode(ctx, code));
+}
+
+/// A word of the cycle block as a length in input units: a literal without
+/// decimal point counts increments (unless 3401#0 DPI).
+std::optional<double> lengthWord(const mbrt_ctx& ctx, const FrameWords& words,
+                                 char letter) {
+  const mbrt_word* word = words.word(letter);
+  if (word == nullptr) {
+    return std::nullopt;
+  }
+  const double value = numeric(word->value);
+  return word->kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
+             ? value / ctx.inputScale()
+             : value;
+}
+
+std::optional<double> wholeWord(const FrameWords& words, char letter) {
+  const mbrt_word* word = words.word(letter);
+  return word != nullptr ? std::optional(roundHalfAway(numeric(word->value)))
+                         : std::nullopt;
+}
+
+void keepLength(mbrt_ctx& ctx, int parameter, std::optional<double> units) {
+  if (units) {
+    ctx.cycleSettings[parameter] =
+        roundToLengthCounts(ctx, *units) / ctx.countsPerMm();
+  }
+}
+
+double settingCounts(const mbrt_ctx& ctx, int parameter) {
+  const auto it = ctx.cycleSettings.find(parameter);
+  const double mm = it != ctx.cycleSettings.end()
+                        ? it->second
+                        : ctx.profile.parameter(parameter);
+  return roundHalfAway(mm * ctx.countsPerMm());
+}
+
+/// The first block of G71, G72 or G73: settings that stay.
+void keepSettings(mbrt_ctx& ctx, int code, const FrameWords& words) {
+  if (code == kG73) {
+    keepLength(ctx, 5135, lengthWord(ctx, words, 'U'));
+    keepLength(ctx, 5136, lengthWord(ctx, words, 'W'));
+    if (const auto divisions = wholeWord(words, 'R')) {
+      ctx.cycleSettings[5137] = *divisions;
+    }
+    return;
+  }
+  keepLength(ctx, 5132, lengthWord(ctx, words, code == kG71 ? 'U' : 'W'));
+  keepLength(ctx, 5133, lengthWord(ctx, words, 'R'));
+}
+
+ShapeMotion shapeMotion(int kind) {
+  switch (kind) {
+    case MBRT_MOTION_RAPID:
+      return ShapeMotion::Rapid;
+    case MBRT_MOTION_CW:
+      return ShapeMotion::Clockwise;
+    case MBRT_MOTION_CCW:
+      return ShapeMotion::CounterClockwise;
+    default:
+      return ShapeMotion::Line;
+  }
+}
+
+/// The motion sink while a shape is read: each move becomes part of it.
+void recordMove(void* user, const mbrt_motion* motion) {
+  auto& ctx = *static_cast<mbrt_ctx*>(user);
+  ShapeReading& reading = ctx.shapeReading;
+  reading.feedSet = reading.feedSet || ctx.feedInBlock;
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  ShapeMove move;
+  move.motion = shapeMotion(motion->kind);
+  move.end = {motion->end[x] * ctx.axisScale(x),
+              motion->end[z] * ctx.axisScale(z)};
+  for (int i = 0; i < 2; ++i) {
+    const int axis = ctx.axisOf(motion->center_axes[i]);
+    const double counts = motion->center[i] * ctx.axisScale(axis);
+    (axis == x ? move.center.x : move.center.z) = counts;
+  }
+  move.feed =
+      reading.feedSet && move.motion != ShapeMotion::Rapid ? motion->feed : 0.0;
+  reading.shape.moves.push_back(move);
+}
+
+/// Runs a cycle's path from the current position, its moves marked with
+/// the cycle; a move without a feed of its own takes `feed`.
+mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
+                     int code, double feed) {
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  const ModalState modal = ctx.modal;
+  ctx.cycleLabel = writtenCode(ctx, code);
+  ctx.modal.incremental = false;
+  mbrt_status status = 0;
+  for (const ShapeMove& move : moves) {
+    ctx.modal.feed = move.feed > 0.0 ? move.feed : feed;
+    AxisCounts target = ctx.program;
+    target[x] = static_cast<Counts>(roundHalfAway(move.end.x));
+    target[z] = static_cast<Counts>(roundHalfAway(move.end.z));
+    if (move.motion == ShapeMotion::Rapid || move.motion == ShapeMotion::Line) {
+      status = moveStraight(ctx, target, move.motion == ShapeMotion::Rapid);
+    } else {
+      MotionWords words;
+      words.axisMask = (std::uint32_t{1} << x) | (std::uint32_t{1} << z);
+      words.axis = target;
+      words.centerMask = 1 | 4; // I and K
+      words.center[0] = static_cast<Counts>(
+          roundHalfAway(move.center.x - static_cast<double>(ctx.program[x])));
+      words.center[2] = static_cast<Counts>(
+          roundHalfAway(move.center.z - static_cast<double>(ctx.program[z])));
+      ctx.modal.motion = move.motion == ShapeMotion::Clockwise ? 2 : 3;
+      status = executeMotion(ctx, words);
+    }
+    if (status != 0) {
+      break;
+    }
+  }
+  ctx.cycleLabel = 0;
+  const double lastFeed = ctx.modal.feed;
+  ctx.modal = modal;
+  ctx.modal.feed = code == kG70 ? lastFeed : modal.feed;
+  return status;
+}
+
+/// G70 along a shape: its moves, then back to the start point at rapid.
+mbrt_status finish(mbrt_ctx& ctx, const Shape& shape) {
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  std::vector<ShapeMove> moves = shape.moves;
+  moves.push_back({ShapeMotion::Rapid,
+                   {static_cast<double>(ctx.program[x]),
+                    static_cast<double>(ctx.program[z])},
+                   {},
+                   0.0});
+  return runMoves(ctx, moves, kG70, ctx.modal.feed);
+}
+
+/// The state the shape's blocks ran over comes back.
+void restoreState(mbrt_ctx& ctx) {
+  ShapeReading& reading = ctx.shapeReading;
+  ctx.machine = reading.machine;
+  ctx.program = reading.program;
+  ctx.modal = reading.modal;
+  ctx.frames = reading.frames;
+  ctx.lastWords = reading.lastWords;
+  ctx.clockMs = reading.clockMs;
+  ctx.clockHours = reading.clockHours;
+  ctx.stats = reading.stats;
+  ctx.moves = reading.moves;
+  ctx.motionSink = reading.motionSink;
+}
+
+/// After nf: the cycle runs over the shape read.
+mbrt_status runCycle(mbrt_ctx& ctx) {
+  ShapeReading& reading = ctx.shapeReading;
+  const int code = reading.code;
+  const Shape shape = reading.shape;
+  const ShapePoint allowance = reading.allowance;
+  const ShapePoint relief = reading.relief;
+  const int divisions = reading.divisions;
+  restoreState(ctx);
+  ctx.shapeReading.code = 0;
+  ctx.shapes[{reading.ns, reading.nf}] = shape;
+  if (code == kG70) {
+    return finish(ctx, shape);
+  }
+  std::vector<ShapeMove> path;
+  if (code == kG73) {
+    repeatShape(shape, allowance, relief, divisions, path);
+  } else {
+    const Roughing roughing{code == kG72, settingCounts(ctx, 5132),
+                            settingCounts(ctx, 5133), allowance};
+    if (roughing.depth <= 0.0) {
+      return raise(ctx, AlarmId::IllegalRepetitiveCycle,
+                   fmt::format("G{}: the depth of cut must be greater than 0",
+                               writtenCode(ctx, code)));
+    }
+    switch (roughShape(shape, roughing, path)) {
+      case ShapeFault::NotMonotonic:
+        return raise(ctx, AlarmId::ShapeNotMonotonic,
+                     fmt::format("G{} P{} Q{}: the shape turns back across "
+                                 "the cuts",
+                                 writtenCode(ctx, code), reading.ns,
+                                 reading.nf));
+      case ShapeFault::TypeTwo:
+        return raise(ctx, AlarmId::Unsupported,
+                     fmt::format("G{} type II (the shape's first block N{} "
+                                 "moves {} as well: pockets)",
+                                 writtenCode(ctx, code), reading.ns,
+                                 code == kG71 ? 'Z' : 'X'));
+      case ShapeFault::None:
+        break;
+    }
+  }
+  return runMoves(ctx, path, code, ctx.modal.feed);
+}
+
+/// Reading starts: the state the shape's blocks will run over is kept.
+void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
+  ShapeReading& reading = ctx.shapeReading;
+  reading = ShapeReading{};
+  reading.code = code;
+  reading.ns = ns;
+  reading.nf = nf;
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  reading.shape.start = {static_cast<double>(ctx.program[x]),
+                         static_cast<double>(ctx.program[z])};
+  reading.machine = ctx.machine;
+  reading.program = ctx.program;
+  reading.modal = ctx.modal;
+  reading.frames = ctx.frames;
+  reading.lastWords = ctx.lastWords;
+  reading.clockMs = ctx.clockMs;
+  reading.clockHours = ctx.clockHours;
+  reading.stats = ctx.stats;
+  reading.moves = ctx.moves;
+  reading.motionSink = ctx.motionSink;
+}
+
+} // namespace
+
+mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
+  const std::optional<double> ns = wholeWord(words, 'P');
+  const std::optional<double> nf = wholeWord(words, 'Q');
+  if (!ns || !nf) {
+    if (code == kG70 || ns || nf) {
+      return raise(ctx, AlarmId::ShapeAddressMissing,
+                   fmt::format("G{} needs P (the shape's first sequence "
+                               "number) and Q (its last)",
+                               writtenCode(ctx, code)));
+    }
+    keepSettings(ctx, code, words);
+    return 0;
+  }
+  if (code == kG70) {
+    if (const auto shape = ctx.shapes.find({*ns, *nf});
+        shape != ctx.shapes.end()) {
+      return finish(ctx, shape->second);
+    }
+  }
+  startReading(ctx, code, *ns, *nf);
+  ShapeReading& reading = ctx.shapeReading;
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  if (const auto u = lengthWord(ctx, words, 'U')) {
+    reading.allowance.x = roundToAxisCounts(ctx, x, *u);
+  }
+  if (const auto w = lengthWord(ctx, words, 'W')) {
+    reading.allowance.z = roundToAxisCounts(ctx, z, *w);
+  }
+  if (code == kG73) {
+    reading.relief = {settingCounts(ctx, 5135), settingCounts(ctx, 5136)};
+    const auto it = ctx.cycleSettings.find(5137);
+    reading.divisions = static_cast<int>(it != ctx.cycleSettings.end()
+                                             ? it->second
+                                             : ctx.profile.parameter(5137));
+    if (reading.divisions < 1) {
+      ctx.shapeReading.code = 0;
+      return raise(ctx, AlarmId::IllegalRepetitiveCycle,
+                   fmt::format("G{}: {} divisions", writtenCode(ctx, code),
+                               reading.divisions));
+    }
+  }
+  return 0;
+}
+
+mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
+  ShapeReading& reading = ctx.shapeReading;
+  if (!reading.started) {
+    if (n != reading.ns) {
+      const int code = reading.code;
+      reading.code = 0;
+      return raise(ctx, AlarmId::Unsupported,
+                   fmt::format("G{} P{}: a shape program that is not the "
+                               "blocks right after the cycle (mbc reads "
+                               "the shape as it runs)",
+                               writtenCode(ctx, code), reading.ns));
+    }
+    reading.started = true;
+  }
+  ctx.motionSink = {recordMove, &ctx};
+  return 0;
+}
+
+mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
+                            const mbrt_flow& flow, mbrt_status status) {
+  ShapeReading& reading = ctx.shapeReading;
+  ctx.motionSink = reading.motionSink;
+  // A shape that cannot be read leaves the machine where the cycle found
+  // it, for a context that runs again.
+  const auto stop = [&] {
+    restoreState(ctx);
+    reading.code = 0;
+  };
+  if (status != 0) {
+    stop();
+    return status;
+  }
+  if (flow.kind != MBRT_FLOW_NEXT) {
+    stop();
+    return raise(ctx, AlarmId::ShapeCommand,
+                 "a call, return or end in the shape program");
+  }
+  const std::vector<ShapeMove>& moves = reading.shape.moves;
+  if (n == reading.ns &&
+      (moves.empty() || (moves.front().motion != ShapeMotion::Rapid &&
+                         moves.front().motion != ShapeMotion::Line))) {
+    stop();
+    return raise(ctx, AlarmId::ShapeFirstBlock,
+                 fmt::format("N{}: the first block of the shape must move "
+                             "with G00 or G01",
+                             reading.ns));
+  }
+  return n == reading.nf ? runCycle(ctx) : 0;
+}
+
+} // namespace mbc::rt
