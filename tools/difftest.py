@@ -9,7 +9,9 @@ operator with edge arguments, DPRNT, BPRNT, motion with work and tool
 offsets, planes, canned cycles, dwell, reference returns, skip moves,
 G52/G92 shifts, scaling, rotation, mirror, polar coordinates, G10 offsets,
 feed modes and units, #3006 messages, bounded backward GOTO loops, optional
-block skip, system variables read and written), each with the run options
+block skip, system variables read and written; on a lathe profile, one in
+five programs: diameter X with U/W, G50, G96/G97, T codes and G10 offsets,
+single cycles, G74-G76 and G71-G73 with shapes and G70), each with the run options
 and machine profile it needs (--block-skip, --arg, --set, --machine), runs
 each under every engine and optimisation level, and compares everything a
 run writes with the interpreter's: exit status, stderr (alarms, the --trace
@@ -72,6 +74,8 @@ CODE_CALLS = (("6050", 100, "G100", 9010), ("6051", -101, "G101", 9011),
               ("6080", 200, "M200", 9020), ("6071", 300, "M300", 9001))
 CYCLES = ("G73", "G74", "G76", "G81", "G82", "G83", "G84", "G85", "G86",
           "G87", "G88", "G89")
+# A lathe's shape programs are numbered from here, apart from GOTO labels.
+SHAPE_LABELS = 7000
 # The counter of backward GOTO loops, which only the main program and G65
 # macros have (an M98 subprogram would share its caller's).
 BACK_COUNTER = 33
@@ -92,6 +96,9 @@ class Generator:
         self.t_call = self.chance(0.1)
         self.skip = self.chance(0.3)
         self.back_labels = 0
+        # A stream of its own, so that the mill programs of a seed stay.
+        self.lathe = random.Random(seed * 7919 + 1).random() < 0.2
+        self.shapes = 0
 
     def chance(self, p):
         return self.rng.random() < p
@@ -217,7 +224,98 @@ class Generator:
             return f"{self.target()} = {self.variable(1)}"
         return f"{self.target()} = {self.expression(0)}"
 
+    def lathe_motion(self):
+        """A lathe's move: X a diameter, U/W incremental, arcs in G18."""
+        code = self.pick(("G00", "G01", "G01", "G02", "G03"))
+        words = [self.word(axis) for axis in
+                 self.rng.sample(self.pick(("XZ", "UW", "XW", "UZ")),
+                                 self.rng.randint(1, 2))]
+        if code in ("G02", "G03"):
+            words.append(f"R[{self.expression(1, 1)}]" if self.chance(0.7)
+                         else f"I{self.number()} K{self.number()}")
+        if code != "G00" and self.chance(0.4):
+            words.append(f"F{self.rng.randint(50, 3000)}")
+        prefix = f"N{self.rng.randint(1000, 1999)} " if self.chance(0.2) else ""
+        return f"{self.skip_mark()}{prefix}{code} {' '.join(words)}"
+
+    def lathe_feature(self):
+        """A lathe's NC function: its cycles, G50, CSS, T codes and G10."""
+        roll = self.rng.random()
+        x, z = self.length(20, 60), self.length(-30, -5)
+        if roll < 0.15:
+            cycle = self.pick(("G90", "G92", "G94"))
+            taper = f" R{self.length(-2, 2)}" if self.chance(0.3) else ""
+            lines = [f"G00 X70. Z5. S{self.rng.randint(200, 2000)}",
+                     f"{cycle} X{x} Z{z}{taper} F{self.length(0.1, 2)}"]
+            lines += [self.word("X") for _ in range(self.rng.randint(0, 2))]
+            return lines + ["G00 X80."]
+        if roll < 0.25:
+            cycle = self.pick(("G74", "G75"))
+            return [f"G00 X{x} Z2. S{self.rng.randint(200, 2000)}",
+                    f"{cycle} R{self.length(0, 1)}",
+                    f"{cycle} X{self.length(10, 60)} Z{z} "
+                    f"P{self.rng.randint(500, 4000)} "
+                    f"Q{self.rng.randint(500, 4000)} F{self.length(0.05, 0.3)}"]
+        if roll < 0.35:
+            height = self.rng.randint(300, 2000)
+            return [f"G00 X{x} Z5. S{self.rng.randint(200, 1500)}",
+                    f"G76 P{self.pick(('01', '02'))}{self.pick(('00', '10'))}"
+                    f"{self.pick(('60', '55', '00'))} "
+                    f"Q{self.rng.randint(10, 200)} R{self.length(0, 0.05)}",
+                    f"G76 X[#{self.rng.randint(1, 26)} MOD 5 + "
+                    f"{float(x) - 5:.3f}] Z{z} P{height} "
+                    f"Q{self.rng.randint(100, height)} F{self.length(1, 3)}"]
+        if roll < 0.5:
+            return self.lathe_shape()
+        if roll < 0.6:
+            return [self.pick((f"G50 {self.word('X')} {self.word('Z')}",
+                               f"G50 S{self.rng.randint(500, 4000)}",
+                               f"G96 S{self.rng.randint(50, 300)}", "G97",
+                               "G99", "G98",
+                               f"G04 {self.word('U')}"))]
+        if roll < 0.75:
+            offset = self.rng.randint(1, 3)
+            return [f"G10 P{self.pick((offset, 10000 + offset))} "
+                    f"{self.word('X')} {self.word('Z')}",
+                    f"T{self.rng.randint(1, 4):02d}{offset:02d}"]
+        if roll < 0.85:
+            return [f"#{self.pick((2001, 2101, 2701, 2801, 10002, 15002))} = "
+                    f"{self.expression(0, 1)}",
+                    f"T01{self.rng.randint(0, 3):02d}"]
+        return [self.pick(("G28 U0 W0", f"G28 {self.word('U')}"))]
+
+    def lathe_shape(self):
+        """G71, G72 or G73 with a shape program right after it, sometimes
+        G70 along it."""
+        self.shapes += 1
+        first = SHAPE_LABELS + 10 * self.shapes
+        last = first + 5
+        cycle = self.pick(("G71", "G72", "G73"))
+        settings = {"G71": f"U{self.length(0.5, 3)} R{self.length(0, 1)}",
+                    "G72": f"W{self.length(0.5, 3)} R{self.length(0, 1)}",
+                    "G73": f"U{self.length(0, 4)} W{self.length(0, 2)} "
+                           f"R{self.rng.randint(1, 4)}"}[cycle]
+        small = round(self.rng.uniform(10, 30), 3)
+        step = round(self.rng.uniform(2, 15), 3)
+        lines = ["G00 X80. Z5. S1000", f"{cycle} {settings}",
+                 f"{cycle} P{first} Q{last} U{self.length(0, 0.5)} "
+                 f"W{self.length(0, 0.2)} F{self.length(0.1, 0.4)}"]
+        if cycle == "G72":
+            lines += [f"N{first} G00 Z{-step:.3f}",
+                      f"G01 X{small + 30:.3f} F{self.length(0.05, 0.2)}",
+                      f"N{last} X{small:.3f} Z0."]
+        else:
+            lines += [f"N{first} G00 X{small:.3f}",
+                      f"G01 Z{-step:.3f} F{self.length(0.05, 0.2)}",
+                      f"X{small + step:.3f} Z{-2 * step:.3f}",
+                      f"N{last} Z{-3 * step:.3f}"]
+        if self.chance(0.5):
+            lines.append(f"G70 P{first} Q{last}")
+        return lines
+
     def motion(self):
+        if self.lathe:
+            return self.lathe_motion()
         code = self.pick(("G00", "G01", "G01", "G02", "G03"))
         words = []
         for axis in self.rng.sample("XYZ", self.rng.randint(1, 3)):
@@ -256,6 +354,8 @@ class Generator:
         arc in it, a canned cycle, dwell, a reference return, a shift of
         the coordinate system, a transform or its cancel, G10, a feed
         mode, a skip move, a message, the unit."""
+        if self.lathe:
+            return self.lathe_feature()
         roll = self.rng.random()
         if roll < 0.12:
             plane = self.pick(("G17", "G18", "G19"))
@@ -540,7 +640,9 @@ class Generator:
         sections = self.rng.randint(1, 4)
         labels = [10 * (i + 1) + 1 for i in range(sections)]
         lines = [f"O{number}"]
-        if level == "main":
+        if level == "main" and self.lathe:
+            lines.append("G18 G21 G97 G98 G00 X100. Z50. F1000 S1000 M03")
+        elif level == "main":
             lines.append("G90 G17 G21 G00 X0 Y0 Z0 F1000")
         for i, label in enumerate(labels):
             later = labels[i + 1:]
@@ -586,6 +688,8 @@ class Generator:
         parameters = {name: value for name, value, _, _ in self.code_calls}
         if self.t_call:
             parameters["6001"] = 32
+        if self.lathe:
+            return json.dumps({"series": "T", "parameters": parameters})
         if not parameters:
             return None
         return json.dumps({"parameters": parameters})
