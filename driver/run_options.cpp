@@ -117,14 +117,16 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
          "write the toolpath as one HTML page to open in a browser: a 3D "
          "view to rotate, pan and zoom, the cut move by move, the source "
          "line of a move");
-    addValueOption(app, "--view", "xy|xz|yz|iso",
-                   "the view --svg draws (default: xy, from above)", error,
+    addValueOption(app, "--view", "xy|xz|yz|zx|iso",
+                   "the view --svg draws (default: xy, from above; zx, Z "
+                   "right and X up, on a lathe)",
+                   error,
                    [&o](const std::string& v) -> std::string {
                      o.svgViewGiven = true;
                      return parseSvgView(v, o.svgView)
                                 ? ""
-                                : fmt::format("unknown view '{}' (xy, xz, yz "
-                                              "or iso)",
+                                : fmt::format("unknown view '{}' (xy, xz, yz, "
+                                              "zx or iso)",
                                               v);
                    })
         ->group("Outputs");

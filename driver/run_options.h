@@ -24,7 +24,7 @@ struct RunOptions {
   std::string toolpathPath;
   std::string gcodePath; // the flattened program
   std::string svgPath;   // the toolpath drawn
-  SvgView svgView = SvgView::XY;
+  SvgView svgView = SvgView::Auto;
   bool svgViewGiven = false; // --view: an error without --svg
   std::string htmlPath;      // the toolpath as an interactive 3D page
   std::string statePath;     // nonvolatile variables and offsets, kept

@@ -62,12 +62,15 @@ constexpr int kSingleDepthLevel = 3;
 // The view's axis letters along u and v; none for the isometric view.
 std::pair<char, char> viewAxes(SvgView view) {
   switch (view) {
+    case SvgView::Auto: // no move to decide by
     case SvgView::XY:
       return {'X', 'Y'};
     case SvgView::XZ:
       return {'X', 'Z'};
     case SvgView::YZ:
       return {'Y', 'Z'};
+    case SvgView::ZX:
+      return {'Z', 'X'};
     case SvgView::Iso:
       break;
   }
@@ -76,12 +79,15 @@ std::pair<char, char> viewAxes(SvgView view) {
 
 const char* viewName(SvgView view) {
   switch (view) {
+    case SvgView::Auto:
     case SvgView::XY:
       return "XY";
     case SvgView::XZ:
       return "XZ";
     case SvgView::YZ:
       return "YZ";
+    case SvgView::ZX:
+      return "ZX";
     case SvgView::Iso:
       break;
   }
@@ -92,12 +98,15 @@ const char* viewName(SvgView view) {
 // the front right above: X runs right and down, Y right and up, Z up.
 std::pair<double, double> toView(SvgView view, double x, double y, double z) {
   switch (view) {
+    case SvgView::Auto:
     case SvgView::XY:
       return {x, y};
     case SvgView::XZ:
       return {x, z};
     case SvgView::YZ:
       return {y, z};
+    case SvgView::ZX:
+      return {z, x};
     case SvgView::Iso:
       break;
   }
@@ -125,6 +134,7 @@ bool parseSvgView(std::string_view text, SvgView& view) {
       {"xy", SvgView::XY},
       {"xz", SvgView::XZ},
       {"yz", SvgView::YZ},
+      {"zx", SvgView::ZX},
       {"iso", SvgView::Iso}};
   for (const auto& [name, v] : kViews) {
     if (text == name) {
@@ -155,6 +165,11 @@ void SvgWriter::include(Point p) {
 
 std::size_t SvgWriter::add(const mbrt_motion& motion) {
   const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
+  if (view_ == SvgView::Auto) {
+    const bool lathe = axisNamed(m, 'Y') < 0 && axisNamed(m, 'X') >= 0 &&
+                       axisNamed(m, 'Z') >= 0;
+    view_ = lathe ? SvgView::ZX : SvgView::XY;
+  }
   const std::size_t before = rapids_.size() + programmed_.size() +
                              feeds_.size() * sizeof(Piece) +
                              holes_.size() * sizeof(Hole);
@@ -185,7 +200,10 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
       drawArc(m, piece.d);
     } else {
       piece.d += fmt::format("L{} {}", number(end.u), number(-end.v));
-      recordHole(m);
+      // A lathe turns along Z: no move of it is a hole.
+      if (motion.diameter_mask == 0) {
+        recordHole(m);
+      }
     }
     grown = piece.d.size();
     feeds_.push_back(std::move(piece));

@@ -17,14 +17,16 @@
 
 namespace mbc::driver {
 
-enum class SvgView { XY, XZ, YZ, Iso };
+/// Auto: ZX (Z right, X up: a lathe's picture) for a machine with X and Z
+/// but no Y, XY otherwise, decided by the first move.
+enum class SvgView { Auto, XY, XZ, YZ, ZX, Iso };
 
-/// "xy", "xz", "yz" or "iso"; false for anything else.
+/// "xy", "xz", "yz", "zx" or "iso"; false for anything else.
 bool parseSvgView(std::string_view text, SvgView& view);
 
 class SvgWriter {
 public:
-  explicit SvgWriter(SvgView view = SvgView::XY) : view_(view) {}
+  explicit SvgWriter(SvgView view = SvgView::Auto) : view_(view) {}
 
   /// Records one move; returns the bytes the drawing grew by.
   std::size_t add(const mbrt_motion& motion);

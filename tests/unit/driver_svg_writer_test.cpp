@@ -134,6 +134,37 @@ TEST(SvgWriter, FeedsColouredByDepthAndTheAxesOfTheView) {
   EXPECT_FALSE(parseSvgView("top", view));
 }
 
+// A lathe (X and Z, X a diameter) is drawn by default in the ZX view, Z to
+// the right and X up, at its radii: a clockwise quarter circle of radius 5
+// from X10 (radius 5) Z0 to X20 Z-5 about X20 Z0 stays a quarter circle
+// (drawn at the diameters it would span 270 degrees of an ellipse).
+TEST(SvgWriter, ALatheInZxAtItsRadii) {
+  mbrt_motion arc{};
+  arc.kind = MBRT_MOTION_CW;
+  arc.axis_count = 2;
+  arc.axis_names = "XZ";
+  arc.diameter_mask = 1;
+  arc.start[0] = 10;
+  arc.end[0] = 20;
+  arc.end[1] = -5;
+  arc.plane = 18;
+  arc.center_axes[0] = 'Z';
+  arc.center_axes[1] = 'X';
+  arc.center[0] = 0;
+  arc.center[1] = 20;
+  arc.decimals = 3;
+  const std::string lathe = drawing({arc}, SvgView::Auto);
+  EXPECT_NE(lathe.find("view ZX"), std::string::npos) << lathe;
+  EXPECT_NE(lathe.find("d=\"M0 -5A5 5 0 0 "), std::string::npos) << lathe;
+  EXPECT_NE(lathe.find(" -5 -10\""), std::string::npos) << lathe;
+  EXPECT_EQ(drawing({move(MBRT_MOTION_LINEAR, 0, 0, 1, 1)}, SvgView::Auto)
+                .find("view ZX"),
+            std::string::npos);
+  SvgView view = SvgView::XY;
+  EXPECT_TRUE(parseSvgView("zx", view));
+  EXPECT_EQ(view, SvgView::ZX);
+}
+
 // Under cutter compensation the programmed contour is drawn beside the
 // tool centre: a boss corner R5 with the tool 2 outside it.
 TEST(SvgWriter, TheProgrammedContourBesideTheToolCentre) {
