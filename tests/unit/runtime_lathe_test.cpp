@@ -189,7 +189,6 @@ TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   const std::pair<const char*, const char*> cases[] = {
       {"G34 Z-20. F2. K0.1", "G34 (variable-lead threading)"},
       {"G07.1 C20.", "G7.1 (cylindrical interpolation)"},
-      {"G41 G01 X20. Z0", "G41 (tool nose radius compensation left)"},
   };
   for (const auto& [block, text] : cases) {
     Machine m(kLathe);
@@ -438,12 +437,14 @@ TEST(RuntimeLatheCycles, MultipleThreading) {
             status(AlarmId::IllegalRepetitiveCycle));
 }
 
-/// Points equal but for the last bits of arithmetic.
-void expectPath(const Points& path, const Points& expected) {
+/// Points equal but for the last bits of arithmetic (or, with
+/// `tolerance`, within the counts of a computed path).
+void expectPath(const Points& path, const Points& expected,
+                double tolerance = 1e-9) {
   ASSERT_EQ(path.size(), expected.size());
   for (std::size_t i = 0; i < path.size(); ++i) {
-    EXPECT_NEAR(path[i].first, expected[i].first, 1e-9) << i;
-    EXPECT_NEAR(path[i].second, expected[i].second, 1e-9) << i;
+    EXPECT_NEAR(path[i].first, expected[i].first, tolerance) << i;
+    EXPECT_NEAR(path[i].second, expected[i].second, tolerance) << i;
   }
 }
 
@@ -549,6 +550,35 @@ TEST(RuntimeLatheShapes, Alarms) {
   blocks(ending,
          {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2", "N10 G00 X30."});
   EXPECT_EQ(ending.block("M30"), status(AlarmId::ShapeCommand));
+}
+
+// Tool nose radius compensation, an OD tool (tip 3) of R0.8 turning a 45
+// degree chamfer X16-X20 and the diameter after it: the imaginary tip runs
+// on the programmed X and Z of straight moves, and the chamfer's path moves
+// R (1 - tan 22.5) = 0.4686 along Z (the handbook's compensation of a 45
+// degree chamfer). With tip 0 the nose centre is the control point: the
+// same path R (0.8 radius, 1.6 of diameter) above and R to the right.
+TEST(RuntimeLatheNoseRadius, ChamferWithTheTipDirection) {
+  const char* profile = R"({"series": "T", "tool_offsets": {
+      "1": {"r_geometry": 0.6, "r_wear": 0.2, "tip": 3}}})";
+  Machine m(profile);
+  const Points path =
+      blocks(m, {"G98 T0101", "G00 X16. Z2.", "G42 G01 Z0 F100.", "X20. Z-2.",
+                 "Z-10.", "G40 G00 X30."});
+  const double shift = 0.8 * (1.0 - std::tan(std::numbers::pi / 8.0));
+  // Positions are whole counts of 0.0005 mm.
+  expectPath(path,
+             {{16, 2}, {16, -shift}, {20, -2.0 - shift}, {20, -10}, {30, -10}},
+             0.0003);
+  Machine centre(R"({"series": "T", "tool_offsets": {
+      "1": {"r_geometry": 0.8, "tip": 0}}})");
+  const Points centred =
+      blocks(centre, {"G98 T0101", "G00 X16. Z2.", "G42 G01 Z0 F100.",
+                      "X20. Z-2.", "Z-10.", "G40 G00 X30."});
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_NEAR(centred[i].first, path[i].first + 1.6, 0.0011) << i;
+    EXPECT_NEAR(centred[i].second, path[i].second + 0.8, 0.0011) << i;
+  }
 }
 
 } // namespace

@@ -143,6 +143,8 @@ struct Frames {
   // of the offset the last T code selected, per axis.
   AxisCounts toolGeometry{};
   AxisCounts toolWear{};
+  int toolGeometryNumber = 0; // the offsets they came from (0: none)
+  int toolWearNumber = 0;
 
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
 };
@@ -189,6 +191,9 @@ struct HeldMove {
   std::string program; // the program it was read in
   int lengthAxis = -1; // the tool length offset of the block it was read in
   Counts length = 0;
+  // A lathe's imaginary tip vector, added to the move's points so that
+  // the offset path is the tip's (cutter_comp.cpp followTip).
+  AxisCounts tipShift{};
 };
 
 /// Cutter compensation C: the move whose end vector waits for the next move

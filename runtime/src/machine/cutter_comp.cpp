@@ -19,6 +19,7 @@
 
 #include "flat_gcode.h"
 #include "frames.h"
+#include "lathe_tools.h"
 #include "plane_geometry.h"
 
 namespace mbc::rt {
@@ -385,6 +386,11 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
 /// keeps it) in counts, and the side: G41 left, G42 right, swapped by a
 /// negative value and by a mirror image in the plane.
 mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
+  if (ctx.profile.lathe()) { // the nose radius of the T code's offset
+    move.offset = static_cast<double>(noseTool(ctx).radius);
+    move.side = ctx.modal.compensation == 41 ? 1 : -1;
+    return 0;
+  }
   const double d = ctx.lastWords[kLastDIndex];
   if (d < 0.0 || d > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
@@ -414,9 +420,33 @@ mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
   return 0;
 }
 
+/// A lathe's tool nose radius compensation: the imaginary tip, not the
+/// nose centre, is the control point, and offsetting commutes with moving
+/// the path, so the offset path of the programmed one moved by the tip
+/// vector is the tip's path. The vectors come from the programmed path, so
+/// every move under compensation moves whole; the cancel move still ends
+/// with the tip on its programmed end (cancel), and the start-up starts
+/// where the tool is.
+void followTip(const mbrt_ctx& ctx, HeldMove& move);
+
 /// G41 or G42 with an offset number other than D0.
 bool offsetOn(const mbrt_ctx& ctx) {
-  return ctx.modal.compensation != 40 && ctx.lastWords[kLastDIndex] != 0.0;
+  return ctx.modal.compensation != 40 &&
+         (ctx.profile.lathe() || ctx.lastWords[kLastDIndex] != 0.0);
+}
+
+void followTip(const mbrt_ctx& ctx, HeldMove& move) {
+  if (!ctx.compensation.engaged && !offsetOn(ctx)) {
+    return;
+  }
+  move.tipShift = noseTool(ctx).tip;
+  const PlaneIndex plane = planeIndex(ctx);
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    move.start[axis] += move.tipShift[axis];
+    move.end[axis] += move.tipShift[axis];
+  }
+  move.center[0] += static_cast<double>(move.tipShift[plane.p]);
+  move.center[1] += static_cast<double>(move.tipShift[plane.q]);
 }
 
 /// The blocks without plane motion the look-ahead tolerates between two
@@ -500,7 +530,11 @@ mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
     }
   }
   state.engaged = false;
-  moveWorkStraight(ctx, move.end, move.rapid, originOf(move));
+  AxisCounts end = move.end; // a lathe's tip back on the programmed end
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    end[axis] -= move.tipShift[axis];
+  }
+  moveWorkStraight(ctx, end, move.rapid, originOf(move));
   return 0;
 }
 
@@ -515,6 +549,9 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
                  fmt::format("cutter compensation in G{} needs axes {} and {}",
                              ctx.modal.plane, axes.letters[0],
                              axes.letters[1]));
+  }
+  if (ctx.profile.lathe()) {
+    followTip(ctx, move);
   }
   move.origin = blockOrigin(ctx);
   move.program = move.origin.program;

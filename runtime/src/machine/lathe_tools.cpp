@@ -39,9 +39,11 @@ mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved) {
   }
   Frames& frames = ctx.frames;
   const AxisCounts wearBefore = frames.toolWear;
+  frames.toolWearNumber = static_cast<int>(number);
   if (number == 0.0) {
     frames.toolWear = AxisCounts{};
   } else {
+    frames.toolGeometryNumber = static_cast<int>(number);
     const LatheOffset& offset =
         ctx.latheOffsets[static_cast<std::size_t>(number)];
     frames.toolGeometry =
@@ -110,6 +112,28 @@ char axisOfLetter(char letter) {
 }
 
 } // namespace
+
+NoseTool noseTool(const mbrt_ctx& ctx) {
+  const Frames& frames = ctx.frames;
+  const LatheOffset& geometry =
+      ctx.latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
+  const LatheOffset& wear =
+      ctx.latheOffsets[static_cast<std::size_t>(frames.toolWearNumber)];
+  const double radius =
+      geometry.rGeometry + (frames.toolWearNumber != 0 ? wear.rWear : 0.0);
+  NoseTool tool{static_cast<Counts>(roundToLengthCounts(ctx, radius)), {}};
+  // Tip directions 1-8 (X up, Z right): the tip from the nose centre.
+  static constexpr int kTip[9][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
+                                     {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
+  const auto tip = static_cast<int>(geometry.tip);
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  if (tip >= 1 && tip <= 8) {
+    tool.tip[x] = kTip[tip][0] * tool.radius;
+    tool.tip[z] = kTip[tip][1] * tool.radius;
+  }
+  return tool;
+}
 
 mbrt_status writeLatheOffsets(mbrt_ctx& ctx, const FrameWords& words) {
   const mbrt_word* pWord = words.word('P');
