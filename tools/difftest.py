@@ -11,7 +11,8 @@ G52/G92 shifts, scaling, rotation, mirror, polar coordinates, G10 offsets,
 feed modes and units, #3006 messages, bounded backward GOTO loops, optional
 block skip, system variables read and written; on a lathe profile, one in
 five programs: diameter X with U/W, G50, G96/G97, T codes and G10 offsets,
-single cycles, G74-G76 and G71-G73 with shapes and G70), each with the run options
+single cycles, G74-G76, G71-G73 with shapes and G70, nose radius
+compensation), each with the run options
 and machine profile it needs (--block-skip, --arg, --set, --machine), runs
 each under every engine and optimisation level, and compares everything a
 run writes with the interpreter's: exit status, stderr (alarms, the --trace
@@ -278,11 +279,29 @@ class Generator:
             return [f"G10 P{self.pick((offset, 10000 + offset))} "
                     f"{self.word('X')} {self.word('Z')}",
                     f"T{self.rng.randint(1, 4):02d}{offset:02d}"]
-        if roll < 0.85:
+        if roll < 0.8:
             return [f"#{self.pick((2001, 2101, 2701, 2801, 10002, 15002))} = "
                     f"{self.expression(0, 1)}",
                     f"T01{self.rng.randint(0, 3):02d}"]
+        if roll < 0.9:
+            return self.nose_radius_contour()
         return [self.pick(("G28 U0 W0", f"G28 {self.word('U')}"))]
+
+    def nose_radius_contour(self):
+        """A contour under tool nose radius compensation: the nose radius
+        and tip of offset 4, then G41/G42 moves and the G40 move."""
+        lines = [f"G10 P10004 R{self.length(0, 1.2)} Q{self.rng.randint(0, 9)}",
+                 "T0104", "G00 X70. Z5.",
+                 f"{self.pick(('G41', 'G42'))} G01 {self.word('X')} "
+                 f"{self.word('Z')} F{self.length(0.05, 0.3)}"]
+        for _ in range(self.rng.randint(1, 4)):
+            if self.chance(0.7):
+                lines.append(f"G01 {self.word('X')} {self.word('Z')}")
+            else:
+                lines.append(f"{self.pick(('G02', 'G03'))} {self.word('X')} "
+                             f"{self.word('Z')} R{self.length(5, 30)}")
+        lines.append(f"G40 G00 {self.word('X')}")
+        return lines
 
     def lathe_shape(self):
         """G71, G72 or G73 with a shape program right after it, sometimes
