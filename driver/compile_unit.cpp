@@ -97,6 +97,7 @@ bool parseInputs(const std::vector<SourceText>& texts,
                  std::string& failure) {
   ParseOptions options;
   options.checkWarnings = load.checkWarnings;
+  options.latheSystem = load.latheSystem;
   options.stopAtErrorLimit = load.errors == ErrorMode::Refuse;
   for (const SourceText& input : texts) {
     const std::uint32_t id = out.sources.add(input.name, input.text);

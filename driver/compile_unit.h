@@ -24,6 +24,7 @@ struct LoadOptions {
   // profile has get a warning. False with --machine, and for compile and
   // build, whose code learns its machine when it runs.
   bool defaultMachine = true;
+  char latheSystem = 0; // the profile's lathe G code system, 0: a mill
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
   DiagnosticOutput diagnostics;

@@ -9,6 +9,7 @@
 #include "driver/ir_pipeline.h"
 #include "driver/run_command.h"
 #include "driver/run_session.h"
+#include <mbc/engine.h>
 
 #include <cstdio>
 #include <exception>
@@ -38,10 +39,14 @@ int dispatch(int argc, char** argv) {
   if (options->command == "check") {
     CompiledUnit cu;
     // A profile given is checked too, and the checks defer to it.
-    if (!options->run.machinePath.empty() && !createContext(options->run)) {
-      return 2;
-    }
     LoadOptions load = loadOptions(*options);
+    if (!options->run.machinePath.empty()) {
+      const CtxPtr machine = createContext(options->run);
+      if (!machine) {
+        return 2;
+      }
+      load.latheSystem = static_cast<char>(mbrt_lathe_system(machine.get()));
+    }
     load.checkWarnings = true;
     return loadUnit(options->files, load, cu) ? 0 : 1;
   }

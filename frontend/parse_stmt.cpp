@@ -359,6 +359,15 @@ void Parser::parseWords(Stmt& s) {
       continue;
     }
     const double g = w.value->number;
+    if (options_.latheSystem != 0) {
+      // A lathe's cycles take sequence numbers, counts and increments;
+      // its G10 Q is a tip direction.
+      const int a = latheFunction(options_.latheSystem,
+                                  static_cast<int>(std::round(g * 10.0)));
+      dwell = dwell || a == 40;
+      units.notLengths += a >= 700 && a <= 760 ? "PQR" : a == 100 ? "Q" : "";
+      continue;
+    }
     dwell = dwell || g == 4;
     if (g == 73 || g == 74 || g == 76 || (g >= 81 && g <= 89)) {
       units.notLengths += 'K';
@@ -393,7 +402,12 @@ void Parser::reportUnmodelledCodes(const std::vector<Word>& words) {
       continue;
     }
     const int code = static_cast<int>(tenths);
-    if (const char* name = unmodelledGCode(code)) {
+    const int lathe = options_.latheSystem != 0
+                          ? latheFunction(options_.latheSystem, code)
+                          : 0;
+    if (const char* name = options_.latheSystem == 0 ? unmodelledGCode(code)
+                           : lathe >= 0 ? unmodelledLatheFunction(lathe)
+                                        : nullptr) {
       diags_.report(DiagKind::UnsupportedGCode, w.range, gCodeText(code), name);
     }
   }

@@ -19,6 +19,9 @@ struct ParseOptions {
   /// Stop reading at the error limit (mbc check); `mbc run` reads on, since
   /// every block it cannot read becomes an alarm.
   bool stopAtErrorLimit = true;
+  /// A lathe's G code system ('A', 'B', 'C'), 0 on a machining centre:
+  /// which G codes mbc check reports and which words of them are lengths.
+  char latheSystem = 0;
 };
 
 /// Parses one file and appends its programs to unit.

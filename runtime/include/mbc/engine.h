@@ -20,6 +20,10 @@ extern "C" {
  * set it; 0 for a number mbc does not model, docs/machine-profile.md). */
 double mbrt_parameter(const mbrt_ctx* ctx, int number);
 
+/* The G code system of a lathe's profile ('A', 'B' or 'C'; "series":
+ * "T"), 0 for a machining centre. */
+int mbrt_lathe_system(const mbrt_ctx* ctx);
+
 /* 1 when the profile turns the optional block skip switch on: blocks
  * starting with '/' are skipped. */
 int mbrt_block_skip(const mbrt_ctx* ctx);

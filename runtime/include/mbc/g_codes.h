@@ -17,4 +17,14 @@ std::string gCodeText(int tenths);
 /// does not have.
 const char* unmodelledGCode(int tenths);
 
+/// On a lathe in G code system `system` ('A', 'B', 'C'): the code (tenths)
+/// system A writes the same function with (G77 of system B is 900, G90's
+/// turning cycle), -1 when system A has no such code (G90/G91 of systems B
+/// and C) or the T series none at all.
+int latheFunction(char system, int tenths);
+
+/// The name of a lathe's G code (system A tenths, as latheFunction gives)
+/// that mbc does not execute yet, or nullptr.
+const char* unmodelledLatheFunction(int aTenths);
+
 } // namespace mbc

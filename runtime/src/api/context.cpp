@@ -250,6 +250,10 @@ double mbrt_parameter(const mbrt_ctx* ctx, int number) {
   return ctx->profile.parameter(number);
 }
 
+int mbrt_lathe_system(const mbrt_ctx* ctx) {
+  return ctx->profile.lathe() ? ctx->profile.gCodeSystem : 0;
+}
+
 int mbrt_block_skip(const mbrt_ctx* ctx) {
   return ctx->profile.blockSkip;
 }

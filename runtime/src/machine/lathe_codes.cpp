@@ -3,6 +3,8 @@
 // executes marked: a code it does not stops the run with MBC0001.
 #include "lathe_codes.h"
 
+#include <mbc/g_codes.h>
+
 #include <array>
 
 #include "block_calls.h"
@@ -145,10 +147,14 @@ const LatheGCode* findByCode(int code) {
 
 } // namespace
 
-double writtenLatheCode(const mbrt_ctx& ctx, int code) {
+int systemCode(char system, int code) {
   const LatheGCode* row = findByCode(code);
-  return row != nullptr ? systemTenths(*row, ctx.profile.gCodeSystem) / 10.0
-                        : 0.0;
+  return row != nullptr ? systemTenths(*row, system) : kNone;
+}
+
+double writtenLatheCode(const mbrt_ctx& ctx, int code) {
+  const int tenths = systemCode(ctx.profile.gCodeSystem, code);
+  return tenths != kNone ? tenths / 10.0 : 0.0;
 }
 
 int latheCode(char system, int tenths) {
@@ -203,3 +209,16 @@ double latheModalGroupValue(const mbrt_ctx& ctx, int group) {
 }
 
 } // namespace mbc::rt
+
+namespace mbc {
+
+int latheFunction(char system, int tenths) {
+  const int code = rt::latheCode(system, tenths);
+  return code < 0 ? -1 : rt::systemCode('A', code);
+}
+
+const char* unmodelledLatheFunction(int aTenths) {
+  return rt::unmodelledLatheCode(rt::latheCode('A', aTenths));
+}
+
+} // namespace mbc

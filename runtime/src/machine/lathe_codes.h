@@ -44,6 +44,9 @@ int latheCode(char system, int tenths);
 /// yet, or nullptr.
 const char* unmodelledLatheCode(int code);
 
+/// A latheCode as `system` writes it, in tenths; -1 for none.
+int systemCode(char system, int code);
+
 /// A latheCode as the profile's G code system writes it: 98 for feed per
 /// minute (940) in system A, 94 in B and C; 0 for none.
 double writtenLatheCode(const mbrt_ctx& ctx, int code);
