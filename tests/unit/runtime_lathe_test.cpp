@@ -579,6 +579,14 @@ TEST(RuntimeLatheNoseRadius, ChamferWithTheTipDirection) {
     EXPECT_NEAR(centred[i].first, path[i].first + 1.6, 0.0011) << i;
     EXPECT_NEAR(centred[i].second, path[i].second + 0.8, 0.0011) << i;
   }
+  // The cycles under compensation stop the run: never an uncompensated
+  // path where the control compensates.
+  for (const char* cycle : {"G70 P10 Q20", "G90 X30. Z-10. F0.2"}) {
+    Machine under(profile);
+    blocks(under, {"G98 T0101", "G00 X40. Z2.", "G42 G01 X36. F100."});
+    EXPECT_EQ(under.block(cycle), status(AlarmId::Unsupported)) << cycle;
+    EXPECT_TRUE(reports(under, "under tool nose radius compensation"));
+  }
 }
 
 } // namespace

@@ -6,6 +6,9 @@
 // (G90, G92) or along Z (G94).
 #include "lathe_cycles.h"
 
+#include <fmt/format.h>
+
+#include "cutter_comp.h"
 #include "lathe_codes.h"
 
 namespace mbc::rt {
@@ -20,6 +23,12 @@ struct CyclePoints {
 } // namespace
 
 mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
+  if (compensating(ctx)) { // FANUC compensates the cycle; mbc does not yet
+    return refuseUnderCompensation(
+        ctx, fmt::format(
+                 "G{} under tool nose radius compensation",
+                 writtenLatheCode(ctx, kLatheOwnCode + ctx.modal.motion * 10)));
+  }
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   SingleCycleData& data = ctx.modal.singleCycle;

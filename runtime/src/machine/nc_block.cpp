@@ -706,6 +706,12 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
+  // FANUC compensates the cycles' paths; mbc does not yet.
+  if (block.nonModal >= kLatheOwnCode && compensating(ctx)) {
+    return refuseUnderCompensation(
+        ctx, fmt::format("G{} under tool nose radius compensation",
+                         writtenLatheCode(ctx, block.nonModal)));
+  }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {
     return startShapeCycle(ctx, block.nonModal, block.frames);
