@@ -156,9 +156,11 @@ void parseLatheOffset(const json& value, const std::string& path,
     const std::string itemPath = child(path, key);
     const auto* end = std::begin(kFields) +
                       (geometryWear ? std::size(kFields) : kWithoutGeometry);
+    // A structured binding is no lambda capture before clang 16.
+    const std::string& name = key;
     const auto* field =
         std::find_if(std::begin(kFields), end,
-                     [&](const auto& f) { return key == f.first; });
+                     [&](const auto& f) { return name == f.first; });
     if (field == end) {
       unknownKey(itemPath);
     }
