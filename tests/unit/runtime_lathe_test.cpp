@@ -435,6 +435,16 @@ TEST(RuntimeLatheCycles, MultipleThreading) {
   }
   EXPECT_EQ(m.block("G76 X16.933 Z-30. P0 Q500 F2.5"),
             status(AlarmId::IllegalRepetitiveCycle));
+  // r = 10: a pull-out over one lead (2.5) in Z, rising at 60 degrees
+  // (5131): 2.5 tan 60 = 4.330 of radius.
+  Machine pull(R"({"series": "T", "parameters": {"5131": 60}})");
+  ASSERT_EQ(pull.block("G97 S500 G00 X24. Z5."), 0);
+  ASSERT_EQ(pull.block("G76 P011060 Q100 R0.05"), 0);
+  ASSERT_EQ(pull.block("G76 X16.933 Z-30. P1534 Q500 F2.5"), 0);
+  EXPECT_EQ(pull.motions()[2].end[1], -27.5);
+  EXPECT_NEAR(pull.motions()[3].end[0],
+              pull.motions()[2].end[0] + 2.0 * 2.5 * std::sqrt(3.0), 0.0011);
+  EXPECT_EQ(pull.motions()[3].end[1], -30.0);
 }
 
 /// Points equal but for the last bits of arithmetic (or, with

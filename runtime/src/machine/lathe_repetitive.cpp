@@ -12,7 +12,8 @@
 // thread height k less the finishing allowance d, then m passes at k. Each
 // pass rapids to its depth at the start shifted along the flank (depth ×
 // tan(a / 2), towards the thread's end: one edge cuts), threads to the end
-// point's Z (with a 45 degree pull-out over r × 0.1 lead when r > 0),
+// point's Z (with a pull-out over r × 0.1 lead when r > 0, rising at the
+// angle of parameter 5131 from Z, 45 degrees when 0),
 // rapids out in X and back to A.
 #include "lathe_repetitive.h"
 
@@ -220,6 +221,11 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
   const double flank = std::tan(angle / 2.0 * std::numbers::pi / 180.0);
   const Counts chamfer = static_cast<Counts>(
       roundHalfAway(setting(ctx, 5130) * 0.1 * lead * ctx.scale()));
+  // The pull-out rises at 5131's angle from Z (0: 45 degrees).
+  const double pullAngle = setting(ctx, 5131) > 0.0 ? setting(ctx, 5131) : 45.0;
+  const auto rise = static_cast<Counts>(
+      roundHalfAway(static_cast<double>(chamfer) *
+                    std::tan(pullAngle * std::numbers::pi / 180.0)));
   const int label = static_cast<int>(writtenLatheCode(ctx, kG76));
   const auto move = [&](Counts px, Counts pz, bool rapid) {
     AxisCounts to = ctx.program;
@@ -238,7 +244,7 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
       status = move(atDepth, threadEnd, false);
     }
     if (status == 0 && chamfer > 0) {
-      status = move(atDepth + outward * chamfer, end[z], false);
+      status = move(atDepth + outward * rise, end[z], false);
     }
     if (status == 0) {
       status = move(start[x], ctx.program[z], true);
