@@ -22,6 +22,19 @@ struct CyclePoints {
 
 } // namespace
 
+AxisCounts cycleEndPoint(const mbrt_ctx& ctx, const MotionWords& words) {
+  AxisCounts end = ctx.program;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if ((words.axisMask >> axis & 1) != 0) {
+      const bool incremental =
+          ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
+      end[axis] =
+          incremental ? ctx.program[axis] + words.axis[axis] : words.axis[axis];
+    }
+  }
+  return end;
+}
+
 mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
   if (compensating(ctx)) { // FANUC compensates the cycle; mbc does not yet
     return refuseUnderCompensation(
@@ -33,18 +46,7 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
   const int z = ctx.axisOf('Z');
   SingleCycleData& data = ctx.modal.singleCycle;
   const AxisCounts start = ctx.program;
-  const AxisCounts given = [&] {
-    AxisCounts target = start;
-    for (const int axis : {x, z}) {
-      if ((words.axisMask >> axis & 1) != 0) {
-        const bool incremental =
-            ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
-        target[axis] =
-            incremental ? start[axis] + words.axis[axis] : words.axis[axis];
-      }
-    }
-    return target;
-  }();
+  const AxisCounts given = cycleEndPoint(ctx, words);
   if ((words.axisMask >> x & 1) != 0) {
     data.hasX = true;
     data.x = given[x];

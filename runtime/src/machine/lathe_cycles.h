@@ -9,6 +9,10 @@
 
 namespace mbc::rt {
 
+/// A cycle block's end point: its X(U), Z(W)... from the program
+/// position, which stays on the axes it leaves out.
+AxisCounts cycleEndPoint(const mbrt_ctx& ctx, const MotionWords& words);
+
 /// One cycle of the single cycle in force (ctx.modal.motion).
 mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words);
 

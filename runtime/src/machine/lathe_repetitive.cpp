@@ -25,6 +25,8 @@
 #include <numbers>
 
 #include "lathe_codes.h"
+#include "lathe_cycles.h"
+#include "lathe_settings.h"
 
 namespace mbc::rt {
 
@@ -33,41 +35,10 @@ namespace {
 constexpr int kG74 = kLatheOwnCode + 740;
 constexpr int kG76 = kLatheOwnCode + 760;
 
-/// A cycle setting: the value a first block gave, else the parameter.
-double setting(const mbrt_ctx& ctx, int parameter) {
-  const auto it = ctx.cycleSettings.find(parameter);
-  return it != ctx.cycleSettings.end() ? it->second
-                                       : ctx.profile.parameter(parameter);
-}
-
-Counts lengthSetting(const mbrt_ctx& ctx, int parameter) {
-  return static_cast<Counts>(
-      roundHalfAway(setting(ctx, parameter) * ctx.countsPerMm()));
-}
-
-void keepLength(mbrt_ctx& ctx, int parameter, Counts counts) {
-  ctx.cycleSettings[parameter] =
-      static_cast<double>(counts) / ctx.countsPerMm();
-}
-
 /// PS0062 with the cycle and what is wrong.
 mbrt_status illegal(mbrt_ctx& ctx, int code, std::string_view what) {
   return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                fmt::format("G{}: {}", writtenLatheCode(ctx, code), what));
-}
-
-/// The block's end point: X(U) and Z(W), the start's where left out.
-AxisCounts endPoint(const mbrt_ctx& ctx, const MotionWords& words) {
-  AxisCounts end = ctx.program;
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    if ((words.axisMask >> axis & 1) != 0) {
-      const bool incremental =
-          ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
-      end[axis] =
-          incremental ? ctx.program[axis] + words.axis[axis] : words.axis[axis];
-    }
-  }
-  return end;
 }
 
 Counts towards(Counts from, Counts to, Counts step) {
@@ -79,7 +50,7 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   const MotionWords& motion = *words.motion;
   if (motion.axisMask == 0) { // the first block: R is the return e
     if (motion.hasR) {
-      keepLength(ctx, 5139, motion.r);
+      keepCycleLength(ctx, 5139, motion.r);
     }
     return 0;
   }
@@ -92,9 +63,9 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   const Counts peck = std::llabs(code == kG74 ? q : p);
   const Counts shift = std::llabs(code == kG74 ? p : q);
   const Counts relief = motion.hasR ? std::llabs(motion.r) : 0;
-  const Counts back = lengthSetting(ctx, 5139);
+  const Counts back = cycleLength(ctx, 5139);
   const AxisCounts start = ctx.program;
-  const AxisCounts end = endPoint(ctx, motion);
+  const AxisCounts end = cycleEndPoint(ctx, motion);
   if (peck == 0 && end[peckAxis] != start[peckAxis]) {
     return illegal(ctx, code, "the peck depth is 0");
   }
@@ -185,10 +156,10 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
       ctx.cycleSettings[5143] = angle;
     }
     if (words.q) {
-      keepLength(ctx, 5140, *words.q);
+      keepCycleLength(ctx, 5140, *words.q);
     }
     if (motion.hasR) {
-      keepLength(ctx, 5141, motion.r);
+      keepCycleLength(ctx, 5141, motion.r);
     }
     return 0;
   }
@@ -203,26 +174,27 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
                    "the thread height P and first depth Q must be "
                    "greater than 0");
   }
-  const int finishing = static_cast<int>(setting(ctx, 5142));
-  const double angle = setting(ctx, 5143);
-  const Counts least = lengthSetting(ctx, 5140);
-  const Counts allowance = lengthSetting(ctx, 5141);
+  const int finishing = static_cast<int>(cycleSetting(ctx, 5142));
+  const double angle = cycleSetting(ctx, 5143);
+  const Counts least = cycleLength(ctx, 5140);
+  const Counts allowance = cycleLength(ctx, 5141);
   if (allowance >= height) {
     return illegal(ctx, kG76,
                    "the finishing allowance is not less than the "
                    "thread height");
   }
   const AxisCounts start = ctx.program;
-  const AxisCounts end = endPoint(ctx, motion);
+  const AxisCounts end = cycleEndPoint(ctx, motion);
   const Counts taper = motion.hasR ? motion.r : 0;
   // The crest lies towards A: an outer thread is cut inwards.
   const Counts outward = start[x] >= end[x] ? 1 : -1;
   const Counts forward = end[z] >= start[z] ? 1 : -1;
   const double flank = std::tan(angle / 2.0 * std::numbers::pi / 180.0);
   const Counts chamfer = static_cast<Counts>(
-      roundHalfAway(setting(ctx, 5130) * 0.1 * lead * ctx.scale()));
+      roundHalfAway(cycleSetting(ctx, 5130) * 0.1 * lead * ctx.scale()));
   // The pull-out rises at 5131's angle from Z (0: 45 degrees).
-  const double pullAngle = setting(ctx, 5131) > 0.0 ? setting(ctx, 5131) : 45.0;
+  const double pullAngle =
+      cycleSetting(ctx, 5131) > 0.0 ? cycleSetting(ctx, 5131) : 45.0;
   const auto rise = static_cast<Counts>(
       roundHalfAway(static_cast<double>(chamfer) *
                     std::tan(pullAngle * std::numbers::pi / 180.0)));

@@ -8,6 +8,7 @@
 
 #include "lathe_codes.h"
 #include "lathe_roughing.h"
+#include "lathe_settings.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -45,17 +46,9 @@ std::optional<double> wholeWord(const FrameWords& words, char letter) {
 
 void keepLength(mbrt_ctx& ctx, int parameter, std::optional<double> units) {
   if (units) {
-    ctx.cycleSettings[parameter] =
-        roundToLengthCounts(ctx, *units) / ctx.countsPerMm();
+    keepCycleLength(ctx, parameter,
+                    static_cast<Counts>(roundToLengthCounts(ctx, *units)));
   }
-}
-
-double settingCounts(const mbrt_ctx& ctx, int parameter) {
-  const auto it = ctx.cycleSettings.find(parameter);
-  const double mm = it != ctx.cycleSettings.end()
-                        ? it->second
-                        : ctx.profile.parameter(parameter);
-  return roundHalfAway(mm * ctx.countsPerMm());
 }
 
 /// The first block of G71, G72 or G73: settings that stay.
@@ -192,8 +185,9 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
   if (code == kG73) {
     repeatShape(shape, allowance, relief, divisions, path);
   } else {
-    const Roughing roughing{code == kG72, settingCounts(ctx, 5132),
-                            settingCounts(ctx, 5133), allowance};
+    const Roughing roughing{
+        code == kG72, static_cast<double>(cycleLength(ctx, 5132)),
+        static_cast<double>(cycleLength(ctx, 5133)), allowance};
     if (roughing.depth <= 0.0) {
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: the depth of cut must be greater than 0",
@@ -274,11 +268,9 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
     reading.allowance.z = roundToAxisCounts(ctx, z, *w);
   }
   if (code == kG73) {
-    reading.relief = {settingCounts(ctx, 5135), settingCounts(ctx, 5136)};
-    const auto it = ctx.cycleSettings.find(5137);
-    reading.divisions = static_cast<int>(it != ctx.cycleSettings.end()
-                                             ? it->second
-                                             : ctx.profile.parameter(5137));
+    reading.relief = {static_cast<double>(cycleLength(ctx, 5135)),
+                      static_cast<double>(cycleLength(ctx, 5136))};
+    reading.divisions = static_cast<int>(cycleSetting(ctx, 5137));
     if (reading.divisions < 1) {
       ctx.shapeReading.code = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,

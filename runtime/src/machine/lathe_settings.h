@@ -1,0 +1,29 @@
+// The settings of a lathe's multiple repetitive cycles (parameters
+// 5130-5143): a cycle's first block overwrites them until power-off
+// (mbrt_ctx::cycleSettings, lengths in mm), else the profile's parameter.
+#pragma once
+
+#include <mbc/arith.h>
+
+#include "context.h"
+
+namespace mbc::rt {
+
+inline double cycleSetting(const mbrt_ctx& ctx, int parameter) {
+  const auto it = ctx.cycleSettings.find(parameter);
+  return it != ctx.cycleSettings.end() ? it->second
+                                       : ctx.profile.parameter(parameter);
+}
+
+/// A length setting in counts.
+inline Counts cycleLength(const mbrt_ctx& ctx, int parameter) {
+  return static_cast<Counts>(
+      roundHalfAway(cycleSetting(ctx, parameter) * ctx.countsPerMm()));
+}
+
+inline void keepCycleLength(mbrt_ctx& ctx, int parameter, Counts counts) {
+  ctx.cycleSettings[parameter] =
+      static_cast<double>(counts) / ctx.countsPerMm();
+}
+
+} // namespace mbc::rt
