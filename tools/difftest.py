@@ -249,7 +249,7 @@ class Generator:
             lines = [f"G00 X70. Z5. S{self.rng.randint(200, 2000)}",
                      f"{cycle} X{x} Z{z}{taper} F{self.length(0.1, 2)}"]
             lines += [self.word("X") for _ in range(self.rng.randint(0, 2))]
-            return lines + ["G00 X80."]
+            return self.maybe_compensated(lines + ["G00 X80."])
         if roll < 0.25:
             cycle = self.pick(("G74", "G75"))
             return [f"G00 X{x} Z2. S{self.rng.randint(200, 2000)}",
@@ -330,7 +330,16 @@ class Generator:
                       f"N{last} Z{-3 * step:.3f}"]
         if self.chance(0.5):
             lines.append(f"G70 P{first} Q{last}")
-        return lines
+        return self.maybe_compensated(lines)
+
+    def maybe_compensated(self, lines):
+        """Now and then the lines under tool nose radius compensation with
+        the nose radius and tip of offset 4, which the cycles compensate."""
+        if not self.chance(0.3):
+            return lines
+        return ([f"G10 P10004 R{self.length(0, 1.2)} "
+                 f"Q{self.rng.randint(0, 9)}", "T0104",
+                 self.pick(("G41", "G42"))] + lines + ["G40 G00 X90."])
 
     def motion(self):
         if self.lathe:

@@ -589,14 +589,98 @@ TEST(RuntimeLatheNoseRadius, ChamferWithTheTipDirection) {
     EXPECT_NEAR(centred[i].first, path[i].first + 1.6, 0.0011) << i;
     EXPECT_NEAR(centred[i].second, path[i].second + 0.8, 0.0011) << i;
   }
-  // The cycles under compensation stop the run: never an uncompensated
-  // path where the control compensates.
-  for (const char* cycle : {"G70 P10 Q20", "G90 X30. Z-10. F0.2"}) {
-    Machine under(profile);
-    blocks(under, {"G98 T0101", "G00 X40. Z2.", "G42 G01 X36. F100."});
-    EXPECT_EQ(under.block(cycle), status(AlarmId::Unsupported)) << cycle;
-    EXPECT_TRUE(reports(under, "under tool nose radius compensation"));
+}
+
+// Tool nose radius compensation in the cycles: an OD tool (tip 3) of R0.8.
+// The path of the imaginary tip is the programmed path moved by the tip
+// vector (-0.8 radius, -0.8 in Z) and offset 0.8 to the right of travel
+// (G42; G90 and G94 choose the side of the cut themselves). Straight moves
+// along Z or X keep the tip on their programmed line; where the start-up
+// (-X) meets the first cut (-Z), both offset lines meet 0.8 + 0.8 below the
+// approach: Z = 2 - 1.6 = 0.4.
+constexpr const char* kNoseR08 =
+    R"({"series": "T", "tool_offsets": {"1": {"r_geometry": 0.8, "tip": 3}}})";
+
+// G90 X46 Z-30 from X52 Z2 with G41 in force (the cycle takes G42 for an
+// OD cut towards the chuck): the start-up ends at (46, 0.4); the cut along
+// Z and the shoulder meet on the programmed corner (46, -30) (the shoulder's
+// offset line, 0.8 right of +X, moved back 0.8 by the tip: Z = -30); the
+// shoulder ends where its line meets the return's (+Z, offset 0.8 below,
+// moved 0.8 down by the tip: radius 26 - 1.6, X 48.8); the return to the
+// start point cancels the vector. G92 and G75 run as without compensation.
+TEST(RuntimeLatheNoseRadius, SingleAndGroovingCyclesUnderCompensation) {
+  Machine m(kNoseR08);
+  blocks(m, {"G98 T0101", "G00 X52. Z2.", "G41"});
+  const std::size_t before = m.motions().size();
+  blocks(m, {"G90 X46. Z-30. F100."});
+  EXPECT_EQ(ends(m, before),
+            (Points{{46, 0.4}, {46, -30}, {48.8, -30}, {52, 2}}));
+  EXPECT_EQ(m.motions()[before].kind, MBRT_MOTION_RAPID);
+  EXPECT_EQ(m.motions()[before + 2].kind, MBRT_MOTION_LINEAR);
+  EXPECT_EQ(m.motions()[before].cycle, 90);
+  EXPECT_EQ(m.read(5001), 52.0);
+  // G94 X30 Z-2 from X52 Z2: facing towards the centre, the part beyond
+  // in -Z, so G41. The start-up (-Z) and the face (-X) meet on the face's
+  // programmed line: Z -2 (offset 0.8 left of -X is +Z, the tip -0.8).
+  const std::size_t face = m.motions().size();
+  blocks(m, {"G94 X30. Z-2."});
+  EXPECT_EQ(ends(m, face).at(1).second, -2.0);
+  EXPECT_EQ(ends(m, face).back(), (std::pair<double, double>{52, 2}));
+  for (const char* cycle : {"G92 X48. Z-20. F1.5", "G75 R0.5"}) {
+    Machine plain(kNoseR08);
+    Machine under(kNoseR08);
+    // The approach under G42 is held; the cycle ends it on its point.
+    blocks(plain,
+           {"G98 G97 S500 T0101", "G00 X60. Z-10.", "G01 X52. F100.", cycle});
+    blocks(under, {"G98 G97 S500 T0101", "G00 X60. Z-10.", "G42 G01 X52. F100.",
+                   cycle});
+    const char* second = "G75 X40. Z-16. P2000 Q3000 F50.";
+    if (std::string_view(cycle).starts_with("G75")) {
+      blocks(plain, {second});
+      blocks(under, {second});
+    }
+    EXPECT_EQ(ends(under), ends(plain)) << cycle;
   }
+}
+
+// G71 under G42: the cycle roughs the compensated shape. Shape: X30 (the
+// start-up from A X60 Z2), Z-20, X50. Its tip path: (30, 0.4), (30, -20),
+// and the last move ends on its perpendicular vector (+Z 0.8, the tip
+// -0.8 in both): (48.4, -20). With the allowance (0.4 of diameter, 0.1)
+// every cut stops at Z-19.9 and the last pass follows (30.4, 0.5),
+// (30.4, -19.9), (48.8, -19.9). G70 runs the shape under compensation and
+// its return to A cancels the vector: the last move (+X) meets the
+// return's offset line (the return (22, 5) in Z and radius, offset 0.8 to
+// its right and moved by the tip) at radius 23.4199 + 5 * 0.6227 / 22.
+TEST(RuntimeLatheNoseRadius, ShapeCyclesUnderCompensation) {
+  Machine m(kNoseR08);
+  const Points path = blocks(m, {"G98 T0101", "G00 X60. Z2.", "G42",
+                                 "G71 U2. R0.5", "G71 P10 Q20 U0.4 W0.1 F100.",
+                                 "N10 G00 X30.", "G01 Z-20. F50.", "N20 X50."});
+  Points expected{{60, 2}};
+  for (double level = 56.0; level > 30.4; level -= 4.0) {
+    expected.insert(
+        expected.end(),
+        {{level, 2}, {level, -19.9}, {level + 1.0, -19.4}, {level + 1.0, 2}});
+  }
+  expected.insert(expected.end(),
+                  {{30.4, 0.5}, {30.4, -19.9}, {48.8, -19.9}, {60, 2}});
+  expectPath(path, expected, 0.0003);
+  const std::size_t before = m.motions().size();
+  blocks(m, {"G70 P10 Q20"});
+  const Points finish = ends(m, before);
+  ASSERT_EQ(finish.size(), 4U);
+  expectPath({finish[0], finish[1]}, {{30, 0.4}, {30, -20}});
+  EXPECT_NEAR(finish[2].first, 2.0 * (23.4199 + 5.0 * 0.6227 / 22.0), 0.001);
+  EXPECT_EQ(finish[2].second, -20.0);
+  EXPECT_EQ(finish[3], (std::pair<double, double>{60, 2}));
+  EXPECT_EQ(m.motions()[before + 1].feed, 50.0);
+  // G41/G42 and G40 in the shape program: the same shape compensated from
+  // N10 and cancelled by N20's move (ending on its programmed point).
+  Machine inShape(kNoseR08);
+  blocks(inShape, {"G98 T0101", "G00 X60. Z2.", "G70 P10 Q20",
+                   "N10 G00 G42 X30.", "G01 Z-20. F50.", "N20 G40 X50."});
+  expectPath(ends(inShape, 1), {{30, 0.4}, {30, -20}, {50, -20}, {60, 2}});
 }
 
 } // namespace

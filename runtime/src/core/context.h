@@ -261,6 +261,22 @@ template <class Fn> struct Sink {
   void* user = nullptr;
 };
 
+/// The state a lathe's shape cycle puts back after running blocks or moves
+/// that must not count: the shape program's blocks while it is read, and
+/// the dry run that finds a shape's compensated path (lathe_shapes.cpp).
+struct MachineSnapshot {
+  AxisCounts machine{};
+  AxisCounts program{};
+  ModalState modal;
+  Frames frames;
+  std::array<double, 30> lastWords{};
+  double clockMs = 0.0;
+  double clockHours = 0.0;
+  RunStats stats;
+  std::uint64_t moves = 0;
+  Sink<mbrt_motion_fn> motionSink;
+};
+
 /// A lathe's shape cycle (G70-G73) reading the blocks ns to nf of its
 /// shape program as they run (lathe_shapes.h): they move nothing, their
 /// moves make the shape, and the state before them comes back after nf.
@@ -276,17 +292,7 @@ struct ShapeReading {
   ShapePoint allowance;
   ShapePoint relief;
   int divisions = 1;
-  // The state the shape's blocks run over, back after nf.
-  AxisCounts machine{};
-  AxisCounts program{};
-  ModalState modal;
-  Frames frames;
-  std::array<double, 30> lastWords{};
-  double clockMs = 0.0;
-  double clockHours = 0.0;
-  RunStats stats;
-  std::uint64_t moves = 0;
-  Sink<mbrt_motion_fn> motionSink;
+  MachineSnapshot before; // the state the shape's blocks run over
 };
 
 } // namespace mbc::rt

@@ -16,12 +16,14 @@ enum class ShapeMotion { Rapid, Line, Clockwise, CounterClockwise };
 
 /// One move of a shape (or of a cycle's path): to `end` from the previous
 /// one's end, about `center` for arcs. `feed`: the F the shape program set
-/// for it, 0 when it set none (the cycle's F applies).
+/// for it, 0 when it set none (the cycle's F applies). `compensation`: the
+/// G40, G41 or G42 in force for it (a path already compensated has G40).
 struct ShapeMove {
   ShapeMotion motion = ShapeMotion::Line;
   ShapePoint end;
   ShapePoint center;
   double feed = 0.0;
+  int compensation = 40;
 };
 
 /// A finishing shape: the start point A of its cycle and the moves of the

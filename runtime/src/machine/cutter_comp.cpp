@@ -703,6 +703,24 @@ mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
   return leave(ctx, {perpendicularEnd(ctx, state.held.front())}, check);
 }
 
+mbrt_status cancelVectorHere(mbrt_ctx& ctx) {
+  CompensationState& state = ctx.compensation;
+  if (!state.engaged) {
+    return 0;
+  }
+  const PlaneIndex plane = planeIndex(ctx);
+  const AxisCounts here = programToWork(ctx, ctx.program);
+  if (!state.held.empty()) {
+    if (const mbrt_status status = leave(ctx, {pointOf(here, plane)})) {
+      return status;
+    }
+  } else if (here != toolPosition(ctx)) {
+    moveWorkStraight(ctx, here, ctx.modal.motion == 0, blockOrigin(ctx));
+  }
+  state.engaged = false;
+  return 0;
+}
+
 mbrt_status stopLookAhead(mbrt_ctx& ctx) {
   if (ctx.compensation.held.empty()) {
     return 0;

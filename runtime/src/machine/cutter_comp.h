@@ -16,9 +16,12 @@
 namespace mbc::rt {
 
 /// Whether moves go through compensation: G41 or G42 in force, or the tool
-/// still offset after G40 until the next move in the plane.
+/// still offset after G40 until the next move in the plane. Not while a
+/// lathe's shape cycle reads its shape program: its moves are the
+/// programmed shape, which the cycle compensates as a whole.
 inline bool compensating(const mbrt_ctx& ctx) {
-  return ctx.modal.compensation != 40 || ctx.compensation.engaged;
+  return ctx.shapeReading.code == 0 &&
+         (ctx.modal.compensation != 40 || ctx.compensation.engaged);
 }
 
 /// A programmed move (G00-G03, start and end in the workpiece frame;
@@ -41,6 +44,12 @@ mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask);
 /// plane counts against the look-ahead, and G40 or D0 in such a block ends
 /// the held move with a perpendicular vector.
 mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore);
+
+/// A lathe's cycle starts (0i-TF manual, canned cycles and tool nose
+/// radius compensation): the offset vector is cancelled at its start
+/// point, the program position. The held move ends there; the cycle's own
+/// moves start the offset again, and so does the next move after it.
+mbrt_status cancelVectorHere(mbrt_ctx& ctx);
 
 /// G39 corner circular interpolation: an arc of the offset value about the
 /// programmed point, to the vector perpendicular to the direction the

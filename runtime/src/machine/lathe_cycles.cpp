@@ -4,9 +4,13 @@
 // rapid in Z to the face, feed in X to the end point, feed back out in Z,
 // rapid back in X. The taper R is the cut's start less its end: a radius
 // (G90, G92) or along Z (G94).
+//
+// Under tool nose radius compensation (0i-TF manual, canned cycles and tool
+// nose radius compensation) the vector is cancelled at the start point, the
+// cycle's first move starts the offset, and its return to the start point
+// cancels it. G90 and G94 offset the tool on the side of the cut whatever
+// G41/G42 say; G92 cuts its thread uncompensated.
 #include "lathe_cycles.h"
-
-#include <fmt/format.h>
 
 #include "cutter_comp.h"
 #include "lathe_codes.h"
@@ -19,6 +23,19 @@ struct CyclePoints {
   AxisCounts start, cut, end, back;
   bool rapidBack; // the third move: G92 leaves the thread at rapid
 };
+
+/// G90 and G94 under compensation: G42 where the finished part lies left of
+/// the cut's travel in the ZX plane, else G41. G90 cuts along Z, the part
+/// lying beyond the cut in X; G94 cuts along X, the part lying beyond it in
+/// Z.
+int cutSide(const AxisCounts& start, const AxisCounts& end, int x, int z,
+            bool facing) {
+  const auto sign = [](Counts v) { return v < 0 ? -1 : 1; };
+  const int sx = sign(end[x] - start[x]);
+  const int sz = sign(end[z] - start[z]);
+  const bool partLeft = facing ? -sx == sz : sx == sz;
+  return partLeft ? 42 : 41;
+}
 
 } // namespace
 
@@ -36,11 +53,8 @@ AxisCounts cycleEndPoint(const mbrt_ctx& ctx, const MotionWords& words) {
 }
 
 mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
-  if (compensating(ctx)) { // FANUC compensates the cycle; mbc does not yet
-    return refuseUnderCompensation(
-        ctx, fmt::format(
-                 "G{} under tool nose radius compensation",
-                 writtenLatheCode(ctx, kLatheOwnCode + ctx.modal.motion * 10)));
+  if (const mbrt_status status = cancelVectorHere(ctx)) {
+    return status;
   }
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
@@ -73,23 +87,33 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
     p.back[z] = end[z];
   }
 
+  const int programmed = ctx.modal.compensation;
+  const int side = programmed == 40 || cycle == kThreadCycleMotion
+                       ? 40
+                       : cutSide(start, end, x, z, cycle == kFacingCycleMotion);
+
   const struct {
     const AxisCounts* to;
     bool rapid;
-  } moves[] = {{&p.cut, true},
-               {&p.end, false},
-               {&p.back, p.rapidBack},
-               {&p.start, true}};
+    int compensation; // the return to the start point cancels
+  } moves[] = {{&p.cut, true, side},
+               {&p.end, false, side},
+               {&p.back, p.rapidBack, side},
+               {&p.start, true, 40}};
 
-  const int label =
+  ctx.cycleLabel =
       static_cast<int>(writtenLatheCode(ctx, kLatheOwnCode + cycle * 10));
+  mbrt_status status = 0;
   for (const auto& move : moves) {
-    if (const mbrt_status status =
-            moveStraight(ctx, *move.to, move.rapid, label)) {
-      return status;
+    ctx.modal.compensation = move.compensation;
+    status = moveLine(ctx, *move.to, move.rapid);
+    if (status != 0) {
+      break;
     }
   }
-  return 0;
+  ctx.modal.compensation = programmed;
+  ctx.cycleLabel = 0;
+  return status;
 }
 
 } // namespace mbc::rt

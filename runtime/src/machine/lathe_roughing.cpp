@@ -41,6 +41,14 @@ ShapePoint shifted(ShapePoint p, ShapePoint by) {
   return {p.x + by.x, p.z + by.z};
 }
 
+/// A straight move of a cycle's path, at the cycle's F.
+ShapeMove straightTo(ShapeMotion motion, ShapePoint end) {
+  ShapeMove move;
+  move.motion = motion;
+  move.end = end;
+  return move;
+}
+
 bool isArc(const ShapeMove& move) {
   return move.motion == ShapeMotion::Clockwise ||
          move.motion == ShapeMotion::CounterClockwise;
@@ -162,9 +170,6 @@ ShapeFault roughTurning(const Shape& shape, const Roughing& roughing,
   }
   const ShapePoint a = shape.start;
   const ShapeMove& first = shape.moves.front();
-  if (first.end.z != a.z) {
-    return ShapeFault::TypeTwo; // the first block moves Z too: pockets
-  }
   // The contour: the shape after A', shifted by the allowance.
   const ShapePoint startC = shifted(first.end, roughing.allowance);
   std::vector<ShapeMove> contour;
@@ -186,17 +191,16 @@ ShapeFault roughTurning(const Shape& shape, const Roughing& roughing,
   for (double level = a.x - sx * roughing.depth; sx * (level - startC.x) > 0.0;
        level -= sx * roughing.depth) {
     const double stop = levelHit(contour, startC, level).value_or(endC.z);
-    out.push_back({approach, {level, a.z}, {}, 0.0});
-    out.push_back({ShapeMotion::Line, {level, stop}, {}, 0.0});
-    out.push_back({ShapeMotion::Rapid,
-                   {level + sx * roughing.escape, stop - dz * roughing.escape},
-                   {},
-                   0.0});
+    out.push_back(straightTo(approach, {level, a.z}));
+    out.push_back(straightTo(ShapeMotion::Line, {level, stop}));
     out.push_back(
-        {ShapeMotion::Rapid, {level + sx * roughing.escape, a.z}, {}, 0.0});
+        straightTo(ShapeMotion::Rapid, {level + sx * roughing.escape,
+                                        stop - dz * roughing.escape}));
+    out.push_back(
+        straightTo(ShapeMotion::Rapid, {level + sx * roughing.escape, a.z}));
   }
   // Along the shape with the allowance left on it, then back to A.
-  out.push_back({approach, startC, {}, 0.0});
+  out.push_back(straightTo(approach, startC));
   for (ShapeMove move : contour) {
     move.feed = 0.0; // the cycle's F
     if (move.motion == ShapeMotion::Rapid) {
@@ -204,11 +208,19 @@ ShapeFault roughTurning(const Shape& shape, const Roughing& roughing,
     }
     out.push_back(move);
   }
-  out.push_back({ShapeMotion::Rapid, a, {}, 0.0});
+  out.push_back(straightTo(ShapeMotion::Rapid, a));
   return ShapeFault::None;
 }
 
 } // namespace
+
+bool typeOne(const Shape& shape, bool facing) {
+  if (shape.moves.empty()) {
+    return true;
+  }
+  const ShapePoint end = shape.moves.front().end;
+  return facing ? end.x == shape.start.x : end.z == shape.start.z;
+}
 
 ShapeFault roughShape(const Shape& shape, const Roughing& roughing,
                       std::vector<ShapeMove>& out) {
@@ -239,7 +251,7 @@ void repeatShape(const Shape& shape, ShapePoint allowance, ShapePoint relief,
       move.feed = 0.0;
       out.push_back(move);
     }
-    out.push_back({ShapeMotion::Rapid, shape.start, {}, 0.0});
+    out.push_back(straightTo(ShapeMotion::Rapid, shape.start));
   }
 }
 

@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "cutter_comp.h"
 #include "lathe_codes.h"
 #include "lathe_roughing.h"
 #include "lathe_settings.h"
@@ -78,44 +81,59 @@ ShapeMotion shapeMotion(int kind) {
   }
 }
 
-/// The motion sink while a shape is read: each move becomes part of it.
+/// A move the motion sink saw, as a move of a shape.
+ShapeMove shapeMoveOf(const mbrt_ctx& ctx, const mbrt_motion& motion) {
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  ShapeMove move;
+  move.motion = shapeMotion(motion.kind);
+  move.end = {motion.end[x] * ctx.axisScale(x),
+              motion.end[z] * ctx.axisScale(z)};
+  for (int i = 0; i < 2; ++i) {
+    const int axis = ctx.axisOf(motion.center_axes[i]);
+    const double counts = motion.center[i] * ctx.axisScale(axis);
+    (axis == x ? move.center.x : move.center.z) = counts;
+  }
+  return move;
+}
+
+/// The motion sink while a shape is read: each move becomes part of it,
+/// with the G40/G41/G42 a block of the shape gave (0: the cycle's).
 void recordMove(void* user, const mbrt_motion* motion) {
   auto& ctx = *static_cast<mbrt_ctx*>(user);
   ShapeReading& reading = ctx.shapeReading;
   reading.feedSet = reading.feedSet || ctx.feedInBlock;
-  const int x = ctx.axisOf('X');
-  const int z = ctx.axisOf('Z');
-  ShapeMove move;
-  move.motion = shapeMotion(motion->kind);
-  move.end = {motion->end[x] * ctx.axisScale(x),
-              motion->end[z] * ctx.axisScale(z)};
-  for (int i = 0; i < 2; ++i) {
-    const int axis = ctx.axisOf(motion->center_axes[i]);
-    const double counts = motion->center[i] * ctx.axisScale(axis);
-    (axis == x ? move.center.x : move.center.z) = counts;
-  }
+  ShapeMove move = shapeMoveOf(ctx, *motion);
   move.feed =
       reading.feedSet && move.motion != ShapeMotion::Rapid ? motion->feed : 0.0;
+  const int compensation = ctx.modal.compensation;
+  move.compensation =
+      compensation != reading.before.modal.compensation ? compensation : 0;
   reading.shape.moves.push_back(move);
 }
 
 /// Runs a cycle's path from the current position, its moves marked with
-/// the cycle; a move without a feed of its own takes `feed`.
+/// the cycle; a move without a feed of its own takes `feed`, one without a
+/// G40/G41/G42 of its own `compensation`.
 mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
-                     int code, double feed) {
+                     int code, double feed, int compensation) {
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   const ModalState modal = ctx.modal;
+  const bool codeInBlock = ctx.compensation.codeInBlock;
+  ctx.compensation.codeInBlock = false;
   ctx.cycleLabel = writtenCode(ctx, code);
   ctx.modal.incremental = false;
   mbrt_status status = 0;
   for (const ShapeMove& move : moves) {
     ctx.modal.feed = move.feed > 0.0 ? move.feed : feed;
+    ctx.modal.compensation =
+        move.compensation != 0 ? move.compensation : compensation;
     AxisCounts target = ctx.program;
     target[x] = static_cast<Counts>(roundHalfAway(move.end.x));
     target[z] = static_cast<Counts>(roundHalfAway(move.end.z));
     if (move.motion == ShapeMotion::Rapid || move.motion == ShapeMotion::Line) {
-      status = moveStraight(ctx, target, move.motion == ShapeMotion::Rapid);
+      status = moveLine(ctx, target, move.motion == ShapeMotion::Rapid);
     } else {
       MotionWords words;
       words.axisMask = (std::uint32_t{1} << x) | (std::uint32_t{1} << z);
@@ -133,38 +151,86 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
     }
   }
   ctx.cycleLabel = 0;
+  ctx.compensation.codeInBlock = codeInBlock;
   const double lastFeed = ctx.modal.feed;
   ctx.modal = modal;
   ctx.modal.feed = code == kG70 ? lastFeed : modal.feed;
   return status;
 }
 
-/// G70 along a shape: its moves, then back to the start point at rapid.
+/// G70 along a shape: its moves, then back to the start point at rapid,
+/// which cancels the offset vector of tool nose radius compensation.
 mbrt_status finish(mbrt_ctx& ctx, const Shape& shape) {
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   std::vector<ShapeMove> moves = shape.moves;
-  moves.push_back({ShapeMotion::Rapid,
-                   {static_cast<double>(ctx.program[x]),
-                    static_cast<double>(ctx.program[z])},
-                   {},
-                   0.0});
-  return runMoves(ctx, moves, kG70, ctx.modal.feed);
+  ShapeMove back;
+  back.motion = ShapeMotion::Rapid;
+  back.end = {static_cast<double>(ctx.program[x]),
+              static_cast<double>(ctx.program[z])};
+  back.compensation = 40;
+  moves.push_back(back);
+  return runMoves(ctx, moves, kG70, ctx.modal.feed, ctx.modal.compensation);
 }
 
-/// The state the shape's blocks ran over comes back.
-void restoreState(mbrt_ctx& ctx) {
-  ShapeReading& reading = ctx.shapeReading;
-  ctx.machine = reading.machine;
-  ctx.program = reading.program;
-  ctx.modal = reading.modal;
-  ctx.frames = reading.frames;
-  ctx.lastWords = reading.lastWords;
-  ctx.clockMs = reading.clockMs;
-  ctx.clockHours = reading.clockHours;
-  ctx.stats = reading.stats;
-  ctx.moves = reading.moves;
-  ctx.motionSink = reading.motionSink;
+MachineSnapshot takeSnapshot(const mbrt_ctx& ctx) {
+  return {ctx.machine, ctx.program,    ctx.modal, ctx.frames, ctx.lastWords,
+          ctx.clockMs, ctx.clockHours, ctx.stats, ctx.moves,  ctx.motionSink};
+}
+
+void restoreSnapshot(mbrt_ctx& ctx, const MachineSnapshot& snapshot) {
+  ctx.machine = snapshot.machine;
+  ctx.program = snapshot.program;
+  ctx.modal = snapshot.modal;
+  ctx.frames = snapshot.frames;
+  ctx.lastWords = snapshot.lastWords;
+  ctx.clockMs = snapshot.clockMs;
+  ctx.clockHours = snapshot.clockHours;
+  ctx.stats = snapshot.stats;
+  ctx.moves = snapshot.moves;
+  ctx.motionSink = snapshot.motionSink;
+}
+
+/// Whether a shape runs under tool nose radius compensation, in part or
+/// whole, with the cycle's G40/G41/G42 `compensation`.
+bool compensated(const Shape& shape, int compensation) {
+  return std::any_of(shape.moves.begin(), shape.moves.end(),
+                     [&](const ShapeMove& move) {
+                       return (move.compensation != 0 ? move.compensation
+                                                      : compensation) != 40;
+                     });
+}
+
+struct PathCollector {
+  const mbrt_ctx* ctx;
+  std::vector<ShapeMove>* moves;
+};
+
+void collectMove(void* user, const mbrt_motion* motion) {
+  const auto& collector = *static_cast<PathCollector*>(user);
+  collector.moves->push_back(shapeMoveOf(*collector.ctx, *motion));
+}
+
+/// The path of the tool's control point along a shape under tool nose
+/// radius compensation (0i-TF manual, G71-G73 with G41/G42: the cycle
+/// roughs the compensated shape): from A without a vector to the end of
+/// nf with the vector perpendicular to its move. A dry run of the shape's
+/// moves through the compensation: nothing moves, nothing counts.
+mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
+                            Shape& path) {
+  const MachineSnapshot before = takeSnapshot(ctx);
+  const CompensationState compensation = ctx.compensation;
+  path = Shape{shape.start, {}};
+  PathCollector collector{&ctx, &path.moves};
+  ctx.motionSink = {collectMove, &collector};
+  mbrt_status status =
+      runMoves(ctx, shape.moves, code, ctx.modal.feed, ctx.modal.compensation);
+  if (status == 0) {
+    status = releaseHeldMoves(ctx);
+  }
+  ctx.compensation = compensation;
+  restoreSnapshot(ctx, before);
+  return status;
 }
 
 /// After nf: the cycle runs over the shape read.
@@ -175,42 +241,45 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
   const ShapePoint allowance = reading.allowance;
   const ShapePoint relief = reading.relief;
   const int divisions = reading.divisions;
-  restoreState(ctx);
+  restoreSnapshot(ctx, reading.before);
   ctx.shapeReading.code = 0;
   ctx.shapes[{reading.ns, reading.nf}] = shape;
   if (code == kG70) {
     return finish(ctx, shape);
   }
-  std::vector<ShapeMove> path;
-  if (code == kG73) {
-    repeatShape(shape, allowance, relief, divisions, path);
-  } else {
-    const Roughing roughing{
-        code == kG72, static_cast<double>(cycleLength(ctx, 5132)),
-        static_cast<double>(cycleLength(ctx, 5133)), allowance};
+  const Roughing roughing{
+      code == kG72, static_cast<double>(cycleLength(ctx, 5132)),
+      static_cast<double>(cycleLength(ctx, 5133)), allowance};
+  if (code != kG73) {
     if (roughing.depth <= 0.0) {
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: the depth of cut must be greater than 0",
                                writtenCode(ctx, code)));
     }
-    switch (roughShape(shape, roughing, path)) {
-      case ShapeFault::NotMonotonic:
-        return raise(ctx, AlarmId::ShapeNotMonotonic,
-                     fmt::format("G{} P{} Q{}: the shape turns back across "
-                                 "the cuts",
-                                 writtenCode(ctx, code), reading.ns,
-                                 reading.nf));
-      case ShapeFault::TypeTwo:
-        return raise(ctx, AlarmId::Unsupported,
-                     fmt::format("G{} type II (the shape's first block N{} "
-                                 "moves {} as well: pockets)",
-                                 writtenCode(ctx, code), reading.ns,
-                                 code == kG71 ? 'Z' : 'X'));
-      case ShapeFault::None:
-        break;
+    if (!typeOne(shape, roughing.facing)) {
+      return raise(ctx, AlarmId::Unsupported,
+                   fmt::format("G{} type II (the shape's first block N{} "
+                               "moves {} as well: pockets)",
+                               writtenCode(ctx, code), reading.ns,
+                               code == kG71 ? 'Z' : 'X'));
     }
   }
-  return runMoves(ctx, path, code, ctx.modal.feed);
+  Shape cut = shape;
+  if (compensated(shape, ctx.modal.compensation)) {
+    if (const mbrt_status status = compensatedPath(ctx, code, shape, cut)) {
+      return status;
+    }
+  }
+  std::vector<ShapeMove> path;
+  if (code == kG73) {
+    repeatShape(cut, allowance, relief, divisions, path);
+  } else if (roughShape(cut, roughing, path) == ShapeFault::NotMonotonic) {
+    return raise(ctx, AlarmId::ShapeNotMonotonic,
+                 fmt::format("G{} P{} Q{}: the shape turns back across "
+                             "the cuts",
+                             writtenCode(ctx, code), reading.ns, reading.nf));
+  }
+  return runMoves(ctx, path, code, ctx.modal.feed, 40);
 }
 
 /// Reading starts: the state the shape's blocks will run over is kept.
@@ -224,16 +293,7 @@ void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
   const int z = ctx.axisOf('Z');
   reading.shape.start = {static_cast<double>(ctx.program[x]),
                          static_cast<double>(ctx.program[z])};
-  reading.machine = ctx.machine;
-  reading.program = ctx.program;
-  reading.modal = ctx.modal;
-  reading.frames = ctx.frames;
-  reading.lastWords = ctx.lastWords;
-  reading.clockMs = ctx.clockMs;
-  reading.clockHours = ctx.clockHours;
-  reading.stats = ctx.stats;
-  reading.moves = ctx.moves;
-  reading.motionSink = ctx.motionSink;
+  reading.before = takeSnapshot(ctx);
 }
 
 } // namespace
@@ -250,6 +310,9 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
     }
     keepSettings(ctx, code, words);
     return 0;
+  }
+  if (const mbrt_status status = cancelVectorHere(ctx)) {
+    return status;
   }
   if (code == kG70) {
     if (const auto shape = ctx.shapes.find({*ns, *nf});
@@ -302,11 +365,11 @@ mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
 mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
                             const mbrt_flow& flow, mbrt_status status) {
   ShapeReading& reading = ctx.shapeReading;
-  ctx.motionSink = reading.motionSink;
+  ctx.motionSink = reading.before.motionSink;
   // A shape that cannot be read leaves the machine where the cycle found
   // it, for a context that runs again.
   const auto stop = [&] {
-    restoreState(ctx);
+    restoreSnapshot(ctx, reading.before);
     reading.code = 0;
   };
   if (status != 0) {

@@ -291,9 +291,6 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
   }
 }
 
-mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
-                     const MotionWords* words = nullptr);
-
 /// A straight move from the program position to `target` as cutter
 /// compensation takes it; the program position is then `target`.
 HeldMove straightTo(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
@@ -716,9 +713,6 @@ void dwell(mbrt_ctx& ctx, double seconds) {
   passTime(ctx, seconds);
 }
 
-namespace {
-
-/// A G00 or G01 move of the program, which cutter compensation may hold.
 mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                      const MotionWords* words) {
   if (!compensating(ctx)) {
@@ -736,8 +730,6 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   }
   return compensateMove(ctx, std::move(move));
 }
-
-} // namespace
 
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;

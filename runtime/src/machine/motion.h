@@ -68,6 +68,11 @@ void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle = 0);
 
+/// A G00 or G01 move of the program to `target` (program coordinates),
+/// which cutter compensation may hold; `words` give G41/G42 I J K.
+mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
+                     const MotionWords* words = nullptr);
+
 /// After the tool length offset changed in a block without motion: the
 /// control point moves so that the program position stays (G43 H1 alone
 /// moves Z by the offset), a rapid in G00 and a feed otherwise.

@@ -706,17 +706,18 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
-  // FANUC compensates the cycles' paths; mbc does not yet.
-  if (block.nonModal >= kLatheOwnCode && compensating(ctx)) {
-    return refuseUnderCompensation(
-        ctx, fmt::format("G{} under tool nose radius compensation",
-                         writtenLatheCode(ctx, block.nonModal)));
-  }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {
     return startShapeCycle(ctx, block.nonModal, block.frames);
   }
   if (block.nonModal >= kLatheOwnCode) {
+    // G74-G76 cut uncompensated, from a start point without the offset
+    // vector of tool nose radius compensation (cutter_comp.h).
+    if (motion.axisMask != 0) {
+      if (const mbrt_status status = cancelVectorHere(ctx)) {
+        return status;
+      }
+    }
     return executeRepetitiveCycle(
         ctx, block.nonModal,
         {&motion, block.incrementQ,
