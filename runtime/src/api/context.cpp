@@ -102,7 +102,6 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.spindleLimit = 0.0;
   ctx.cycleSettings.clear();
   ctx.shapes.clear();
-  ctx.shapes.clear();
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
   clearModalCodes(ctx);
   ctx.clockMs = 0.0;
