@@ -44,12 +44,12 @@ ARC = re.compile(r"ARC_FEED\(([-0-9.]+), ([-0-9.]+), ([-0-9.]+), "
                  r"([-0-9.]+), (-?1),")
 
 
-def mbc_moves(mbc, folder):
-    """Each move's end (radius, z) and, for arcs, centre (radius, z)."""
+def run_mbc(mbc, folder, text, cycle=None):
+    """Each move's end (radius, z) and, for arcs, centre (radius, z), of
+    the FANUC lathe program `text`; with `cycle` ("G70"), its moves only."""
     (folder / "lathe.json").write_text('{"series": "T"}')
     program = folder / "lathe.nc"
-    program.write_text("%\nO3001(PROFILE)\nG18G21G40G97G99S1000M03\n" +
-                       "\n".join(fanuc for fanuc, _ in MOVES) + "\nM30\n%\n")
+    program.write_text(text)
     toolpath = folder / "lathe.jsonl"
     subprocess.run([mbc, "run", str(program), "--machine",
                     str(folder / "lathe.json"), "--toolpath", str(toolpath)],
@@ -57,16 +57,18 @@ def mbc_moves(mbc, folder):
     moves = []
     for line in toolpath.read_text().splitlines():
         m = json.loads(line)
+        if cycle is not None and m.get("cycle") != cycle:
+            continue
         centre = (m["cx"] / 2, m["cz"]) if "cx" in m else None
         moves.append(((m["x"] / 2, m["z"]), centre))
     return moves
 
 
-def rs274_moves(folder):
+def run_rs274(folder, text):
+    """The moves of the LinuxCNC program `text`, as run_mbc gives them; a
+    move that goes nowhere is left out."""
     program = folder / "lathe.ngc"
-    program.write_text("G18 G21 G7 G90\n" +
-                       "\n".join(linuxcnc for _, linuxcnc in MOVES) +
-                       "\nM2\n")
+    program.write_text(text)
     out = folder / "canon.txt"
     subprocess.run(["rs274", "-g", str(program), str(out)],
                    check=True, capture_output=True, stdin=subprocess.DEVNULL)
@@ -77,8 +79,20 @@ def rs274_moves(folder):
             moves.append(((x, z), (cx, cz)))
         elif straight := STRAIGHT.search(line):
             x, z = (float(v) for v in straight.groups())
-            moves.append(((x, z), None))
+            if not moves or moves[-1][0] != (x, z):
+                moves.append(((x, z), None))
     return moves
+
+
+def mbc_moves(mbc, folder):
+    return run_mbc(mbc, folder,
+                   "%\nO3001(PROFILE)\nG18G21G40G97G99S1000M03\n" +
+                   "\n".join(fanuc for fanuc, _ in MOVES) + "\nM30\n%\n")
+
+
+def rs274_moves(folder):
+    return run_rs274(folder, "G18 G21 G7 G90\n" +
+                     "\n".join(linuxcnc for _, linuxcnc in MOVES) + "\nM2\n")
 
 
 def close(a, b):
@@ -86,21 +100,25 @@ def close(a, b):
     return all(abs(p - q) <= 0.0006 for p, q in zip(a, b))
 
 
+def compare(rows, ours, theirs):
+    """0 when every move of mbc's ends (and turns) where rs274's does; 1
+    after printing those that do not."""
+    failed = 0
+    for row, (end, centre), (oend, ocentre) in zip(rows, ours, theirs):
+        if not close(end, oend) or (centre is None) != (ocentre is None) or (
+                centre is not None and not close(centre, ocentre)):
+            print(f"{row}: mbc end {end} centre {centre}; rs274's end {oend} "
+                  f"centre {ocentre}")
+            failed = 1
+    return failed
+
+
 def main():
     both = collect(lambda folder: mbc_moves(sys.argv[1], folder),
                    rs274_moves, len(MOVES))
     if isinstance(both, int):
         return both
-    ours, theirs = both
-    failed = 0
-    for (fanuc, linuxcnc), (end, centre), (oend, ocentre) in zip(
-            MOVES, ours, theirs):
-        if not close(end, oend) or (centre is None) != (ocentre is None) or (
-                centre is not None and not close(centre, ocentre)):
-            print(f"{fanuc!r}: mbc end {end} centre {centre}; rs274's "
-                  f"{linuxcnc!r}: end {oend} centre {ocentre}")
-            failed = 1
-    return failed
+    return compare(MOVES, *both)
 
 
 if __name__ == "__main__":
