@@ -285,7 +285,20 @@ class Generator:
                     f"T01{self.rng.randint(0, 3):02d}"]
         if roll < 0.9:
             return self.nose_radius_contour()
+        if roll < 0.95:
+            return self.corner_steps()
         return [self.pick(("G28 U0 W0", f"G28 {self.word('U')}"))]
+
+    def corner_steps(self):
+        """Steps along Z and X with chamfers (I, K) and corner R between
+        them, their amounts drawn with either sign."""
+        lines = ["G00 X20. Z2.", f"G01 Z0 F{self.length(0.05, 0.3)}"]
+        for _ in range(self.rng.randint(1, 3)):
+            lines.append(f"{self.pick(('X', 'U'))}{self.length(2, 40)} "
+                         f"{self.pick(('K', 'R'))}{self.length(-1.5, 1.5)}")
+            lines.append(f"{self.pick(('Z', 'W'))}{self.length(-30, -1)} "
+                         f"{self.pick(('I', 'R'))}{self.length(-1.5, 1.5)}")
+        return lines + ["G00 X80."]
 
     def nose_radius_contour(self):
         """A contour under tool nose radius compensation: the nose radius

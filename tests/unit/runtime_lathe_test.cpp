@@ -683,5 +683,62 @@ TEST(RuntimeLatheNoseRadius, ShapeCyclesUnderCompensation) {
   expectPath(ends(inShape, 1), {{30, 0.4}, {30, -20}, {50, -20}, {60, 2}});
 }
 
+// Chamfering and corner R: from (X20 Z0), X30 K-1 stops 1 (radius) short
+// of the corner at X28 and chamfers 45 degrees to Z-1; Z-20 R2 stops at
+// Z-18 and turns clockwise (moving -Z, turning to +X) about (X34, Z-18)
+// to (X34, Z-20); X40 goes on from there; Z-30 I1 chamfers to (X42, Z-30).
+// U and W in the block after a corner count from the corner.
+TEST(RuntimeLatheCorners, ChamfersAndCornerR) {
+  Machine m(kLathe);
+  const Points path = blocks(m, {"G98 G00 X20. Z0", "G01 X30. K-1. F100.",
+                                 "W-20. R2.", "U10.", "Z-30. I1.", "X50."});
+  expectPath(path, {{20, 0},
+                    {28, 0},
+                    {30, -1},
+                    {30, -18},
+                    {34, -20},
+                    {40, -20},
+                    {40, -29},
+                    {42, -30},
+                    {50, -30}});
+  EXPECT_EQ(m.motions()[4].kind, MBRT_MOTION_CW);
+  EXPECT_EQ(m.motions()[4].center[0], -18.0);          // Z
+  EXPECT_EQ(m.motions()[4].center[1], 34.0);           // X, a diameter
+  EXPECT_EQ(m.motions()[2].line, m.motions()[1].line); // the chamfer's block
+  // With 3405#4 CCR, C gives the chamfer instead of I and K.
+  Machine byC(R"({"series": "T", "parameters": {"3405": 16}})");
+  expectPath(blocks(byC, {"G98 G00 X20. Z0", "G01 X30. C-1. F100.",
+                          "Z-10. C-2.", "X20."}),
+             {{20, 0}, {28, 0}, {30, -1}, {30, -8}, {26, -10}, {20, -10}});
+}
+
+TEST(RuntimeLatheCorners, Alarms) {
+  const struct {
+    const char* held;
+    const char* next;
+    AlarmId alarm;
+  } cases[] = {
+      {"Z-10. R2.", "G00 X40.", AlarmId::NotG01AfterCorner},
+      {"Z-10. R2.", "G02 X34. Z-12. R2.", AlarmId::NotG01AfterCorner},
+      {"Z-10. R2.", "X40. Z-12.", AlarmId::MissingMoveAfterCorner},
+      {"Z-10. R2.", "X20.", AlarmId::MissingMoveAfterCorner},
+      {"Z-10. R2.", "M08", AlarmId::MissingMoveAfterCorner},
+      {"Z-10. R2.", "X32.", AlarmId::MissingCornerMove},
+      {"Z-1. R2.", "X40.", AlarmId::MissingCornerMove},
+      {"X34. Z-10. R2.", "X40.", AlarmId::TaperInCorner},
+      {"Z-10. K2.", "X40.", AlarmId::TaperInCorner},
+      {"Z-10. I2. R2.", "X40.", AlarmId::TooManyAddressCommands},
+  };
+
+  for (const auto& c : cases) {
+    Machine m(kLathe);
+    blocks(m, {"G98 G00 X30. Z0", "G01 F100."});
+    const mbrt_status held = m.block(c.held);
+    const mbrt_status next = held == 0 ? m.block(c.next) : held;
+    EXPECT_EQ(next, status(c.alarm)) << c.held << " / " << c.next;
+    EXPECT_EQ(m.motions().size(), 1U) << c.held << " / " << c.next;
+  }
+}
+
 } // namespace
 } // namespace mbc::test

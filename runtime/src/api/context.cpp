@@ -16,6 +16,7 @@
 
 #include "cutter_comp.h"
 #include "frames.h"
+#include "lathe_corners.h"
 #include "motion.h"
 #include "sysvars.h"
 
@@ -99,6 +100,7 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.intermediate = AxisCounts{};
   ctx.intermediateMask = 0;
   ctx.compensation = CompensationState{};
+  ctx.corner = CornerInsertion{};
   ctx.spindleLimit = 0.0;
   ctx.cycleSettings.clear();
   ctx.shapes.clear();
@@ -123,6 +125,7 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.subDepth = 0;
   ctx.levels.assign(1, LocalLevel{});
   ctx.compensation = CompensationState{};
+  ctx.corner = CornerInsertion{};
   ctx.shapeReading.code = 0; // a shape cycle an interrupted run was reading
   if (ctx.profile.clearOnReset) {
     clearModalCodes(ctx);
@@ -327,6 +330,7 @@ mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
 }
 
 void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
+  releaseCornerMove(*ctx);       // a chamfer block the run ended after
   releaseHeldMoves(*ctx, false); // the last move of a compensated contour
   if (end_kind == MBRT_END_M02_M30) {
     ctx->partsCount += 1.0;

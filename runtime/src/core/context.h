@@ -261,6 +261,23 @@ template <class Fn> struct Sink {
   void* user = nullptr;
 };
 
+/// Chamfering and corner R (lathe_corners.h): the G01 block with I, K
+/// (C) or R holds its move until the next block tells where the corner
+/// goes. Program coordinates; `amount` signed along `toward`.
+struct CornerInsertion {
+  bool pending = false;
+  bool fresh = false;  // held by the block running now
+  bool round = false;  // corner R, else a chamfer
+  AxisCounts from{};   // the held move's start (a)
+  AxisCounts corner{}; // its end (b), where the next block starts
+  int along = -1;      // the axis the held move runs on
+  int toward = -1;     // the axis of the next move
+  Counts amount = 0;
+  double feed = 0.0;
+  const char* file = nullptr; // the held block's
+  int line = 0;
+};
+
 /// The state a lathe's shape cycle puts back after running blocks or moves
 /// that must not count: the shape program's blocks while it is read, and
 /// the dry run that finds a shape's compensated path (lathe_shapes.cpp).
@@ -354,6 +371,7 @@ struct mbrt_ctx {
   mbc::rt::AxisCounts intermediate{};
   std::uint32_t intermediateMask = 0;
   mbc::rt::CompensationState compensation;
+  mbc::rt::CornerInsertion corner;
   // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
   // G92 S in B and C), rpm; 0: none given.
   double spindleLimit = 0.0;

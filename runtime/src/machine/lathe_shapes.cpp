@@ -381,6 +381,14 @@ mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
     return raise(ctx, AlarmId::ShapeCommand,
                  "a call, return or end in the shape program");
   }
+  if (n == reading.nf && ctx.corner.pending) {
+    ctx.corner.pending = false;
+    stop();
+    return raise(ctx, AlarmId::MissingMoveAfterCorner,
+                 fmt::format("N{}: the shape's last block ends with a "
+                             "chamfer or corner R",
+                             reading.nf));
+  }
   const std::vector<ShapeMove>& moves = reading.shape.moves;
   if (n == reading.ns &&
       (moves.empty() || (moves.front().motion != ShapeMotion::Rapid &&

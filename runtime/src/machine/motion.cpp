@@ -15,6 +15,7 @@
 #include "cutter_comp.h"
 #include "frames.h"
 #include "lathe_codes.h"
+#include "lathe_corners.h"
 #include "lathe_cycles.h"
 #include "lathe_shapes.h"
 #include "plane_geometry.h"
@@ -735,6 +736,12 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
   const AxisCounts target = workTarget(ctx, words, start);
+  if (ctx.corner.pending) {
+    return moveAfterCorner(ctx, words, target);
+  }
+  if (mode == 1 && insertsCorner(ctx, words)) {
+    return holdCornerMove(ctx, words, start, target);
+  }
   if (mode == 0 || mode == 1 || mode == kThreadingMotion) {
     return moveLine(ctx, target, mode == 0, &words);
   }

@@ -18,6 +18,9 @@ struct MotionWords {
   std::array<Counts, 3> center{};
   bool hasR = false;
   Counts r = 0;
+  // A lathe's chamfer amount C, when 3405#4 CCR gives C for I and K.
+  bool hasC = false;
+  Counts c = 0;
 };
 
 inline constexpr int kLastSIndex = 18; // #4119: the last S

@@ -15,6 +15,7 @@
 #include "frames.h"
 #include "g_codes.h"
 #include "lathe_codes.h"
+#include "lathe_corners.h"
 #include "lathe_repetitive.h"
 #include "lathe_shapes.h"
 #include "lathe_tools.h"
@@ -490,6 +491,10 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.motion.hasR = true;
     return toLengthCounts(ctx, word, &block.motion.r);
   }
+  if (letter == 'C' && chamferByC(ctx)) {
+    block.motion.hasC = true;
+    return toLengthCounts(ctx, word, &block.motion.c);
+  }
   if (isArcCenterLetter(letter)) {
     const int index = letter - 'I';
     block.motion.centerMask |= std::uint32_t{1} << index;
@@ -904,6 +909,9 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (const mbrt_status status = compensateBlockEnd(ctx, planeMovesBefore)) {
       return status;
     }
+  }
+  if (const mbrt_status status = checkCornerTaken(ctx)) {
+    return status;
   }
   // Under compensation a move may be held: the block's axis words say
   // whether it moved.

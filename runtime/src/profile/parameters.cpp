@@ -31,6 +31,7 @@ constexpr std::array kParameters = {
     ParameterSpec{3401, 3401, 0, 255, 0, true},           // #0 DPI
     ParameterSpec{3402, 3402, 0, 255, 0, true},      // #4 FPM (lathe), #6 CLR
     ParameterSpec{3403, 3403, 0, 255, 0, true},      // #5 CIR
+    ParameterSpec{3405, 3405, 0, 255, 0, true},      // #4 CCR (lathe)
     ParameterSpec{3410, 3410, 0, 1e9, 0.02, false},  // arc radius tolerance
     ParameterSpec{3772, 3772, 0, 99999999, 0, true}, // maximum spindle speed
     // A lathe's multiple repetitive cycles, until a program's first cycle
