@@ -191,9 +191,13 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
     rapids_ += fmt::format("L{} {}", number(end.u), number(-end.v));
     rapidPen_ = {true, end.u, end.v};
   } else {
-    const int z = axisNamed(m, 'Z');
+    if (motion.diameter_mask != 0) {
+      depthAxis_ = 'X';
+    }
+    const int deep = axisNamed(motion, depthAxis_);
     Piece piece;
-    piece.depth = z >= 0 ? std::min(m.start[z], m.end[z]) : 0.0;
+    piece.depth =
+        deep >= 0 ? std::min(motion.start[deep], motion.end[deep]) : 0.0;
     piece.arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
     piece.d = fmt::format("M{} {}", number(start.u), number(-start.v));
     if (piece.arc) {
@@ -372,13 +376,15 @@ std::string SvgWriter::legend(double x, double y, double font,
                      width) +
          label(x, "arc");
   x += advance("arc");
-  out += holeMark(x + font, y, font, pixel) + label(x, "plunge, depth");
-  x += advance("plunge, depth");
+  if (depthAxis_ == 'Z') { // a lathe has no holes
+    out += holeMark(x + font, y, font, pixel) + label(x, "plunge, depth");
+    x += advance("plunge, depth");
+  }
   // The depth scale: its top and bottom, the colours between.
   const double top = depthTop(), bottom = depthBottom();
-  out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\">Z {}</text>",
+  out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\">{} {}</text>",
                      number(x), number(y + 0.35 * font), number(0.8 * font),
-                     number(top));
+                     depthAxis_, number(top));
   x += font * (1.5 + 0.45 * static_cast<double>(number(top).size()));
   // A cut at one depth has one colour: one swatch and no bottom.
   const bool oneDepth = top - bottom <= 1e-9;

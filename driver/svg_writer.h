@@ -1,9 +1,9 @@
 // `mbc run --svg`: the toolpath drawn in one view of the workpiece
 // coordinates (XY, XZ, YZ or isometric): rapids dashed, feeds and arcs
-// coloured by depth, the holes where the tool plunges marked with their
-// depth, the work origin and its axes, a grid, a title, a legend and a
-// scale; under cutter compensation, in the XY view, the programmed contour
-// beside the tool centre.
+// coloured by depth (a lathe's by diameter: light outside, dark towards
+// the centre), the holes where the tool plunges marked with their depth, the
+// work origin and its axes, a grid, a title, a legend and a scale; under cutter
+// compensation, in the XY view, the programmed contour beside the tool centre.
 #pragma once
 
 #include <mbc/runtime.h>
@@ -42,7 +42,8 @@ private:
     double v = 0.0;
   };
 
-  /// A feed move's path data and the depth it is coloured by.
+  /// A feed move's path data and the depth it is coloured by: its lowest
+  /// Z, or on a lathe its smallest X (as programmed, a diameter).
   struct Piece {
     double depth = 0.0;
     bool arc = false;
@@ -84,6 +85,7 @@ private:
   bool haveBox_ = false;
   double minU_ = 0, maxU_ = 0, minV_ = 0, maxV_ = 0;
   const char* unit_ = "mm";
+  char depthAxis_ = 'Z'; // X on a lathe, whose cuts go deeper in X
 };
 
 } // namespace mbc::driver

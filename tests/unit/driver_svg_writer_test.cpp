@@ -157,6 +157,19 @@ TEST(SvgWriter, ALatheInZxAtItsRadii) {
   EXPECT_NE(lathe.find("view ZX"), std::string::npos) << lathe;
   EXPECT_NE(lathe.find("d=\"M0 -5A5 5 0 0 "), std::string::npos) << lathe;
   EXPECT_NE(lathe.find(" -5 -10\""), std::string::npos) << lathe;
+  // Coloured by diameter: the legend's scale is in X, without holes.
+  EXPECT_NE(lathe.find(">X 10</text>"), std::string::npos) << lathe;
+  EXPECT_EQ(lathe.find("plunge"), std::string::npos) << lathe;
+  mbrt_motion outer = arc;
+  outer.kind = MBRT_MOTION_LINEAR;
+  outer.start[0] = outer.end[0] = 40;
+  outer.start[1] = 0;
+  outer.end[1] = -30;
+  mbrt_motion inner = outer;
+  inner.start[0] = inner.end[0] = 30;
+  const std::string cuts = drawing({outer, inner}, SvgView::Auto);
+  EXPECT_NE(cuts.find(">X 40</text>"), std::string::npos) << cuts;
+  EXPECT_NE(cuts.find(">30</text>"), std::string::npos) << cuts;
   EXPECT_EQ(drawing({move(MBRT_MOTION_LINEAR, 0, 0, 1, 1)}, SvgView::Auto)
                 .find("view ZX"),
             std::string::npos);
