@@ -719,6 +719,9 @@ TEST(RuntimeLatheCorners, Alarms) {
     AlarmId alarm;
   } cases[] = {
       {"Z-10. R2.", "G00 X40.", AlarmId::NotG01AfterCorner},
+      {"Z-10. R2.", "G70 P10 Q20", AlarmId::NotG01AfterCorner},
+      {"Z-10. R2.", "G04 U1.", AlarmId::NotG01AfterCorner},
+      {"Z-10. R2.", "G28 U0", AlarmId::NotG01AfterCorner},
       {"Z-10. R2.", "G02 X34. Z-12. R2.", AlarmId::NotG01AfterCorner},
       {"Z-10. R2.", "X40. Z-12.", AlarmId::MissingMoveAfterCorner},
       {"Z-10. R2.", "X20.", AlarmId::MissingMoveAfterCorner},

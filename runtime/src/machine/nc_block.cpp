@@ -711,6 +711,15 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
 /// move in the modal motion mode.
 mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
   const MotionWords& motion = block.motion;
+  // After a chamfer or corner R only a G01 may come: a cycle, dwell or
+  // reference return would run before the alarm (lathe_corners.h).
+  if (ctx.corner.pending && (block.nonModal != 0 || ctx.modal.cycle != 0)) {
+    ctx.corner.pending = false;
+    return raise(ctx, AlarmId::NotG01AfterCorner,
+                 fmt::format("the block after a chamfer or corner R (line "
+                             "{}) must be G01",
+                             ctx.corner.line));
+  }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {
     return startShapeCycle(ctx, block.nonModal, block.frames);
