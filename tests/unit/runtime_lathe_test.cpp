@@ -553,6 +553,20 @@ TEST(RuntimeLatheShapes, Alarms) {
   EXPECT_EQ(pockets.block("N10 G00 X30. Z0"), 0);
   EXPECT_EQ(pockets.block("N20 G01 Z-10."), status(AlarmId::Unsupported));
   EXPECT_TRUE(reports(pockets, "G71 type II"));
+  // The control tells type II by the words of block ns: Z written counts
+  // even where it does not move (W0), and for G72 X.
+  for (const char* first : {"N10 G00 X30. W0", "N10 G00 X30. Z2."}) {
+    Machine written(kLathe);
+    blocks(written,
+           {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2", first});
+    EXPECT_EQ(written.block("N20 G01 Z-10."), status(AlarmId::Unsupported))
+        << first;
+  }
+  Machine facing(kLathe);
+  blocks(facing, {"G00 X62. Z2.", "G72 W2. R0.5", "G72 P30 Q40 F0.2",
+                  "N30 G00 X62. Z-6."});
+  EXPECT_EQ(facing.block("N40 G01 X20."), status(AlarmId::Unsupported));
+  EXPECT_TRUE(reports(facing, "G72 type II"));
   Machine elsewhere(kLathe);
   blocks(elsewhere, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2"});
   EXPECT_EQ(elsewhere.block("N5 G00 X30."), status(AlarmId::Unsupported));

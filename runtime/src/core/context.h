@@ -301,8 +301,10 @@ struct ShapeReading {
   int code = 0; // the cycle (lathe_codes.h) while reading, else 0
   double ns = 0.0;
   double nf = 0.0;
-  bool started = false; // block ns has run
-  bool feedSet = false; // a block of the shape gave F
+  bool started = false;        // block ns has run
+  bool feedSet = false;        // a block of the shape gave F
+  bool firstWordsRead = false; // block ns's axis words have been seen
+  bool typeTwo = false;        // block ns wrote the cut axis too (G71 Z, G72 X)
   Shape shape;
   // The cycle's settings: the finishing allowance (G71-G73), G73's relief
   // and divisions, all in counts, x a radius.

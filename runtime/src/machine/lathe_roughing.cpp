@@ -214,14 +214,6 @@ ShapeFault roughTurning(const Shape& shape, const Roughing& roughing,
 
 } // namespace
 
-bool typeOne(const Shape& shape, bool facing) {
-  if (shape.moves.empty()) {
-    return true;
-  }
-  const ShapePoint end = shape.moves.front().end;
-  return facing ? end.x == shape.start.x : end.z == shape.start.z;
-}
-
 ShapeFault roughShape(const Shape& shape, const Roughing& roughing,
                       std::vector<ShapeMove>& out) {
   if (!roughing.facing) {

@@ -23,16 +23,13 @@ struct Roughing {
 /// across the cuts (PS0064).
 enum class ShapeFault { None, NotMonotonic };
 
-/// Whether a G71 shape (G72: `facing`) is type I: the first block, from
-/// A, moves along X alone (G72: Z alone). Type II (pockets) moves both.
-bool typeOne(const Shape& shape, bool facing);
-
 /// G71/G72 type I: cuts Δd apart from A towards the shape, each from A's
 /// level along the cut axis to the shape (less the allowance), escaping e at
 /// 45 degrees and returning at rapid; then along the shape shifted by the
 /// allowance, and back to A. The cuts start at A's level along the cut
 /// axis whatever the first move does: under tool nose radius compensation
-/// it is the start-up move, beside the programmed one.
+/// it is the start-up move, beside the programmed one. The shape must be
+/// type I (lathe_shapes.h judges by the words of its first block).
 ShapeFault roughShape(const Shape& shape, const Roughing& roughing,
                       std::vector<ShapeMove>& out);
 

@@ -256,10 +256,10 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
                    fmt::format("G{}: the depth of cut must be greater than 0",
                                writtenCode(ctx, code)));
     }
-    if (!typeOne(shape, roughing.facing)) {
+    if (reading.typeTwo) {
       return raise(ctx, AlarmId::Unsupported,
                    fmt::format("G{} type II (the shape's first block N{} "
-                               "moves {} as well: pockets)",
+                               "gives {} as well: pockets)",
                                writtenCode(ctx, code), reading.ns,
                                code == kG71 ? 'Z' : 'X'));
     }
@@ -342,6 +342,17 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
     }
   }
   return 0;
+}
+
+void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
+  ShapeReading& reading = ctx.shapeReading;
+  if (reading.firstWordsRead) {
+    return;
+  }
+  reading.firstWordsRead = true;
+  const int cutAxis = ctx.axisOf(reading.code == kG72 ? 'X' : 'Z');
+  reading.typeTwo = (reading.code == kG71 || reading.code == kG72) &&
+                    (axisMask >> cutAxis & 1) != 0;
 }
 
 mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {

@@ -24,6 +24,11 @@ inline bool readingShape(const mbrt_ctx& ctx) {
   return ctx.shapeReading.code != 0;
 }
 
+/// The axis words of an NC block of the shape (bit a: axis a written):
+/// block ns that writes the cut axis too (Z for G71, X for G72; W0
+/// counts) makes the cycle type II, as the control decides.
+void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask);
+
 /// Around each NC block while a shape is read: `n` is the block's sequence
 /// number. The first must be ns; a block that calls or ends is PS0066;
 /// after nf the cycle runs.

@@ -884,6 +884,9 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
+  if (readingShape(ctx)) {
+    readShapeWords(ctx, block.motion.axisMask);
+  }
   // Lathe forms need a G code (G50, G99): most blocks have none.
   if (const mbrt_status status =
           block.gCodes != GCodes::None && !ctx.profile.lathe()
