@@ -39,32 +39,6 @@ std::string letterOf(const mbrt_ctx& ctx, int axis) {
   return std::string(1, ctx.profile.axes[static_cast<std::size_t>(axis)]);
 }
 
-/// The quarter arc of corner R from the program position to `end` about
-/// `center`, through cutter compensation when it is on.
-mbrt_status arcTo(mbrt_ctx& ctx, const AxisCounts& end,
-                  const AxisCounts& center, bool clockwise) {
-  const PlaneIndex plane = planeIndex(ctx);
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
-  MotionWords words;
-  words.axisMask =
-      (std::uint32_t{1} << plane.p) | (std::uint32_t{1} << plane.q);
-  words.axis = end;
-  for (int i = 0; i < 2; ++i) {
-    const int axis = i == 0 ? plane.p : plane.q;
-    const int index = axes.centerIndex[i];
-    words.centerMask |= std::uint32_t{1} << index;
-    words.center[static_cast<std::size_t>(index)] =
-        center[axis] - ctx.program[axis];
-  }
-  const ModalState modal = ctx.modal;
-  ctx.modal.motion = clockwise ? 2 : 3;
-  ctx.modal.incremental = false;
-  const mbrt_status status = executeMotion(ctx, words);
-  ctx.modal.motion = modal.motion;
-  ctx.modal.incremental = modal.incremental;
-  return status;
-}
-
 /// Runs `moves` as the held block: its F, file and line.
 template <class Moves>
 mbrt_status asHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held,
@@ -90,7 +64,7 @@ bool chamferByC(const mbrt_ctx& ctx) {
 }
 
 bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words) {
-  if (!ctx.profile.lathe() || ctx.compensation.codeInBlock) {
+  if (ctx.compensation.codeInBlock) {
     return false; // G41/G42 I K: the direction of the start-up (mill)
   }
   const PlaneAxes axes = planeAxes(ctx.modal.plane);
@@ -211,7 +185,7 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
     const int turn = held.along == planeIndex(ctx).p
                          ? travel * signOf(held.amount)
                          : -travel * signOf(held.amount);
-    return arcTo(ctx, c, center, turn < 0);
+    return moveArcAbout(ctx, c, center, turn < 0);
   });
   if (status != 0) {
     return status;
@@ -223,9 +197,6 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status checkCornerTaken(mbrt_ctx& ctx) {
   CornerInsertion& held = ctx.corner;
-  if (!held.pending) {
-    return 0;
-  }
   if (held.fresh) {
     held.fresh = false;
     return 0;

@@ -17,7 +17,7 @@ namespace mbc::rt {
 /// Whether C is the chamfer address: a lathe with 3405#4 CCR and no C axis.
 bool chamferByC(const mbrt_ctx& ctx);
 
-/// Whether a G01 block's words ask for a chamfer or a corner R.
+/// Whether a lathe's G01 block's words ask for a chamfer or a corner R.
 bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words);
 
 /// The G01 block with the chamfer or corner R: checks it and holds its
@@ -32,8 +32,8 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
 mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
                             const AxisCounts& target);
 
-/// At the end of every NC block: a block after the held one that did not
-/// take the corner is PS0051.
+/// At the end of an NC block while a move is held: a block after the
+/// held one that did not take the corner is PS0051.
 mbrt_status checkCornerTaken(mbrt_ctx& ctx);
 
 /// The run ends with a move still held: it goes as programmed.

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cutter_comp.h"
 #include "lathe_codes.h"
 #include "lathe_cycles.h"
 #include "lathe_settings.h"
@@ -241,6 +242,13 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
 
 mbrt_status executeRepetitiveCycle(mbrt_ctx& ctx, int code,
                                    const CycleWords& words) {
+  // G74-G76 cut uncompensated, from a start point without the offset
+  // vector of tool nose radius compensation (cutter_comp.h).
+  if (words.motion->axisMask != 0) {
+    if (const mbrt_status status = cancelVectorHere(ctx)) {
+      return status;
+    }
+  }
   return code == kG76 ? threadCycle(ctx, words) : grooveCycle(ctx, code, words);
 }
 

@@ -135,16 +135,11 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
     if (move.motion == ShapeMotion::Rapid || move.motion == ShapeMotion::Line) {
       status = moveLine(ctx, target, move.motion == ShapeMotion::Rapid);
     } else {
-      MotionWords words;
-      words.axisMask = (std::uint32_t{1} << x) | (std::uint32_t{1} << z);
-      words.axis = target;
-      words.centerMask = 1 | 4; // I and K
-      words.center[0] = static_cast<Counts>(
-          roundHalfAway(move.center.x - static_cast<double>(ctx.program[x])));
-      words.center[2] = static_cast<Counts>(
-          roundHalfAway(move.center.z - static_cast<double>(ctx.program[z])));
-      ctx.modal.motion = move.motion == ShapeMotion::Clockwise ? 2 : 3;
-      status = executeMotion(ctx, words);
+      AxisCounts center = ctx.program;
+      center[x] = static_cast<Counts>(roundHalfAway(move.center.x));
+      center[z] = static_cast<Counts>(roundHalfAway(move.center.z));
+      status = moveArcAbout(ctx, target, center,
+                            move.motion == ShapeMotion::Clockwise);
     }
     if (status != 0) {
       break;

@@ -732,6 +732,30 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   return compensateMove(ctx, std::move(move));
 }
 
+mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
+                         const AxisCounts& center, bool clockwise) {
+  const PlaneIndex plane = planeIndex(ctx);
+  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  MotionWords words;
+  words.axisMask =
+      (std::uint32_t{1} << plane.p) | (std::uint32_t{1} << plane.q);
+  words.axis = end;
+  for (int i = 0; i < 2; ++i) {
+    const int axis = i == 0 ? plane.p : plane.q;
+    const int index = axes.centerIndex[i];
+    words.centerMask |= std::uint32_t{1} << index;
+    words.center[static_cast<std::size_t>(index)] =
+        center[axis] - ctx.program[axis];
+  }
+  const ModalState modal = ctx.modal;
+  ctx.modal.motion = clockwise ? 2 : 3;
+  ctx.modal.incremental = false;
+  const mbrt_status status = executeMotion(ctx, words);
+  ctx.modal.motion = modal.motion;
+  ctx.modal.incremental = modal.incremental;
+  return status;
+}
+
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
@@ -739,7 +763,7 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.corner.pending) {
     return moveAfterCorner(ctx, words, target);
   }
-  if (mode == 1 && insertsCorner(ctx, words)) {
+  if (mode == 1 && ctx.profile.lathe() && insertsCorner(ctx, words)) {
     return holdCornerMove(ctx, words, start, target);
   }
   if (mode == 0 || mode == 1 || mode == kThreadingMotion) {

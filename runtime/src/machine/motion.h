@@ -71,6 +71,12 @@ void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle = 0);
 
+/// An arc from the program position to `end` about `center` (program
+/// coordinates, the plane's axes), as a G02 (`clockwise`) or G03 of the
+/// program would run it, through cutter compensation when it is on.
+mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
+                         const AxisCounts& center, bool clockwise);
+
 /// A G00 or G01 move of the program to `target` (program coordinates),
 /// which cutter compensation may hold; `words` give G41/G42 I J K.
 mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,

@@ -725,13 +725,6 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
     return startShapeCycle(ctx, block.nonModal, block.frames);
   }
   if (block.nonModal >= kLatheOwnCode) {
-    // G74-G76 cut uncompensated, from a start point without the offset
-    // vector of tool nose radius compensation (cutter_comp.h).
-    if (motion.axisMask != 0) {
-      if (const mbrt_status status = cancelVectorHere(ctx)) {
-        return status;
-      }
-    }
     return executeRepetitiveCycle(
         ctx, block.nonModal,
         {&motion, block.incrementQ,
@@ -922,8 +915,10 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  if (const mbrt_status status = checkCornerTaken(ctx)) {
-    return status;
+  if (ctx.corner.pending) {
+    if (const mbrt_status status = checkCornerTaken(ctx)) {
+      return status;
+    }
   }
   // Under compensation a move may be held: the block's axis words say
   // whether it moved.
