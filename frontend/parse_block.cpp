@@ -415,25 +415,17 @@ void Parser::expectEndOfBlock(const Stmt& s) {
   if (s.kind != StmtKind::Nc && s.kind != StmtKind::MacroCall) {
     rejectExponent();
   }
-  // ,C ,R and ,A: chamfering and corner R at any angle, and direct drawing
-  // dimensions, which mbc does not execute yet.
-  if (s.kind == StmtKind::Nc && tok_.kind == Tok::Comma) {
+  // A comma takes C, R or A only (parseWords reads those).
+  if (s.kind == StmtKind::Nc && tok_.kind == Tok::Comma &&
+      peek().kind == Tok::Letter) {
     const Token comma = tok_;
     const Token& letter = peek();
-    const std::string_view name = letter.kind != Tok::Letter ? ""
-                                  : letter.text == "C"       ? "chamfering"
-                                  : letter.text == "R"       ? "corner R"
-                                  : letter.text == "A"
-                                      ? "direct drawing dimension angle"
-                                      : "";
-    if (!name.empty()) {
-      diags_.report(DiagKind::CommaAddress,
-                    {comma.range.begin, letter.range.begin.offset +
-                                            letter.range.length -
-                                            comma.range.begin.offset},
-                    letter.text, name);
-      fail();
-    }
+    diags_.report(DiagKind::CommaLetter,
+                  {comma.range.begin, letter.range.begin.offset +
+                                          letter.range.length -
+                                          comma.range.begin.offset},
+                  letter.text);
+    fail();
   }
   bool macroNext =
       tok_.kind == Tok::Hash ||

@@ -39,6 +39,12 @@ void Parser::parseStatement(Block& b) {
       return;
     case Tok::Keyword:
       break;
+    case Tok::Comma: // N10,A150.: a direct drawing line of an angle alone
+      if (atCommaWord()) {
+        parseWords(s);
+        return;
+      }
+      [[fallthrough]];
     default:
       unexpected(DiagKind::UnexpectedToken);
   }
@@ -329,10 +335,33 @@ Word Parser::parseWord() {
   return w;
 }
 
-// nc := word+   (G65 among the words makes it a macro call)
+bool Parser::atCommaWord() {
+  if (tok_.kind != Tok::Comma) {
+    return false;
+  }
+  const Token& letter = peek();
+  return letter.kind == Tok::Letter &&
+         (letter.text == "C" || letter.text == "R" || letter.text == "A");
+}
+
+// comma word := ',' ('C' | 'R' | 'A') value: chamfer, corner R, angle
+Word Parser::parseCommaWord() {
+  const SourceLoc comma = tok_.range.begin;
+  advance();
+  Word w = parseWord();
+  w.letter = commaWordLetter(w.letter);
+  w.range = {comma, w.range.begin.offset + w.range.length - comma.offset};
+  return w;
+}
+
+// nc := (word | comma word)+   (G65 among the words makes it a macro call)
 void Parser::parseWords(Stmt& s) {
   s.kind = StmtKind::Nc;
-  while (tok_.kind == Tok::Letter) {
+  while (tok_.kind == Tok::Letter || atCommaWord()) {
+    if (tok_.kind == Tok::Comma) {
+      s.words.push_back(parseCommaWord());
+      continue;
+    }
     if (tok_.text == "O" || tok_.text == "N") {
       misplacedHeader();
     }
@@ -464,6 +493,9 @@ void Parser::finishMacroCall(Stmt& s) {
     } else if (w.letter == 'G') {
       diags_.report(DiagKind::BadMacroArgument, w.range, "G",
                     "G is an argument only with G66.1, PS0129");
+    } else if (isCommaWord(w.letter)) {
+      diags_.report(DiagKind::CommaMacroArgument, w.range,
+                    addressText(w.letter));
     } else {
       checkDecimalPoint(w, true);
       args.push_back(std::move(w));
@@ -488,9 +520,10 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
   }
   // A U V W B C are axes only on machines that have them; as macro
   // arguments on the default machine they are plain numbers.
-  bool length = macroArgument ? std::string_view("XYZIJKRQ").find(w.letter) !=
-                                    std::string_view::npos
-                              : isLengthAddress(w.letter);
+  bool length = macroArgument
+                    ? std::string_view("XYZIJKRQ").find(w.letter) !=
+                          std::string_view::npos
+                    : isLengthAddress(w.letter) || isCommaWord(w.letter);
   if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length ||
       units.notLengths.find(w.letter) != std::string::npos) {
     return;
@@ -505,8 +538,9 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
     scaled.pop_back();
   }
   bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C' ||
+                w.letter == commaWordLetter('A') ||
                 units.angles.find(w.letter) != std::string::npos;
-  diags_.report(DiagKind::NoDecimalPoint, w.range, std::string(1, w.letter),
+  diags_.report(DiagKind::NoDecimalPoint, w.range, addressText(w.letter),
                 fmt::format("{}", v), scaled, rotary ? "deg" : "mm");
 }
 

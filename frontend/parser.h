@@ -54,6 +54,8 @@ private:
   ExprPtr parseBracketCondition(const Token& keyword);
   void parseWords(Stmt& s);
   Word parseWord();
+  bool atCommaWord();
+  Word parseCommaWord();
   Word parseCalledName(const Stmt& s);
   void finishMacroCall(Stmt& s);
   void reportUnmodelledCodes(const std::vector<Word>& words);

@@ -3,6 +3,7 @@
 // printer.cpp; counts are not checked here (the verifier does that).
 #include "ir/ir_parse_internal.h"
 #include "ir/printer.h"
+#include <mbc/addresses.h>
 
 #include <fmt/format.h>
 
@@ -44,7 +45,7 @@ private:
 char OperandParser::letter() {
   TextPos at = c_.pos();
   std::string_view w = c_.word("an address letter");
-  if (w.size() != 1 || w[0] < 'A' || w[0] > 'Z') {
+  if (w.size() != 1 || ((w[0] < 'A' || w[0] > 'Z') && !isCommaWord(w[0]))) {
     Cursor::failAt(at, fmt::format("'{}' is not an address letter", w));
   }
   return w[0];
@@ -86,7 +87,8 @@ Builtin OperandParser::fn() {
   return b;
 }
 
-// word = LETTER ":" kind value ; kind = "int" | "dec" | "val" | "var" | "nvar"
+// word = LETTER ":" kind value (a, c, r: ,A ,C ,R) ; kind = "int" | "dec" |
+// "val" | "var" | "nvar"
 AddressWord OperandParser::word() {
   char l = letter();
   c_.expect(':');

@@ -3,6 +3,8 @@
 // missing operand, target or string prints as `?` instead of crashing.
 #include "ir/printer.h"
 
+#include <mbc/addresses.h>
+
 #include <fmt/format.h>
 
 #include <array>
@@ -84,14 +86,17 @@ void OperandPrinter::valueList(std::size_t from) {
   }
 }
 
-// `X:int %3` per word; word i is operand from + i.
+// `X:int %3` per word (`c:dec %4` for ,C); word i is operand from + i.
 void OperandPrinter::words(const Words& w, std::size_t from) {
   std::size_t n = std::max(inst_.ops.size(), from + w.words.size());
   for (std::size_t i = from; i < n; ++i) {
     out_ += i == 0 ? " " : ", ";
     AddressWord word =
         i - from < w.words.size() ? w.words[i - from] : AddressWord{'?', {}};
-    out_ += word.letter >= 'A' && word.letter <= 'Z' ? word.letter : '?';
+    out_ +=
+        (word.letter >= 'A' && word.letter <= 'Z') || isCommaWord(word.letter)
+            ? word.letter
+            : '?';
     put(":{} ", wordKindName(word.kind));
     operand(i);
   }

@@ -5,6 +5,7 @@
 
 #include "ir/cfg.h"
 #include "ir/printer.h"
+#include <mbc/addresses.h>
 #include <mbc/arith.h>
 #include <mbc/limits.h>
 
@@ -119,7 +120,8 @@ Shape expectedShape(const Module& m, const Inst& inst) {
 }
 
 bool isLetter(std::int64_t c) {
-  return c >= 'A' && c <= 'Z';
+  return (c >= 'A' && c <= 'Z') ||
+         (c >= 'a' && c <= 'z' && isCommaWord(static_cast<char>(c)));
 }
 
 class FunctionVerifier {
@@ -361,7 +363,7 @@ void FunctionVerifier::checkPayload(BlockId b, ValueId id, const Inst& inst) {
           },
           [&](const AddressLetter& l) {
             if (!isLetter(l.letter)) {
-              bad(fmt::format("address {} is not a letter A..Z",
+              bad(fmt::format("address {} is not a letter A..Z, a, c or r",
                               static_cast<int>(l.letter)));
             }
           },

@@ -285,9 +285,40 @@ class Generator:
                     f"T01{self.rng.randint(0, 3):02d}"]
         if roll < 0.9:
             return self.nose_radius_contour()
-        if roll < 0.95:
+        if roll < 0.93:
             return self.corner_steps()
+        if roll < 0.95:
+            return ["G00 X30. Z2.", f"G01 F{self.length(0.05, 0.3)}"] + \
+                self.comma_corners("Z", "X", (10, 80))
         return [self.pick(("G28 U0 W0", f"G28 {self.word('U')}"))]
+
+    def line_or_arc(self, to, radii):
+        """A G01 to `to`, or (less often) a G02/G03 with R from `radii`."""
+        if self.chance(0.55 / 0.8):
+            return f"G01 {to}"
+        return f"{self.pick(('G02', 'G03'))} {to} R{self.length(*radii)}"
+
+    def comma_corners(self, first, second, across=(-40, 40)):
+        """Lines and arcs in the plane of `first` and `second` (absolute)
+        with ,C and ,R at any angle and ,A lines, the amounts sometimes
+        too large for the moves: a computed amount now and then."""
+        lines = []
+        for _ in range(self.rng.randint(2, 4)):
+            amount = (self.length(0.2, 4) if self.chance(0.8)
+                      else f"[{self.expression(1, 1)}]")
+            comma = self.pick(("", f" ,C{amount}", f" ,R{amount}"))
+            to = (f"{first}{self.length(-40, 40)} "
+                  f"{second}{self.length(*across)}")
+            if self.chance(0.8):
+                lines.append(self.line_or_arc(to, (25, 60)) + comma)
+            elif self.chance(0.5):
+                lines.append(f"G01 {self.pick((first, second))}"
+                             f"{self.length(-40, 40)} "
+                             f",A{self.length(0, 360)}{comma}")
+            else:
+                lines.append(f"G01 ,A{self.length(0, 360)}{comma}")
+                lines.append(f"G01 {to} ,A{self.length(0, 360)}")
+        return lines + [f"G01 {first}{self.length(-40, 40)}"]
 
     def corner_steps(self):
         """Steps along Z and X with chamfers (I, K) and corner R between
@@ -439,6 +470,8 @@ class Generator:
             return self.polar()
         if roll < 0.73:
             return self.compensated_contour()
+        if roll < 0.76:
+            return ["G17 G01 F300."] + self.comma_corners("X", "Y")
         if roll < 0.79:
             return [self.pick((f"G51.1 {self.word('X')}",
                                f"G51.1 Y{self.length(-5, 5)}", "G50.1 X0",
@@ -485,11 +518,9 @@ class Generator:
                  f"F{self.rng.randint(100, 900)}"]
         for _ in range(self.rng.randint(1, 5)):
             roll = self.rng.random()
-            if roll < 0.55:
-                lines.append(f"G01 {self.word('X')} {self.word('Y')}")
-            elif roll < 0.8:
-                lines.append(f"{self.pick(('G02', 'G03'))} {self.word('X')} "
-                             f"{self.word('Y')} R{self.length(8, 40)}")
+            if roll < 0.8:
+                lines.append(self.line_or_arc(
+                    f"{self.word('X')} {self.word('Y')}", (8, 40)))
             elif roll < 0.9:
                 lines.append(f"Z{self.length(-5, 0)}")
             else:

@@ -111,7 +111,7 @@ b1:
   %18 = round.addr X, %17
   %19 = const 1
   %20 = const -2.5
-  %21 = nc G:int %19, X:dec %20, Y:var %2, Z:nvar %3, F:val %18
+  %21 = nc G:int %19, X:dec %20, Y:var %2, Z:nvar %3, F:val %18, r:dec %20
   resume %21, b2 [10: b2, 20: b3]
 b2:
   begin 4
@@ -311,6 +311,9 @@ TEST(IrText, ErrorsGiveLineAndColumn) {
             "3:14: expected a number");
   EXPECT_EQ(parseError("func @O1 \"\" {\nb0:\n  %1 = nc X:flt %2\n}\n"),
             "3:13: unknown word kind 'flt'");
+  // ,C ,R ,A are the lower-case c, r, a; no other lower-case letter is.
+  EXPECT_EQ(parseError("func @O1 \"\" {\nb0:\n  %1 = nc b:dec %2\n}\n"),
+            "3:11: 'b' is not an address letter");
   EXPECT_EQ(parseError("func @O1 \"\" {\nb0:\n  switch %1 [10 b2]\n}\n"),
             "3:17: expected ':'");
 }

@@ -73,6 +73,23 @@ TEST(Parser, SpacesAndKeywordsWithoutSpaces) {
   EXPECT_EQ(firstStmt(*p).gotoBlock, 1);
 }
 
+// ,C ,R ,A: a comma word is its lower-case letter, its range from the
+// comma; it may stand alone after N (a direct drawing line's angle).
+TEST(Parser, CommaWords) {
+  auto p = parse("G01X40.,C2.F300.\nN10,A150.,R#1\n");
+  ASSERT_EQ(p->diags.errorCount(), 0) << p->text;
+  const auto& b = p->unit.programs[0].blocks;
+  ASSERT_EQ(b[0].stmt.words.size(), 4u);
+  EXPECT_EQ(b[0].stmt.words[2].letter, 'c');
+  EXPECT_EQ(b[0].stmt.words[2].range.begin.offset, 7u);
+  EXPECT_EQ(b[0].stmt.words[2].range.length, 4u);
+  EXPECT_EQ(b[0].stmt.words[3].letter, 'F');
+  ASSERT_EQ(b[1].stmt.words.size(), 3u); // N10 first
+  EXPECT_EQ(b[1].stmt.words[1].letter, 'a');
+  EXPECT_EQ(b[1].stmt.words[2].letter, 'r');
+  EXPECT_TRUE(b[1].stmt.words[2].bareVariable);
+}
+
 TEST(Parser, AtanForms) {
   auto p = parse("#1=ATAN[1]/[2]\n#2=ATAN[1,2]\n#3=ATAN[1]/2\n");
   ASSERT_EQ(p->diags.errorCount(), 0) << p->text;

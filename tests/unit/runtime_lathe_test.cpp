@@ -296,18 +296,6 @@ TEST(RuntimeLatheOffsets, G10WritesOffsets) {
   EXPECT_NEAR(combined.motions()[0].machine[0], -100.0, 1e-9);
 }
 
-/// The end points of the motions from `first` on, as (X, Z) pairs.
-std::vector<std::pair<double, double>> ends(const Machine& m,
-                                            std::size_t first = 0) {
-  std::vector<std::pair<double, double>> out;
-  for (std::size_t i = first; i < m.motions().size(); ++i) {
-    out.emplace_back(m.motions()[i].end[0], m.motions()[i].end[1]);
-  }
-  return out;
-}
-
-using Points = std::vector<std::pair<double, double>>;
-
 // G90 from A (X52 Z2): rapid to the cut's X, feed to the end, feed out in
 // X, rapid back; X alone repeats with the same Z; R tapers (the cut starts
 // at X + 2R).
@@ -449,15 +437,6 @@ TEST(RuntimeLatheCycles, MultipleThreading) {
 
 /// Points equal but for the last bits of arithmetic (or, with
 /// `tolerance`, within the counts of a computed path).
-void expectPath(const Points& path, const Points& expected,
-                double tolerance = 1e-9) {
-  ASSERT_EQ(path.size(), expected.size());
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    EXPECT_NEAR(path[i].first, expected[i].first, tolerance) << i;
-    EXPECT_NEAR(path[i].second, expected[i].second, tolerance) << i;
-  }
-}
-
 /// Runs blocks, each of which must pass; the end points of every motion.
 Points blocks(Machine& m, std::initializer_list<const char*> texts) {
   for (const char* text : texts) {

@@ -2,6 +2,7 @@
 // tiny word parser, so that tests read like NC blocks ("G01 X10. F200").
 #pragma once
 
+#include <mbc/addresses.h>
 #include <mbc/alarm.h>
 #include <mbc/compiled.h>
 #include <mbc/engine.h>
@@ -37,6 +38,10 @@ inline std::vector<mbrt_word> parseWords(std::string_view text) {
     mbrt_word w{};
     w.letter = word[0];
     word.remove_prefix(1);
+    if (w.letter == ',') { // ,C ,R ,A
+      w.letter = mbc::commaWordLetter(word[0]);
+      word.remove_prefix(1);
+    }
     if (!word.empty() && word[0] == '=') {
       w.kind = MBRT_WORD_VALUE;
       word.remove_prefix(1);
@@ -147,5 +152,26 @@ private:
   std::string printed_;
   std::string messages_;
 };
+
+/// Points of the first two axes: (X, Y) on a mill, (X, Z) on a lathe.
+using Points = std::vector<std::pair<double, double>>;
+
+/// The end points of the motions from `first` on.
+inline Points ends(const Machine& m, std::size_t first = 0) {
+  Points out;
+  for (std::size_t i = first; i < m.motions().size(); ++i) {
+    out.emplace_back(m.motions()[i].end[0], m.motions()[i].end[1]);
+  }
+  return out;
+}
+
+inline void expectPath(const Points& path, const Points& expected,
+                       double tolerance = 1e-9) {
+  ASSERT_EQ(path.size(), expected.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    EXPECT_NEAR(path[i].first, expected[i].first, tolerance) << i;
+    EXPECT_NEAR(path[i].second, expected[i].second, tolerance) << i;
+  }
+}
 
 } // namespace mbc::test

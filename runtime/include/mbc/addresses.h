@@ -16,6 +16,28 @@ inline bool isWholeNumberAddress(char letter) {
   return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
+/// ,C ,R and ,A (chamfer, corner R, angle of a line) travel from the parser
+/// to the runtime as the lower-case letter: every table of the addresses
+/// A..Z passes them by, and no upper-case letter is mistaken for them.
+constexpr char commaWordLetter(char address) {
+  return static_cast<char>(address - 'A' + 'a');
+}
+
+constexpr bool isCommaWord(char letter) {
+  return letter == 'a' || letter == 'c' || letter == 'r';
+}
+
+/// The letter after the comma of a comma word: 'C' for ,C.
+constexpr char commaWordAddress(char letter) {
+  return static_cast<char>(letter - 'a' + 'A');
+}
+
+/// "X", or ",C" for a comma word: an address as the program writes it.
+inline std::string addressText(char letter) {
+  return isCommaWord(letter) ? std::string{',', commaWordAddress(letter)}
+                             : std::string(1, letter);
+}
+
 /// Specification I (spec §5.2): the local variable a G65 argument letter
 /// sets, 0 for the letters that cannot be arguments (G, L, N, O, P).
 constexpr int argumentLocal(char letter) {

@@ -276,6 +276,18 @@ struct CornerInsertion {
   double feed = 0.0;
   const char* file = nullptr; // the held block's
   int line = 0;
+  // ,C or ,R (corner_blends.h): 'C' or 'R', at any angle, after a line or
+  // an arc about `center` (the plane's axes, counts); 0 for the 90 degree
+  // forms above.
+  char blend = 0;
+  bool rapid = false; // a G00 ,A line
+  bool arc = false;
+  bool clockwise = false;
+  std::array<double, 2> center{};
+  // ,A without an end point: the line's angle; the next block's end point
+  // and ,A give the corner.
+  bool openEnd = false;
+  double angle = 0.0;
 };
 
 /// The state a lathe's shape cycle puts back after running blocks or moves

@@ -71,8 +71,9 @@ mbrt_status argumentLocal(mbrt_ctx& ctx, char letter, bool everyBlock,
   }
   *local = mbc::argumentLocal(letter);
   if (*local == 0) {
-    return raise(ctx, AlarmId::MacroStatementFormat,
-                 fmt::format("{} cannot be a macro argument", letter));
+    return raise(
+        ctx, AlarmId::MacroStatementFormat,
+        fmt::format("{} cannot be a macro argument", addressText(letter)));
   }
   return 0;
 }

@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 
+#include "corner_blends.h"
+
 namespace mbc::rt {
 
 namespace {
@@ -39,24 +41,14 @@ std::string letterOf(const mbrt_ctx& ctx, int axis) {
   return std::string(1, ctx.profile.axes[static_cast<std::size_t>(axis)]);
 }
 
-/// Runs `moves` as the held block: its F, file and line.
-template <class Moves>
-mbrt_status asHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held,
-                        Moves moves) {
-  const double feed = ctx.modal.feed;
-  const char* file = ctx.block.file;
-  const int line = ctx.block.line;
-  ctx.modal.feed = held.feed;
-  ctx.block.file = held.file;
-  ctx.block.line = held.line;
-  const mbrt_status status = moves();
-  ctx.modal.feed = feed;
-  ctx.block.file = file;
-  ctx.block.line = line;
-  return status;
-}
-
 } // namespace
+
+mbrt_status missingPlaneAxis(mbrt_ctx& ctx) {
+  return raise(ctx, AlarmId::IllegalPlaneSelect,
+               fmt::format("chamfering, corner R and ,A in G{} need both "
+                           "axes of the plane",
+                           ctx.modal.plane));
+}
 
 bool chamferByC(const mbrt_ctx& ctx) {
   return ctx.profile.lathe() && ctx.profile.parameterBit(3405, 4) &&
@@ -79,10 +71,7 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
                            const AxisCounts& start, const AxisCounts& target) {
   const PlaneIndex plane = planeIndex(ctx);
   if (plane.p < 0 || plane.q < 0) {
-    return raise(ctx, AlarmId::IllegalPlaneSelect,
-                 fmt::format("chamfering and corner R in G{} needs both axes "
-                             "of the plane",
-                             ctx.modal.plane));
+    return missingPlaneAxis(ctx);
   }
   const bool alongP = target[plane.p] != start[plane.p];
   const int along = alongP ? plane.p : plane.q;
@@ -136,6 +125,9 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
                             const AxisCounts& target) {
+  if (ctx.corner.blend != 0 || ctx.corner.openEnd) {
+    return moveAfterBlend(ctx, words, target);
+  }
   CornerInsertion held = ctx.corner;
   ctx.corner.pending = false;
   const std::string toward = letterOf(ctx, held.toward);
@@ -191,6 +183,9 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
     return status;
   }
   // The next move may end with a corner of its own.
+  if (words.blend != 0) {
+    return holdBlendMove(ctx, words, c, target);
+  }
   return insertsCorner(ctx, words) ? holdCornerMove(ctx, words, c, target)
                                    : moveLine(ctx, target, false);
 }
@@ -202,10 +197,19 @@ mbrt_status checkCornerTaken(mbrt_ctx& ctx) {
     return 0;
   }
   held.pending = false;
+  if (held.openEnd) {
+    return raise(ctx, AlarmId::NoEndPointAndAngle,
+                 fmt::format("the ,A line of line {} has no end point: the "
+                             "next block gives it",
+                             held.line));
+  }
   return raise(ctx, AlarmId::MissingMoveAfterCorner,
                fmt::format("the block after a chamfer or corner R (line {}) "
-                           "must be a G01 along {}",
-                           held.line, letterOf(ctx, held.toward)));
+                           "must be a {}",
+                           held.line,
+                           held.blend != 0
+                               ? "G01, G02 or G03 move in the plane"
+                               : "G01 along " + letterOf(ctx, held.toward)));
 }
 
 void releaseCornerMove(mbrt_ctx& ctx) {
@@ -214,6 +218,10 @@ void releaseCornerMove(mbrt_ctx& ctx) {
     return;
   }
   ctx.corner.pending = false;
+  if (held.blend != 0 || held.openEnd) {
+    runHeldAsProgrammed(ctx, held);
+    return;
+  }
   ctx.program = held.from;
   asHeldBlock(ctx, held, [&] { return moveLine(ctx, held.corner, false); });
 }

@@ -12,6 +12,7 @@
 #include <array>
 #include <numbers>
 
+#include "corner_blends.h"
 #include "cutter_comp.h"
 #include "frames.h"
 #include "lathe_codes.h"
@@ -317,6 +318,31 @@ Point planePoint(const AxisValues& point, int p, int q) {
   return {point[p], point[q]};
 }
 
+} // namespace
+
+std::optional<PlanePoint> arcCenter(const mbrt_ctx& ctx,
+                                    const MotionWords& words,
+                                    const AxisCounts& start,
+                                    const AxisCounts& target, bool clockwise) {
+  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const auto [p, q] = planeIndex(ctx);
+  const Point from{static_cast<double>(start[p]),
+                   static_cast<double>(start[q])};
+  if (words.hasR) {
+    return centerFromRadius(
+        from, {static_cast<double>(target[p]), static_cast<double>(target[q])},
+        static_cast<double>(words.r), clockwise);
+  }
+  if (words.centerMask != 0) {
+    return Point{
+        from.x + static_cast<double>(words.center[plane.centerIndex[0]]),
+        from.y + static_cast<double>(words.center[plane.centerIndex[1]])};
+  }
+  return std::nullopt;
+}
+
+namespace {
+
 mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                     const AxisCounts& start, const AxisCounts& target) {
   const PlaneAxes plane = planeAxes(ctx.modal.plane);
@@ -331,22 +357,19 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                    static_cast<double>(start[q])};
   const Point to{static_cast<double>(target[p]),
                  static_cast<double>(target[q])};
-  Point center{};
-  if (words.hasR) {
-    if (from.x == to.x && from.y == to.y) {
-      return 0; // FANUC: R with start == end makes no motion at all
-    }
-    center =
-        centerFromRadius(from, to, static_cast<double>(words.r), clockwise);
-  } else if (words.centerMask != 0) {
-    center = {from.x + static_cast<double>(words.center[plane.centerIndex[0]]),
-              from.y + static_cast<double>(words.center[plane.centerIndex[1]])};
-  } else if (ctx.profile.parameterBit(3403, 5)) {
+  if (words.hasR && from.x == to.x && from.y == to.y) {
+    return 0; // FANUC: R with start == end makes no motion at all
+  }
+  const std::optional<Point> found =
+      arcCenter(ctx, words, start, target, clockwise);
+  if (!found && ctx.profile.parameterBit(3403, 5)) {
     return raise(ctx, AlarmId::ArcNoRadius, "arc without R or I, J, K");
-  } else {
+  }
+  if (!found) {
     // Parameter 3403#5 CIR = 0 (FANUC's default): a straight feed move.
     return moveLine(ctx, target, false);
   }
+  const Point center = *found;
   const double startRadius = std::hypot(from.x - center.x, from.y - center.y);
   if (!words.hasR) {
     if (const mbrt_status status = checkRadii(ctx, startRadius, to, center)) {
@@ -759,9 +782,17 @@ mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
-  const AxisCounts target = workTarget(ctx, words, start);
+  AxisCounts target = workTarget(ctx, words, start);
+  if (words.angle && !(ctx.corner.pending && ctx.corner.openEnd)) {
+    if (const mbrt_status status = endAngledLine(ctx, words, start, target)) {
+      return status;
+    }
+  }
   if (ctx.corner.pending) {
     return moveAfterCorner(ctx, words, target);
+  }
+  if (holdsForNextBlock(ctx, words)) {
+    return holdBlendMove(ctx, words, start, target);
   }
   if (mode == 1 && ctx.profile.lathe() && insertsCorner(ctx, words)) {
     return holdCornerMove(ctx, words, start, target);

@@ -2,6 +2,8 @@
 // machine and workpiece coordinates, the simulated clock and the motion sink.
 #pragma once
 
+#include <optional>
+
 #include "context.h"
 #include "plane_geometry.h"
 
@@ -21,6 +23,11 @@ struct MotionWords {
   // A lathe's chamfer amount C, when 3405#4 CCR gives C for I and K.
   bool hasC = false;
   Counts c = 0;
+  // ,C or ,R (corner_blends.h): 'C' or 'R' and its amount; 0 for none.
+  char blend = 0;
+  Counts blendAmount = 0;
+  // ,A: the angle of the line from the plane's first axis, in degrees.
+  std::optional<double> angle;
 };
 
 inline constexpr int kLastSIndex = 18; // #4119: the last S
@@ -76,6 +83,14 @@ mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
 /// program would run it, through cutter compensation when it is on.
 mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
                          const AxisCounts& center, bool clockwise);
+
+/// The centre (the plane's axes, program counts) of the arc that a G02
+/// (`clockwise`) or G03 block's R or I, J, K give from `start` to
+/// `target`; none without them. The plane must have both axes.
+std::optional<PlanePoint> arcCenter(const mbrt_ctx& ctx,
+                                    const MotionWords& words,
+                                    const AxisCounts& start,
+                                    const AxisCounts& target, bool clockwise);
 
 /// A G00 or G01 move of the program to `target` (program coordinates),
 /// which cutter compensation may hold; `words` give G41/G42 I J K.

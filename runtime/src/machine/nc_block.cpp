@@ -9,6 +9,7 @@
 
 #include "block_calls.h"
 #include "canned_cycles.h"
+#include "corner_blends.h"
 #include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frame_codes.h"
@@ -105,6 +106,12 @@ bool isArcCenterLetter(char letter) {
 double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
   if (letter == 'G') {
     return 10.0;
+  }
+  if (letter == commaWordLetter('A')) {
+    return kCountsPerDegree; // 0.001 degree in inches too
+  }
+  if (isCommaWord(letter)) {
+    return ctx.inputScale();
   }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
     return ctx.axisScale(axis) / ctx.axisCountsPerIncrement(axis);
@@ -462,8 +469,32 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
 }
 
 /// Every word but G, P and L, in program order.
+/// ,C ,R (a chamfer or corner R, not both) and ,A.
+mbrt_status readCommaWord(mbrt_ctx& ctx, const mbrt_word& word,
+                          MotionWords& motion) {
+  if (word.letter == commaWordLetter('A')) {
+    const double perUnit = addressCountsPerUnit(ctx, word.letter);
+    const double value = numeric(word.value);
+    motion.angle =
+        word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
+            ? value / perUnit
+            : roundToCounts(value, perUnit) / perUnit;
+    return 0;
+  }
+  const char blend = word.letter == commaWordLetter('C') ? 'C' : 'R';
+  if (motion.blend != 0 && motion.blend != blend) {
+    return raise(ctx, AlarmId::TooManyAddressCommands,
+                 ",C and ,R in one block: a chamfer or a corner R");
+  }
+  motion.blend = blend;
+  return toLengthCounts(ctx, word, &motion.blendAmount);
+}
+
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
+  if (isCommaWord(letter)) {
+    return readCommaWord(ctx, word, block.motion);
+  }
   if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
     // X1.5 is 1.5 s; X1500 counts milliseconds, like P, unless literals
     // are whole units (3401#0 DPI).
@@ -647,7 +678,8 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
   // An arc block may leave out the end point: a full circle (I J K) or, with
   // R, no motion at all.
   if (motion.axisMask != 0 ||
-      (arcMode && (motion.centerMask != 0 || motion.hasR))) {
+      (arcMode && (motion.centerMask != 0 || motion.hasR)) ||
+      hasCommaWords(motion)) {
     return executeMotion(ctx, motion);
   }
   return 0;
@@ -719,6 +751,11 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
                  fmt::format("the block after a chamfer or corner R (line "
                              "{}) must be G01",
                              ctx.corner.line));
+  }
+  if (hasCommaWords(motion) && (block.nonModal != 0 || ctx.modal.cycle != 0)) {
+    return raise(ctx, AlarmId::TooManyAddressCommands,
+                 "a chamfer, corner R or ,A belongs to a G00-G03 move, not to "
+                 "a cycle, a dwell or a reference return");
   }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {

@@ -40,9 +40,19 @@ void appendFixedText(std::string& out, double value) {
 
 /// K is the repeat count of a canned cycle.
 bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
-  return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
-         (letter == 'K' && ctx.modal.cycle == 0) || letter == 'R' ||
-         letter == 'Q';
+  return ctx.movedAxisOf(letter) >= 0 || isCommaWord(letter) || letter == 'I' ||
+         letter == 'J' || (letter == 'K' && ctx.modal.cycle == 0) ||
+         letter == 'R' || letter == 'Q';
+}
+
+/// "X", or ",C" for a comma word.
+void appendAddress(std::string& out, char letter) {
+  if (isCommaWord(letter)) {
+    out += ',';
+    out += commaWordAddress(letter);
+    return;
+  }
+  out += letter;
 }
 
 /// "12.5", "12.": a coordinate that reads as one under any 3401#0 DPI.
@@ -68,7 +78,7 @@ void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
           : roundToCounts(value, scale);
-  out += word.letter;
+  appendAddress(out, word.letter);
   appendUnitsText(out, counts / scale, axisDecimals(ctx, axis));
 }
 

@@ -46,9 +46,9 @@ void appendWords(const mbrt_ctx& ctx, std::string& out, const mbrt_word* words,
     const std::string* name = call && words[i].letter == 'P'
                                   ? calledName(ctx, words[i].value)
                                   : nullptr;
-    out += name != nullptr
-               ? *name
-               : fmt::format("{}{}", words[i].letter, words[i].value);
+    out += name != nullptr ? *name
+                           : fmt::format("{}{}", addressText(words[i].letter),
+                                         words[i].value);
   }
 }
 
