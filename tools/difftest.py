@@ -250,6 +250,8 @@ class Generator:
                      f"{cycle} X{x} Z{z}{taper} F{self.length(0.1, 2)}"]
             lines += [self.word("X") for _ in range(self.rng.randint(0, 2))]
             return self.maybe_compensated(lines + ["G00 X80."])
+        if roll < 0.2:
+            return self.lathe_drilling(x, z)
         if roll < 0.25:
             cycle = self.pick(("G74", "G75"))
             return [f"G00 X{x} Z2. S{self.rng.randint(200, 2000)}",
@@ -319,6 +321,24 @@ class Generator:
                 lines.append(f"G01 ,A{self.length(0, 360)}{comma}")
                 lines.append(f"G01 {to} ,A{self.length(0, 360)}")
         return lines + [f"G01 {first}{self.length(-40, 40)}"]
+
+    def lathe_drilling(self, x, z):
+        """A face cycle along Z on the centre or a side cycle along X, a
+        peck Q now and then, another hole after it, then G80."""
+        face = self.chance(0.6)
+        cycle = self.pick(("G83", "G84", "G85") if face else
+                          ("G87", "G88", "G89"))
+        peck = (f" Q{self.rng.randint(500, 8000)}"
+                if cycle in ("G83", "G87") and self.chance(0.6) else "")
+        dwell = f" P{self.rng.randint(0, 900)}" if self.chance(0.3) else ""
+        bottom = f"Z{z}" if face else f"X{self.length(5, 19)}"
+        return [f"G00 X{'0' if face else '40.'} Z{'5.' if face else z}",
+                f"{cycle} {bottom} R-{self.length(0.5, 3)}{peck}{dwell} "
+                f"F{self.length(0.05, 0.3)}",
+                self.pick((f"W{self.length(-5, -1)}" if face else
+                           f"U{self.length(-8, -1)}",
+                           f"{'U' if face else 'W'}{self.length(-3, 3)}")),
+                "G80"]
 
     def corner_steps(self):
         """Steps along Z and X with chamfers (I, K) and corner R between

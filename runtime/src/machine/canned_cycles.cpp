@@ -3,6 +3,17 @@
 // Every hole: position in the plane at the current level (rapid), rapid to
 // R, the cycle's own moves, then back to the initial level (G98) or R (G99).
 // The drilling axis is Z (parameter 5101#0 FXY = 0, FANUC's default).
+//
+// The T series' drilling cycles (the 0i-TF manual's "Canned cycle for
+// drilling"): G83 face drilling, G84 face tapping and G85 face boring
+// drill along Z at a position of X and C; G87, G88 and G89 are the side
+// ones, along X at a position of Z and C. R is the distance from the
+// initial level to R (a radius, signed) whatever G90/G91 say. G83/G87 with
+// Q peck: back by parameter 5114 (5101#2 RTR = 0, high-speed peck) or out
+// to R and in again to 5114 short (RTR = 1); without Q they drill in one
+// feed. Tapping feeds out with the spindle reversed, boring feeds out. In
+// G code system A (no G98/G99 of the return) the tool returns to the
+// initial level.
 #include "canned_cycles.h"
 
 #include <mbc/arith.h>
@@ -131,8 +142,26 @@ mbrt_status Hole::backBore() {
   return st;
 }
 
+/// A lathe's drilling cycle as the M series' cycle that moves the same
+/// way: G83/G87 without Q drill as G82 (feed, dwell, rapid out), tapping
+/// as G84, boring as G89. 0 for G83/G87 with Q, which peck.
+int millEquivalent(const mbrt_ctx& ctx, int cycle) {
+  switch (cycle) {
+    case 83:
+    case 87:
+      return ctx.modal.cycleData.q > 0 ? 0 : 82;
+    case 84:
+    case 88:
+      return 84;
+    default: // 85 89
+      return 89;
+  }
+}
+
 mbrt_status Hole::drill() {
-  const int cycle = ctx_.modal.cycle;
+  const bool lathe = ctx_.profile.lathe();
+  const int cycle =
+      lathe ? millEquivalent(ctx_, ctx_.modal.cycle) : ctx_.modal.cycle;
   if (cycle == 87) {
     return backBore();
   }
@@ -141,6 +170,12 @@ mbrt_status Hole::drill() {
   }
   mbrt_status st = 0;
   switch (cycle) {
+    case 0: // a lathe's G83/G87 with Q
+      if ((st = peck(ctx_.profile.parameterBit(5101, 2),
+                     parameterCounts(ctx_, 5114), true)) == 0) {
+        dwellAtBottom();
+      }
+      break;
     case 73:
     case 83:
       st = peck(cycle == 83, parameterCounts(ctx_, cycle == 83 ? 5115 : 5114),
@@ -181,20 +216,27 @@ mbrt_status Hole::drill() {
   return st != 0 ? st : rapid(returnLevel());
 }
 
-/// R, Z, Q, P into the drilling data. In G91, R is measured from the
-/// initial level and Z from R.
+/// Whether the block's word for `axis` is incremental: G91, or a lathe's
+/// U, W or H.
+bool incrementalWord(const mbrt_ctx& ctx, const MotionWords& words, int axis) {
+  return ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
+}
+
+/// R, Z, Q, P into the drilling data. In G91 (and always on a lathe) R is
+/// measured from the initial level; an incremental Z from R.
 void takeDrillingData(mbrt_ctx& ctx, const CycleWords& words, int axis) {
   CycleData& data = ctx.modal.cycleData;
-  const bool incremental = ctx.modal.incremental;
   if (words.motion->hasR) {
     data.hasR = true;
-    data.r = incremental ? data.initial + words.motion->r : words.motion->r;
+    data.r = ctx.modal.incremental || ctx.profile.lathe()
+                 ? data.initial + words.motion->r
+                 : words.motion->r;
   }
   if ((words.motion->axisMask >> axis & 1) != 0) {
     const Counts z = words.motion->axis[axis];
     const Counts r = data.hasR ? data.r : data.initial;
     data.hasZ = true;
-    data.z = incremental ? r + z : z;
+    data.z = incrementalWord(ctx, *words.motion, axis) ? r + z : z;
   }
   if (words.q) {
     data.q = std::llabs(*words.q);
@@ -202,6 +244,11 @@ void takeDrillingData(mbrt_ctx& ctx, const CycleWords& words, int axis) {
   if (words.p) {
     data.p = *words.p;
   }
+}
+
+/// The axis a cycle drills along: Z, or X for a lathe's side cycles.
+char drillingAxis(const mbrt_ctx& ctx, int cycle) {
+  return ctx.profile.lathe() && cycle >= 87 ? 'X' : 'Z';
 }
 
 } // namespace
@@ -214,9 +261,12 @@ void changeCycle(mbrt_ctx& ctx, int cycle) {
     ctx.modal.rigidTapping = false; // G80 ends rigid tapping
     ctx.modal.seriesFifteenTap = 0;
   }
-  if (cycle == 0 || ctx.modal.cycle == 0) {
+  // From a face cycle to a side one the drilling axis changes: its data
+  // and initial level start again.
+  if (cycle == 0 || ctx.modal.cycle == 0 ||
+      drillingAxis(ctx, cycle) != drillingAxis(ctx, ctx.modal.cycle)) {
     ctx.modal.cycleData = CycleData{};
-    const int axis = ctx.axisOf('Z');
+    const int axis = ctx.axisOf(drillingAxis(ctx, cycle));
     if (cycle != 0 && axis >= 0) {
       ctx.modal.cycleData.initial = programPosition(ctx)[axis];
     }
@@ -225,12 +275,13 @@ void changeCycle(mbrt_ctx& ctx, int cycle) {
 }
 
 mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
-  const int axis = ctx.axisOf('Z');
   const int cycle = ctx.modal.cycle;
+  const char letter = drillingAxis(ctx, cycle);
+  const int axis = ctx.axisOf(letter);
   if (axis < 0) {
-    return raise(
-        ctx, AlarmId::ImproperNcAddress,
-        fmt::format("G{} drills along Z, which this machine lacks", cycle));
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 fmt::format("G{} drills along {}, which this machine lacks",
+                             cycle, letter));
   }
   takeDrillingData(ctx, words, axis);
   const std::uint32_t plane = words.motion->axisMask & ~(1u << axis);
@@ -239,10 +290,11 @@ mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
   }
   const CycleData& data = ctx.modal.cycleData;
   if (!data.hasZ) {
-    return raise(ctx, AlarmId::ImproperNcAddress,
-                 fmt::format("G{} without Z (the hole bottom)", cycle));
+    return raise(
+        ctx, AlarmId::ImproperNcAddress,
+        fmt::format("G{} without {} (the hole bottom)", cycle, letter));
   }
-  if ((cycle == 73 || cycle == 83) && data.q <= 0) {
+  if ((cycle == 73 || cycle == 83) && data.q <= 0 && !ctx.profile.lathe()) {
     return raise(ctx, AlarmId::PeckWithoutQ,
                  fmt::format("G{} needs the depth of each peck, Q > 0", cycle));
   }
@@ -256,8 +308,9 @@ mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
     AxisCounts target = programPosition(ctx);
     for (int a = 0; a < ctx.axisCount(); ++a) {
       if ((plane >> a & 1) != 0) {
-        target[a] = ctx.modal.incremental ? target[a] + words.motion->axis[a]
-                                          : words.motion->axis[a];
+        target[a] = incrementalWord(ctx, *words.motion, a)
+                        ? target[a] + words.motion->axis[a]
+                        : words.motion->axis[a];
       }
     }
     if (target != programPosition(ctx)) {

@@ -110,12 +110,12 @@ constexpr std::array kLatheGCodes = {
                "outer diameter/internal diameter drilling cycle"},
     LatheGCode{760, 760, 780, own(760), true, "multiple-thread cutting cycle"},
     LatheGCode{800, 800, 800, 800, true, "canned cycle for drilling cancel"},
-    LatheGCode{830, 830, 830, own(830), false, "cycle for face drilling"},
-    LatheGCode{840, 840, 840, own(840), false, "cycle for face tapping"},
-    LatheGCode{850, 850, 850, own(850), false, "cycle for face boring"},
-    LatheGCode{870, 870, 870, own(870), false, "cycle for side drilling"},
-    LatheGCode{880, 880, 880, own(880), false, "cycle for side tapping"},
-    LatheGCode{890, 890, 890, own(890), false, "cycle for side boring"},
+    LatheGCode{830, 830, 830, own(830), true, "cycle for face drilling"},
+    LatheGCode{840, 840, 840, own(840), true, "cycle for face tapping"},
+    LatheGCode{850, 850, 850, own(850), true, "cycle for face boring"},
+    LatheGCode{870, 870, 870, own(870), true, "cycle for side drilling"},
+    LatheGCode{880, 880, 880, own(880), true, "cycle for side tapping"},
+    LatheGCode{890, 890, 890, own(890), true, "cycle for side boring"},
     LatheGCode{900, 770, 200, kLatheTurningCycle, true,
                "outer diameter/internal diameter cutting cycle"},
     LatheGCode{920, 780, 210, kLatheThreadCycle, true, "threading cycle"},
@@ -191,8 +191,10 @@ double latheModalGroupValue(const mbrt_ctx& ctx, int group) {
       return writtenLatheCode(ctx, modal.inch ? 200 : 210);
     case 7:
       return modal.compensation;
-    case 10:
-      return 80;
+    case 10: // G80, or a drilling cycle by its lathe number
+      return modal.cycle == 0
+                 ? 80
+                 : writtenLatheCode(ctx, kLatheOwnCode + modal.cycle * 10);
     case 11:
       return systemA ? 0 : modal.returnToR ? 99 : 98;
     case 12:

@@ -218,6 +218,7 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     switch (tenths) {
       case kLatheThreading:
         next.motion = kThreadingMotion;
+        next.cycle = 0; // group 01, as G00-G03
         return 0;
       case kLatheTurningCycle:
       case kLatheThreadCycle:
@@ -227,6 +228,16 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
           next.singleCycle = SingleCycleData{};
         }
         next.motion = tenths / 10 - kLatheOwnCode / 10;
+        next.cycle = 0;
+        return 0;
+      case kLatheOwnCode + 830: // drilling cycles (canned_cycles.h)
+      case kLatheOwnCode + 840:
+      case kLatheOwnCode + 850:
+      case kLatheOwnCode + 870:
+      case kLatheOwnCode + 880:
+      case kLatheOwnCode + 890:
+        next.cycle = (tenths - kLatheOwnCode) / 10;
+        next.seriesFifteenTap = 0;
         return 0;
       case kLatheOwnCode + 690: // G69: no mirror image is ever on
         return 0;
