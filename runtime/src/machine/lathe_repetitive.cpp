@@ -144,7 +144,54 @@ std::vector<Counts> threadDepths(Counts first, Counts least, Counts height,
   return depths;
 }
 
+/// What a G76 block that cuts gives: in counts, the thread height k, the
+/// first depth Δd and the taper i; the tool angle in degrees.
+struct ThreadWords {
+  Counts height = 0;
+  Counts first = 0;
+  Counts taper = 0;
+  double angle = 0.0;
+};
+
+mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
+                      const ThreadWords& thread);
+
+/// G76 in the Series 10/11 format, one block: X(U) Z(W) I(taper)
+/// K(height) D(first depth, increments) F(lead) A(tool angle) P(infeed
+/// method); the least depth, finishing allowance and passes and the
+/// chamfer are parameters 5140, 5141, 5142 and 5130.
+mbrt_status seriesTenThreadCycle(mbrt_ctx& ctx, const CycleWords& words) {
+  const MotionWords& motion = *words.motion;
+  if (motion.axisMask == 0) {
+    return illegal(ctx, kG76,
+                   "in the Series 10/11 format (parameter 0001#1 FCV) G76 "
+                   "is one block: X(U) Z(W) I K D F A P");
+  }
+  if (words.p && *words.p != 1.0) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("G76 P{}: infeed method {} of the Series 10/11 "
+                             "format (mbc cuts P1, one edge with a constant "
+                             "cutting amount)",
+                             *words.p, *words.p));
+  }
+  const auto center = [&](int index) {
+    return (motion.centerMask >> index & 1) != 0
+               ? motion.center[static_cast<std::size_t>(index)]
+               : Counts{0};
+  };
+  ThreadWords thread;
+  thread.taper = center(0);
+  thread.height = center(2);
+  thread.first = static_cast<Counts>(roundHalfAway(words.d.value_or(0.0))) *
+                 ctx.countsPerIncrement();
+  thread.angle = words.a.value_or(cycleSetting(ctx, 5143));
+  return cutThread(ctx, motion, thread);
+}
+
 mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
+  if (seriesTenFormat(ctx)) {
+    return seriesTenThreadCycle(ctx, words);
+  }
   const MotionWords& motion = *words.motion;
   const int perIncrement = ctx.countsPerIncrement();
   if (motion.axisMask == 0) { // the first block: P(m)(r)(a) Q(Δdmin) R(d)
@@ -164,19 +211,31 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
     }
     return 0;
   }
+  ThreadWords thread;
+  thread.height = static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
+  thread.first = words.q.value_or(0);
+  thread.taper = motion.hasR ? motion.r : 0;
+  thread.angle = cycleSetting(ctx, 5143);
+  return cutThread(ctx, motion, thread);
+}
+
+mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
+                      const ThreadWords& thread) {
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
-  const Counts height =
-      static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
-  const Counts first = words.q.value_or(0);
+  const Counts height = thread.height;
+  const Counts first = thread.first;
   const double lead = ctx.modal.feed;
   if (height <= 0 || first <= 0) {
     return illegal(ctx, kG76,
-                   "the thread height P and first depth Q must be "
-                   "greater than 0");
+                   seriesTenFormat(ctx)
+                       ? "the thread height K and first depth D must be "
+                         "greater than 0"
+                       : "the thread height P and first depth Q must be "
+                         "greater than 0");
   }
   const int finishing = static_cast<int>(cycleSetting(ctx, 5142));
-  const double angle = cycleSetting(ctx, 5143);
+  const double angle = thread.angle;
   const Counts least = cycleLength(ctx, 5140);
   const Counts allowance = cycleLength(ctx, 5141);
   if (allowance >= height) {
@@ -186,7 +245,7 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
   }
   const AxisCounts start = ctx.program;
   const AxisCounts end = cycleEndPoint(ctx, motion);
-  const Counts taper = motion.hasR ? motion.r : 0;
+  const Counts taper = thread.taper;
   // The crest lies towards A: an outer thread is cut inwards.
   const Counts outward = start[x] >= end[x] ? 1 : -1;
   const Counts forward = end[z] >= start[z] ? 1 : -1;

@@ -21,6 +21,12 @@ inline Counts cycleLength(const mbrt_ctx& ctx, int parameter) {
       roundHalfAway(cycleSetting(ctx, parameter) * ctx.countsPerMm()));
 }
 
+/// Parameter 0001#1 FCV: the program is in the Series 10/11 tape format,
+/// whose G76 is one block (lathe_repetitive.h).
+inline bool seriesTenFormat(const mbrt_ctx& ctx) {
+  return ctx.profile.lathe() && ctx.profile.parameterBit(1, 1);
+}
+
 inline void keepCycleLength(mbrt_ctx& ctx, int parameter, Counts counts) {
   ctx.cycleSettings[parameter] =
       static_cast<double>(counts) / ctx.countsPerMm();

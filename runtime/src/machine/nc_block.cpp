@@ -18,6 +18,7 @@
 #include "lathe_codes.h"
 #include "lathe_corners.h"
 #include "lathe_repetitive.h"
+#include "lathe_settings.h"
 #include "lathe_shapes.h"
 #include "lathe_tools.h"
 #include "look_ahead.h"
@@ -88,6 +89,9 @@ struct Block {
   int nonModal = 0;
   bool selectsG541 = false;  // #4130 becomes its P
   double dwellSeconds = 0.0; // G04 X
+  // A and D of a lathe's G76 in the Series 10/11 format.
+  std::optional<double> tenFormatA;
+  std::optional<double> tenFormatD;
   BlockCodes codes;
   FrameWords frames;
 };
@@ -519,6 +523,11 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
   }
+  if ((letter == 'A' || letter == 'D') &&
+      block.nonModal == kLatheOwnCode + 760 && seriesTenFormat(ctx)) {
+    (letter == 'A' ? block.tenFormatA : block.tenFormatD) = numeric(word.value);
+    return 0;
+  }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
     // X after U in one block: the last of the two counts.
     const std::uint32_t bit = std::uint32_t{1} << axis;
@@ -562,6 +571,11 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   if (index < 0) {
     // U and W are the incremental X and Z of a lathe in G code system A.
     const bool latheAddress = letter == 'U' || letter == 'W';
+    if (letter == 'A' && block.nonModal == kLatheOwnCode + 760) {
+      return raise(ctx, AlarmId::ImproperNcAddress,
+                   "A is not an address of this machine (G76 X Z I K D F "
+                   "A P is the Series 10/11 format: parameter 0001#1 FCV)");
+    }
     return raise(
         ctx, AlarmId::ImproperNcAddress,
         !latheAddress
@@ -768,6 +782,13 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
                  "a chamfer, corner R or ,A belongs to a G00-G03 move, not to "
                  "a cycle, a dwell or a reference return");
   }
+  if (block.nonModal >= kLatheOwnCode + 710 &&
+      block.nonModal <= kLatheOwnCode + 750 && seriesTenFormat(ctx)) {
+    return raise(ctx, AlarmId::Unsupported,
+                 fmt::format("G{} in the Series 10/11 tape format (parameter "
+                             "0001#1 FCV): mbc reads only G70 and G76 in it",
+                             writtenLatheCode(ctx, block.nonModal)));
+  }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {
     return startShapeCycle(ctx, block.nonModal, block.frames);
@@ -777,7 +798,7 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
         ctx, block.nonModal,
         {&motion, block.incrementQ,
          block.hasP ? std::optional<double>(block.p) : std::nullopt,
-         std::nullopt});
+         std::nullopt, block.tenFormatA, block.tenFormatD});
   }
   if (isLookAheadCode(block.nonModal)) {
     return switchLookAhead(
@@ -851,9 +872,13 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
       return raise(ctx, AlarmId::IllegalMinusSign,
                    fmt::format("cycle dwell P{}", block.p));
     }
-    const CycleWords cycle{
-        &motion, block.q,
-        block.hasP ? std::optional<double>(block.p) : std::nullopt, block.k};
+    const CycleWords cycle{&motion,
+                           block.q,
+                           block.hasP ? std::optional<double>(block.p)
+                                      : std::nullopt,
+                           block.k,
+                           std::nullopt,
+                           std::nullopt};
     return executeCycleBlock(ctx, cycle);
   }
   return executeBlockMotion(ctx, motion);
