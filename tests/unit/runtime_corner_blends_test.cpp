@@ -164,6 +164,8 @@ TEST(RuntimeCornerBlends, Alarms) {
       {",A30.", "X50.", AlarmId::NoEndPointAndAngle},
       {",A30.", "M08", AlarmId::NoEndPointAndAngle},
       {",A0.", "X50. Y0 ,A180.", AlarmId::NoSolutionOfBlockEnd},
+      {"X40. ,R5.", "G19 Y30.", AlarmId::MissingMoveAfterCorner},
+      {",A30.", "G18 X50. Z10. ,A90.", AlarmId::MissingMoveAfterCorner},
   };
 
   for (const auto& c : cases) {

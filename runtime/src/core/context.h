@@ -288,6 +288,7 @@ struct CornerInsertion {
   // and ,A give the corner.
   bool openEnd = false;
   double angle = 0.0;
+  int plane = 17; // G17-G19 when the move was held
 };
 
 /// The state a lathe's shape cycle puts back after running blocks or moves

@@ -38,7 +38,12 @@ AxisCounts withPlane(AxisCounts point, PlaneIndex plane, PlanePoint at) {
   return point;
 }
 
+/// The plane's two axes as a mask of axis words; none when the machine
+/// lacks one of them.
 std::uint32_t planeBits(PlaneIndex plane) {
+  if (plane.p < 0 || plane.q < 0) {
+    return 0;
+  }
   return (std::uint32_t{1} << plane.p) | (std::uint32_t{1} << plane.q);
 }
 
@@ -375,6 +380,7 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
   held.center = {move.center.x, move.center.y};
   held.openEnd = open;
   held.angle = words.angle.value_or(0.0);
+  held.plane = ctx.modal.plane;
   if (!open) {
     ctx.program = target;
   }
@@ -459,6 +465,12 @@ mbrt_status moveAfterBlend(mbrt_ctx& ctx, const MotionWords& words,
   CornerInsertion held = ctx.corner;
   ctx.corner.pending = false;
   const PlaneIndex plane = planeIndex(ctx);
+  if (ctx.modal.plane != held.plane) {
+    return raise(ctx, AlarmId::MissingMoveAfterCorner,
+                 fmt::format("the block after the chamfer, corner R or ,A "
+                             "line of line {} changes the plane (G{} to G{})",
+                             held.line, held.plane, ctx.modal.plane));
+  }
   if (held.openEnd) {
     if (const mbrt_status status = closeAngledLine(ctx, held, words, target)) {
       return status;
