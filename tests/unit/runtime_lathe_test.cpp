@@ -112,6 +112,29 @@ TEST(RuntimeLathe, FeedPerRevolution) {
   EXPECT_TRUE(reports(stopped, "feed per revolution (G99) needs a spindle"));
 }
 
+// G34 from Z0 to Z-30 at 600 rpm, lead F2 growing by K0.1 per
+// revolution: 2 n + 0.05 n^2 = 30 gives n = (sqrt(10) - 2) / 0.1 =
+// 11.6228 revolutions, 1.16228 s (G32 would take 15: 1.5 s). The lead
+// shrinking by K-0.1 reaches 0 after 20 mm (4 - 0.2 L = 0): PS0014.
+TEST(RuntimeLathe, VariableLeadThreading) {
+  Machine m(kLathe);
+  ASSERT_EQ(m.block("G97 S600 M03 G00 X20. Z0"), 0);
+  const double before = m.read(3001);
+  ASSERT_EQ(m.block("G34 Z-30. F2. K0.1"), 0);
+  EXPECT_NEAR(m.read(3001) - before, (std::sqrt(10.0) - 2.0) / 0.1 * 100.0,
+              1.0);
+  EXPECT_EQ(m.read(4001), 34.0);
+  EXPECT_EQ(m.motions().back().feed, 2.0);
+  ASSERT_EQ(m.block("G00 Z0"), 0);
+  const double back = m.read(3001);
+  ASSERT_EQ(m.block("G34 Z-30. F2."), 0); // no K: a constant lead, as G32
+  EXPECT_NEAR(m.read(3001) - back, 1500.0, 1.0);
+  ASSERT_EQ(m.block("G00 Z0"), 0);
+  EXPECT_EQ(m.block("G34 Z-30. F2. K-0.1"),
+            status(AlarmId::IllegalLeadCommand));
+  ASSERT_EQ(m.block("G34 Z-19. F2. K-0.1"), 0);
+}
+
 // G96 facing from X100 to X0 at 200 m/min, limited to 2000 rpm, F0.2 per
 // revolution. A revolution takes 2 pi r / 200000 min at radius r mm; the
 // limit holds below rc = 200000 / (2 pi 2000) = 15.9155 mm, where it takes
@@ -187,8 +210,8 @@ TEST(RuntimeLathe, SystemBAndC) {
 
 TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   const std::pair<const char*, const char*> cases[] = {
-      {"G34 Z-20. F2. K0.1", "G34 (variable-lead threading)"},
       {"G07.1 C20.", "G7.1 (cylindrical interpolation)"},
+      {"G12.1", "G12.1 (polar coordinate interpolation mode)"},
   };
   for (const auto& [block, text] : cases) {
     Machine m(kLathe);

@@ -168,6 +168,7 @@ struct MoveOrigin {
   bool surfaceSpeed = false;
   double spindleLimit = 0.0;
   bool threading = false;
+  double leadChange = 0.0; // G34 K: the lead grows by it per revolution
 };
 
 /// A programmed move as cutter compensation holds it (cutter_comp.h), in
@@ -390,6 +391,8 @@ struct mbrt_ctx {
   // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
   // G92 S in B and C), rpm; 0: none given.
   double spindleLimit = 0.0;
+  // G34's K of the block running: the lead's change per revolution.
+  double leadChange = 0.0;
   // The parameters of a lathe's multiple repetitive cycles (5130-5143)
   // that a cycle's first block set, until power-off (lengths in mm).
   std::map<int, double> cycleSettings;

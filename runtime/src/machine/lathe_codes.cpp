@@ -62,7 +62,7 @@ constexpr std::array kLatheGCodes = {
     LatheGCode{301, 301, 301, 301, false, "floating reference position return"},
     LatheGCode{310, 310, 310, 310, true, "skip function"},
     LatheGCode{320, 330, 330, kLatheThreading, true, "threading"},
-    LatheGCode{340, 340, 340, own(340), false, "variable-lead threading"},
+    LatheGCode{340, 340, 340, own(340), true, "variable-lead threading"},
     LatheGCode{360, 360, 360, own(360), false,
                "automatic tool offset (X axis)"},
     LatheGCode{370, 370, 370, own(370), false,

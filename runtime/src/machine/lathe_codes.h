@@ -11,6 +11,7 @@ namespace mbc::rt {
 /// (tenths); codes a mill has too keep the mill's number.
 inline constexpr int kLatheOwnCode = 10000;
 inline constexpr int kLatheThreading = kLatheOwnCode + 320;    // G32
+inline constexpr int kLatheVariableLead = kLatheOwnCode + 340; // G34
 inline constexpr int kLatheTurningCycle = kLatheOwnCode + 900; // G90
 inline constexpr int kLatheThreadCycle = kLatheOwnCode + 920;  // G92
 inline constexpr int kLatheFacingCycle = kLatheOwnCode + 940;  // G94
@@ -19,13 +20,15 @@ inline constexpr int kLatheG10 = kLatheOwnCode + 100;          // offsets
 /// The lathe's group 01 codes of their own, as ModalState::motion holds
 /// them (system A's numbers): G32 and the single cycles (lathe_cycles.h).
 inline constexpr int kThreadingMotion = 32;
+inline constexpr int kVariableLeadMotion = 34; // G34
 inline constexpr int kTurningCycleMotion = 90;
 inline constexpr int kThreadCycleMotion = 92;
 inline constexpr int kFacingCycleMotion = 94;
 
 /// Whether moves in a motion mode cut a thread: F is the lead.
 inline bool cutsThread(int motion) {
-  return motion == kThreadingMotion || motion == kThreadCycleMotion;
+  return motion == kThreadingMotion || motion == kVariableLeadMotion ||
+         motion == kThreadCycleMotion;
 }
 
 inline bool isSingleCycle(int motion) {

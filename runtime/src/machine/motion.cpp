@@ -46,6 +46,9 @@ MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
   origin.surfaceSpeed = ctx.modal.surfaceSpeed;
   origin.spindleLimit = ctx.spindleLimit;
   origin.threading = cutsThread(ctx.modal.motion);
+  if (ctx.modal.motion == kVariableLeadMotion) {
+    origin.leadChange = ctx.leadChange;
+  }
   return origin;
 }
 
@@ -118,13 +121,20 @@ struct Travel {
 /// whatever the input unit (degrees at the same number when only rotary
 /// axes move). `timed`: the length F applies to, in input units, which for
 /// a helix is the arc in its plane (FANUC: F is the feed along the arc).
-/// A thread (G32) goes its lead F per revolution along its longer axis.
-/// `turnMinutes`: one revolution's mean time in G96 (spindle.h), else 0.
+/// A thread (G32) goes its lead F per revolution along its longer axis;
+/// G34's lead grows by K each revolution: L n + K n^2 / 2 = length gives
+/// the revolutions n. `turnMinutes`: one revolution's mean time in G96
+/// (spindle.h), else 0.
 void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid, double timed,
                   const MoveOrigin& origin, double turnMinutes = 0.0) {
   double minutes = 0.0;
   if (origin.threading && !rapid) {
     timed = travel.lead;
+    if (origin.leadChange != 0.0) { // in leads of F: the same clock below
+      const double k = origin.leadChange;
+      const double l = origin.feed;
+      timed = l * (std::sqrt(l * l + 2.0 * k * timed) - l) / k;
+    }
   }
   if (rapid) {
     minutes =
@@ -779,6 +789,35 @@ mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
   return status;
 }
 
+namespace {
+
+/// G34's K (a length per revolution) into ctx.leadChange; PS0014 when the
+/// lead would shrink to nothing before the thread's end.
+mbrt_status readLeadChange(mbrt_ctx& ctx, const MotionWords& words,
+                           const AxisCounts& target) {
+  const bool hasK = (words.centerMask >> 2 & 1) != 0;
+  ctx.leadChange =
+      hasK ? static_cast<double>(words.center[2]) / ctx.scale() : 0.0;
+  double longest = 0.0; // the thread's length along its longer axis
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    if (!ctx.isRotary(axis)) {
+      longest = std::max(longest, std::fabs(static_cast<double>(
+                                      target[axis] - ctx.program[axis])) /
+                                      ctx.scale());
+    }
+  }
+  const double lead = ctx.modal.feed;
+  if (lead * lead + 2.0 * ctx.leadChange * longest <= 0.0) {
+    return raise(ctx, AlarmId::IllegalLeadCommand,
+                 fmt::format("G34 F{} K{}: the lead shrinks to 0 before the "
+                             "thread's end, {} long",
+                             lead, ctx.leadChange, longest));
+  }
+  return 0;
+}
+
+} // namespace
+
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.modal.motion;
   const AxisCounts start = ctx.program;
@@ -797,7 +836,13 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   if (mode == 1 && ctx.profile.lathe() && insertsCorner(ctx, words)) {
     return holdCornerMove(ctx, words, start, target);
   }
-  if (mode == 0 || mode == 1 || mode == kThreadingMotion) {
+  if (mode == kVariableLeadMotion) {
+    if (const mbrt_status status = readLeadChange(ctx, words, target)) {
+      return status;
+    }
+  }
+  if (mode == 0 || mode == 1 || mode == kThreadingMotion ||
+      mode == kVariableLeadMotion) {
     return moveLine(ctx, target, mode == 0, &words);
   }
   if (isSingleCycle(mode)) {

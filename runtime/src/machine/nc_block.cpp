@@ -221,7 +221,9 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
   if (ctx.profile.lathe()) {
     switch (tenths) {
       case kLatheThreading:
-        next.motion = kThreadingMotion;
+      case kLatheVariableLead:
+        next.motion =
+            tenths == kLatheThreading ? kThreadingMotion : kVariableLeadMotion;
         next.cycle = 0; // group 01, as G00-G03
         return 0;
       case kLatheTurningCycle:
@@ -755,7 +757,8 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
   }
   if (ctx.compensation.codeInBlock && ctx.compensation.engaged &&
       ctx.modal.compensation != 40 && block.motion.centerMask != 0 &&
-      (ctx.modal.motion <= 1 || ctx.modal.motion == kThreadingMotion)) {
+      (ctx.modal.motion <= 1 || ctx.modal.motion == kThreadingMotion ||
+       ctx.modal.motion == kVariableLeadMotion)) {
     return refuseUnderCompensation(
         ctx, fmt::format("G{} with I, J or K in offset mode (a vector "
                          "direction)",
