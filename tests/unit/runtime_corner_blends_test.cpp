@@ -10,24 +10,16 @@ namespace {
 
 constexpr double kPrinted = 0.0005; // the derivations carry 4 decimals
 
-Points run(Machine& m, std::initializer_list<const char*> texts) {
-  int line = 1;
-  for (const char* text : texts) {
-    EXPECT_EQ(m.block(text, line++), 0) << text << m.report();
-  }
-  return ends(m);
-}
-
 // X40 ,C5 then Y30: the chamfer runs from 5 short of the corner (35, 0) to
 // 5 past it (40, 5). With ,R5 the arc turns left (G03) about (35, 5).
 TEST(RuntimeCornerBlends, RightAngleChamferAndCornerR) {
   Machine chamfer;
-  expectPath(run(chamfer, {"G01 X40. ,C5. F300.", "Y30."}),
+  expectPath(blocks(chamfer, {"G01 X40. ,C5. F300.", "Y30."}),
              {{35, 0}, {40, 5}, {40, 30}}, kPrinted);
   EXPECT_EQ(chamfer.motions()[1].line, 1); // the ,C block's
   EXPECT_EQ(chamfer.motions()[1].feed, 300.0);
   Machine round;
-  expectPath(run(round, {"G01 X40. ,R5. F300.", "Y30."}),
+  expectPath(blocks(round, {"G01 X40. ,R5. F300.", "Y30."}),
              {{35, 0}, {40, 5}, {40, 30}}, kPrinted);
   EXPECT_EQ(round.motions()[1].kind, MBRT_MOTION_CCW);
   EXPECT_EQ(round.motions()[1].center[0], 35.0);
@@ -40,7 +32,7 @@ TEST(RuntimeCornerBlends, RightAngleChamferAndCornerR) {
 // line, at (40 + 1.4645, 1.4645).
 TEST(RuntimeCornerBlends, CornerRAtAnyAngle) {
   Machine m;
-  expectPath(run(m, {"G01 X40. ,R5. F300.", "X80. Y40."}),
+  expectPath(blocks(m, {"G01 X40. ,R5. F300.", "X80. Y40."}),
              {{45.0 - 5.0 * std::sqrt(2.0), 0},
               {40.0 + 2.0711 / std::sqrt(2.0), 2.0711 / std::sqrt(2.0)},
               {80, 40}},
@@ -56,14 +48,14 @@ TEST(RuntimeCornerBlends, CornerRAtAnyAngle) {
 // circle at (60, 0) + 20 (-sqrt 600, 5) / 25.
 TEST(RuntimeCornerBlends, LineIntoArc) {
   Machine chamfer;
-  expectPath(run(chamfer, {"G01 X40. ,C2. F300.", "G02 X60. Y20. R20."}),
+  expectPath(blocks(chamfer, {"G01 X40. ,C2. F300.", "G02 X60. Y20. R20."}),
              {{38, 0}, {40.1, std::sqrt(3.99)}, {60, 20}}, kPrinted);
   EXPECT_EQ(chamfer.motions()[2].kind, MBRT_MOTION_CW);
   EXPECT_NEAR(chamfer.motions()[2].center[0], 60.0, 0.0005);
   EXPECT_NEAR(chamfer.motions()[2].center[1], 0.0, 0.0005);
   Machine round;
   const double x = 60.0 - std::sqrt(600.0);
-  expectPath(run(round, {"G01 X40. ,R5. F300.", "G02 X60. Y20. R20."}),
+  expectPath(blocks(round, {"G01 X40. ,R5. F300.", "G02 X60. Y20. R20."}),
              {{x, 0}, {60.0 - 20.0 * std::sqrt(600.0) / 25.0, 4}, {60, 20}},
              kPrinted);
   EXPECT_EQ(round.motions()[1].kind, MBRT_MOTION_CCW);
@@ -80,7 +72,7 @@ TEST(RuntimeCornerBlends, ArcIntoLine) {
   Machine m;
   const double x = 20.0 + std::sqrt(600.0);
   expectPath(
-      run(m, {"G00 X20. Y20.", "G02 X40. Y0 R20. ,R5. F300.", "G01 X60."}),
+      blocks(m, {"G00 X20. Y20.", "G02 X40. Y0 R20. ,R5. F300.", "G01 X60."}),
       {{20, 20}, {20.0 + 20.0 * std::sqrt(600.0) / 25.0, 4}, {x, 0}, {60, 0}},
       kPrinted);
   EXPECT_EQ(m.motions()[2].kind, MBRT_MOTION_CCW);
@@ -91,7 +83,7 @@ TEST(RuntimeCornerBlends, ArcIntoLine) {
 // Blocks may chain corners, and G91 words count from the virtual corner.
 TEST(RuntimeCornerBlends, ChainsAndIncrementalWords) {
   Machine m;
-  expectPath(run(m, {"G91 G01 X40. ,C5. F300.", "Y30. ,C5.", "X-40."}),
+  expectPath(blocks(m, {"G91 G01 X40. ,C5. F300.", "Y30. ,C5.", "X-40."}),
              {{35, 0}, {40, 5}, {40, 25}, {35, 30}, {0, 30}}, kPrinted);
 }
 
@@ -104,8 +96,8 @@ TEST(RuntimeCornerBlends, ChainsAndIncrementalWords) {
 TEST(RuntimeCornerBlends, LatheDirectDrawing) {
   Machine m(R"({"series": "T"})");
   expectPath(
-      run(m, {"G98 G00 X20. Z0", "G01 X30. ,C1. F100.", "Z-10. ,R2.",
-              "X40. ,A135.", ",A180. ,R1.5", "X56. Z-40. ,A90.", "X60."}),
+      blocks(m, {"G98 G00 X20. Z0", "G01 X30. ,C1. F100.", "Z-10. ,R2.",
+                 "X40. ,A135.", ",A180. ,R1.5", "X56. Z-40. ,A90.", "X60."}),
       {{20, 0},
        {28, 0},
        {30, -1},
@@ -125,16 +117,16 @@ TEST(RuntimeCornerBlends, LatheDirectDrawing) {
 // ,A with one coordinate of the plane: the other one follows (G00 too).
 TEST(RuntimeCornerBlends, AngleGivesTheOtherCoordinate) {
   Machine m;
-  expectPath(run(m, {"G00 X10. ,A30.", "G01 Y20. ,A90. F100.", "Y10. ,A225."}),
-             {{10, 10 * std::tan(std::numbers::pi / 6)}, {10, 20}, {0, 10}},
-             kPrinted);
+  expectPath(
+      blocks(m, {"G00 X10. ,A30.", "G01 Y20. ,A90. F100.", "Y10. ,A225."}),
+      {{10, 10 * std::tan(std::numbers::pi / 6)}, {10, 20}, {0, 10}}, kPrinted);
   EXPECT_EQ(m.motions()[0].kind, MBRT_MOTION_RAPID);
 }
 
 // The run ends after a ,C block: its move goes as programmed.
 TEST(RuntimeCornerBlends, HeldMoveRunsAtTheEnd) {
   Machine m;
-  run(m, {"G01 X40. ,C5. F300."});
+  blocks(m, {"G01 X40. ,C5. F300."});
   EXPECT_TRUE(m.motions().empty());
   mbrt_finish(m.ctx(), MBRT_END_M02_M30);
   expectPath(ends(m), {{40, 0}}, kPrinted);

@@ -460,15 +460,6 @@ TEST(RuntimeLatheCycles, MultipleThreading) {
 
 /// Points equal but for the last bits of arithmetic (or, with
 /// `tolerance`, within the counts of a computed path).
-/// Runs blocks, each of which must pass; the end points of every motion.
-Points blocks(Machine& m, std::initializer_list<const char*> texts) {
-  for (const char* text : texts) {
-    const std::string_view block(text);
-    EXPECT_EQ(m.block(block), 0) << block << m.report();
-  }
-  return ends(m);
-}
-
 // G71 type I, OD: from A (X60 Z2) cuts 2 mm deep (X56, 52, ... 32), each
 // from Z2 to the shape shifted by the allowance (0.4 of diameter, 0.1 in
 // Z), escaping 0.5 at 45 degrees; then along the shifted shape and back to

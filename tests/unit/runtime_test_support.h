@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -163,6 +164,16 @@ inline Points ends(const Machine& m, std::size_t first = 0) {
     out.emplace_back(m.motions()[i].end[0], m.motions()[i].end[1]);
   }
   return out;
+}
+
+/// Runs blocks at lines 1, 2, ..., each of which must pass; the end points
+/// of every motion.
+inline Points blocks(Machine& m, std::initializer_list<const char*> texts) {
+  int line = 1;
+  for (const char* text : texts) {
+    EXPECT_EQ(m.block(text, line++), 0) << text << m.report();
+  }
+  return ends(m);
 }
 
 inline void expectPath(const Points& path, const Points& expected,

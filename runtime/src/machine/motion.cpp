@@ -830,7 +830,7 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.corner.pending) {
     return moveAfterCorner(ctx, words, target);
   }
-  if (holdsForNextBlock(ctx, words)) {
+  if (hasCommaWords(words) && holdsForNextBlock(ctx, words)) {
     return holdBlendMove(ctx, words, start, target);
   }
   if (mode == 1 && ctx.profile.lathe() && insertsCorner(ctx, words)) {

@@ -111,17 +111,15 @@ double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
   if (letter == 'G') {
     return 10.0;
   }
-  if (letter == commaWordLetter('A')) {
-    return kCountsPerDegree; // 0.001 degree in inches too
-  }
-  if (isCommaWord(letter)) {
-    return ctx.inputScale();
-  }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
     return ctx.axisScale(axis) / ctx.axisCountsPerIncrement(axis);
   }
-  if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F') {
+  if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F' ||
+      letter == commaWordLetter('C') || letter == commaWordLetter('R')) {
     return ctx.inputScale();
+  }
+  if (letter == commaWordLetter('A')) {
+    return kCountsPerDegree; // 0.001 degree in inches too
   }
   return 1.0;
 }
@@ -509,9 +507,6 @@ mbrt_status readCommaWord(mbrt_ctx& ctx, const mbrt_word& word,
 
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
-  if (isCommaWord(letter)) {
-    return readCommaWord(ctx, word, block.motion);
-  }
   if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
     // X1.5 is 1.5 s; X1500 counts milliseconds, like P, unless literals
     // are whole units (3401#0 DPI).
@@ -525,8 +520,8 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
   }
-  if ((letter == 'A' || letter == 'D') &&
-      block.nonModal == kLatheOwnCode + 760 && seriesTenFormat(ctx)) {
+  if (block.nonModal == kLatheOwnCode + 760 &&
+      (letter == 'A' || letter == 'D') && seriesTenFormat(ctx)) {
     (letter == 'A' ? block.tenFormatA : block.tenFormatD) = numeric(word.value);
     return 0;
   }
@@ -570,6 +565,9 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return toLengthCounts(ctx, word, &*block.q);
   }
   const int index = lastWordIndex(letter);
+  if (index < 0 && isCommaWord(letter)) { // no address of the A..Z tables
+    return readCommaWord(ctx, word, block.motion);
+  }
   if (index < 0) {
     // U and W are the incremental X and Z of a lathe in G code system A.
     const bool latheAddress = letter == 'U' || letter == 'W';

@@ -40,9 +40,9 @@ void appendFixedText(std::string& out, double value) {
 
 /// K is the repeat count of a canned cycle.
 bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
-  return ctx.movedAxisOf(letter) >= 0 || isCommaWord(letter) || letter == 'I' ||
-         letter == 'J' || (letter == 'K' && ctx.modal.cycle == 0) ||
-         letter == 'R' || letter == 'Q';
+  return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
+         (letter == 'K' && ctx.modal.cycle == 0) || letter == 'R' ||
+         letter == 'Q' || isCommaWord(letter);
 }
 
 /// "X", or ",C" for a comma word.
