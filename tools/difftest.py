@@ -11,7 +11,8 @@ G52/G92 shifts, scaling, rotation, mirror, polar coordinates, G10 offsets,
 feed modes and units, #3006 messages, bounded backward GOTO loops, optional
 block skip, system variables read and written; on a lathe profile, one in
 five programs: diameter X with U/W, G50, G96/G97, T codes and G10 offsets,
-single cycles, G74-G76, G71-G73 with shapes and G70, nose radius
+single cycles, G74-G76, G71-G73 with shapes and G70 (on one lathe in
+four in the one-block Series 10/11 format), nose radius
 compensation), each with the run options
 and machine profile it needs (--block-skip, --arg, --set, --machine), runs
 each under every engine and optimisation level, and compares everything a
@@ -99,6 +100,10 @@ class Generator:
         self.back_labels = 0
         # A stream of its own, so that the mill programs of a seed stay.
         self.lathe = random.Random(seed * 7919 + 1).random() < 0.2
+        # A lathe in the Series 10/11 tape format (0001#1 FCV): one-block
+        # multiple repetitive cycles.
+        self.series_ten = (self.lathe and
+                           random.Random(seed * 7919 + 2).random() < 0.25)
         self.shapes = 0
 
     def chance(self, p):
@@ -254,20 +259,30 @@ class Generator:
             return self.lathe_drilling(x, z)
         if roll < 0.25:
             cycle = self.pick(("G74", "G75"))
-            return [f"G00 X{x} Z2. S{self.rng.randint(200, 2000)}",
-                    f"{cycle} R{self.length(0, 1)}",
-                    f"{cycle} X{self.length(10, 60)} Z{z} "
-                    f"P{self.rng.randint(500, 4000)} "
-                    f"Q{self.rng.randint(500, 4000)} F{self.length(0.05, 0.3)}"]
+            start = f"G00 X{x} Z2. S{self.rng.randint(200, 2000)}"
+            end = f"{cycle} X{self.length(10, 60)} Z{z}"
+            along_x, along_z = (self.rng.randint(500, 4000) for _ in "XZ")
+            feed = f"F{self.length(0.05, 0.3)}"
+            if self.series_ten:
+                return [start, f"{end} I{along_x} K{along_z} "
+                               f"D{self.rng.randint(0, 500)} {feed}"]
+            return [start, f"{cycle} R{self.length(0, 1)}",
+                    f"{end} P{along_x} Q{along_z} {feed}"]
         if roll < 0.35:
             height = self.rng.randint(300, 2000)
-            return [f"G00 X{x} Z5. S{self.rng.randint(200, 1500)}",
+            start = f"G00 X{x} Z5. S{self.rng.randint(200, 1500)}"
+            end = (f"G76 X[#{self.rng.randint(1, 26)} MOD 5 + "
+                   f"{float(x) - 5:.3f}] Z{z}")
+            first = self.rng.randint(100, height)
+            lead = f"F{self.length(1, 3)}"
+            if self.series_ten:
+                return [start, f"{end} K{height} D{first} {lead} "
+                               f"A{self.pick(('60', '55', '0'))}"]
+            return [start,
                     f"G76 P{self.pick(('01', '02'))}{self.pick(('00', '10'))}"
                     f"{self.pick(('60', '55', '00'))} "
                     f"Q{self.rng.randint(10, 200)} R{self.length(0, 0.05)}",
-                    f"G76 X[#{self.rng.randint(1, 26)} MOD 5 + "
-                    f"{float(x) - 5:.3f}] Z{z} P{height} "
-                    f"Q{self.rng.randint(100, height)} F{self.length(1, 3)}"]
+                    f"{end} P{height} Q{first} {lead}"]
         if roll < 0.5:
             return self.lathe_shape()
         if roll < 0.6:
@@ -380,9 +395,16 @@ class Generator:
                            f"R{self.rng.randint(1, 4)}"}[cycle]
         small = round(self.rng.uniform(10, 30), 3)
         step = round(self.rng.uniform(2, 15), 3)
-        lines = ["G00 X80. Z5. S1000", f"{cycle} {settings}",
-                 f"{cycle} P{first} Q{last} U{self.length(0, 0.5)} "
-                 f"W{self.length(0, 0.2)} F{self.length(0.1, 0.4)}"]
+        shape = (f"{cycle} P{first} Q{last} U{self.length(0, 0.5)} "
+                 f"W{self.length(0, 0.2)} F{self.length(0.1, 0.4)}")
+        if self.series_ten:
+            one_block = {"G71": f"D{self.rng.randint(500, 3000)}",
+                         "G72": f"D{self.rng.randint(500, 3000)}",
+                         "G73": f"I{self.length(0, 4)} K{self.length(0, 2)} "
+                                f"D{self.rng.randint(1, 4)}"}[cycle]
+            lines = ["G00 X80. Z5. S1000", f"{shape} {one_block}"]
+        else:
+            lines = ["G00 X80. Z5. S1000", f"{cycle} {settings}", shape]
         if cycle == "G72":
             lines += [f"N{first} G00 Z{-step:.3f}",
                       f"G01 X{small + 30:.3f} F{self.length(0.05, 0.2)}",
@@ -780,6 +802,8 @@ class Generator:
         parameters = {name: value for name, value, _, _ in self.code_calls}
         if self.t_call:
             parameters["6001"] = 32
+        if self.series_ten:
+            parameters["1"] = 2
         if self.lathe:
             return json.dumps({"series": "T", "parameters": parameters})
         if not parameters:

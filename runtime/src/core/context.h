@@ -320,9 +320,12 @@ struct ShapeReading {
   bool firstWordsRead = false; // block ns's axis words have been seen
   bool typeTwo = false;        // block ns wrote the cut axis too (G71 Z, G72 X)
   Shape shape;
-  // The cycle's settings: the finishing allowance (G71-G73), G73's relief
-  // and divisions, all in counts, x a radius.
+  // The cycle's settings: the finishing allowance (G71-G73), G71/G72's
+  // depth of cut and escape, G73's relief and divisions, all in counts, x
+  // a radius.
   ShapePoint allowance;
+  Counts depth = 0;
+  Counts escape = 0;
   ShapePoint relief;
   int divisions = 1;
   MachineSnapshot before; // the state the shape's blocks run over

@@ -15,6 +15,10 @@
 // point's Z (with a pull-out over r × 0.1 lead when r > 0, rising at the
 // angle of parameter 5131 from Z, 45 degrees when 0),
 // rapids out in X and back to A.
+//
+// In the Series 10/11 tape format (parameter 0001#1 FCV) each is one block:
+// G74/G75 give I, K and D for P, Q and R, and take e from parameter 5139;
+// G76 gives I, K, D and A.
 #include "lathe_repetitive.h"
 
 #include <mbc/arith.h>
@@ -46,10 +50,23 @@ Counts towards(Counts from, Counts to, Counts step) {
   return from + (to >= from ? step : -step);
 }
 
+/// I (index 0) or K (2) of a Series 10/11 block, in counts; 0 without.
+Counts centerWord(const MotionWords& motion, int index) {
+  return (motion.centerMask >> index & 1) != 0
+             ? motion.center[static_cast<std::size_t>(index)]
+             : Counts{0};
+}
+
 /// G74 (pecks along Z, columns in X) and G75 (pecks along X, columns in Z).
 mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   const MotionWords& motion = *words.motion;
+  const bool oneBlock = seriesTenFormat(ctx);
   if (motion.axisMask == 0) { // the first block: R is the return e
+    if (oneBlock) {
+      return illegal(ctx, code,
+                     "in the Series 10/11 format (parameter 0001#1 FCV) it "
+                     "is one block: X(U) Z(W) I K D F");
+    }
     if (motion.hasR) {
       keepCycleLength(ctx, 5139, motion.r);
     }
@@ -58,12 +75,20 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   const int peckAxis = ctx.axisOf(code == kG74 ? 'Z' : 'X');
   const int columnAxis = ctx.axisOf(code == kG74 ? 'X' : 'Z');
   const int perIncrement = ctx.countsPerIncrement();
-  // G74: P shifts X, Q pecks Z; G75: P pecks X, Q shifts Z.
-  const Counts p = static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
-  const Counts q = words.q.value_or(0);
+  // The amounts along X (P, or I in the Series 10/11 format) and along Z
+  // (Q, or K): G74 shifts X and pecks Z, G75 pecks X and shifts Z. The
+  // relief at the bottom is R (D, least increments).
+  const Counts p =
+      oneBlock ? centerWord(motion, 0)
+               : static_cast<Counts>(words.p.value_or(0.0)) * perIncrement;
+  const Counts q = oneBlock ? centerWord(motion, 2) : words.q.value_or(0);
   const Counts peck = std::llabs(code == kG74 ? q : p);
   const Counts shift = std::llabs(code == kG74 ? p : q);
-  const Counts relief = motion.hasR ? std::llabs(motion.r) : 0;
+  const Counts relief =
+      oneBlock ? std::llabs(static_cast<Counts>(words.d.value_or(0.0))) *
+                     perIncrement
+      : motion.hasR ? std::llabs(motion.r)
+                    : 0;
   const Counts back = cycleLength(ctx, 5139);
   const AxisCounts start = ctx.program;
   const AxisCounts end = cycleEndPoint(ctx, motion);
@@ -174,14 +199,9 @@ mbrt_status seriesTenThreadCycle(mbrt_ctx& ctx, const CycleWords& words) {
                              "cutting amount)",
                              *words.p, *words.p));
   }
-  const auto center = [&](int index) {
-    return (motion.centerMask >> index & 1) != 0
-               ? motion.center[static_cast<std::size_t>(index)]
-               : Counts{0};
-  };
   ThreadWords thread;
-  thread.taper = center(0);
-  thread.height = center(2);
+  thread.taper = centerWord(motion, 0);
+  thread.height = centerWord(motion, 2);
   thread.first = static_cast<Counts>(roundHalfAway(words.d.value_or(0.0))) *
                  ctx.countsPerIncrement();
   thread.angle = words.a.value_or(cycleSetting(ctx, 5143));

@@ -47,6 +47,24 @@ std::optional<double> wholeWord(const FrameWords& words, char letter) {
                          : std::nullopt;
 }
 
+/// A word of the Series 10/11 format's one-block cycles that counts least
+/// increments (readWord refuses a decimal point in it).
+std::optional<Counts> incrementWord(const mbrt_ctx& ctx,
+                                    const FrameWords& words, char letter) {
+  const std::optional<double> value = wholeWord(words, letter);
+  return value ? std::optional(static_cast<Counts>(*value) *
+                               ctx.countsPerIncrement())
+               : std::nullopt;
+}
+
+/// A length word in counts, else the setting `parameter`.
+Counts lengthOr(const mbrt_ctx& ctx, const FrameWords& words, char letter,
+                int parameter) {
+  const std::optional<double> units = lengthWord(ctx, words, letter);
+  return units ? static_cast<Counts>(roundToLengthCounts(ctx, *units))
+               : cycleLength(ctx, parameter);
+}
+
 void keepLength(mbrt_ctx& ctx, int parameter, std::optional<double> units) {
   if (units) {
     keepCycleLength(ctx, parameter,
@@ -242,9 +260,8 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
   if (code == kG70) {
     return finish(ctx, shape);
   }
-  const Roughing roughing{
-      code == kG72, static_cast<double>(cycleLength(ctx, 5132)),
-      static_cast<double>(cycleLength(ctx, 5133)), allowance};
+  const Roughing roughing{code == kG72, static_cast<double>(reading.depth),
+                          static_cast<double>(reading.escape), allowance};
   if (code != kG73) {
     if (roughing.depth <= 0.0) {
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
@@ -296,12 +313,21 @@ void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
 mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
   const std::optional<double> ns = wholeWord(words, 'P');
   const std::optional<double> nf = wholeWord(words, 'Q');
+  // The Series 10/11 format's G71-G73 are one block, with the settings.
+  const bool oneBlock = seriesTenFormat(ctx) && code != kG70;
   if (!ns || !nf) {
-    if (code == kG70 || ns || nf) {
-      return raise(ctx, AlarmId::ShapeAddressMissing,
-                   fmt::format("G{} needs P (the shape's first sequence "
-                               "number) and Q (its last)",
-                               writtenCode(ctx, code)));
+    if (code == kG70 || ns || nf || oneBlock) {
+      return raise(
+          ctx, AlarmId::ShapeAddressMissing,
+          fmt::format("G{} needs P (the shape's first sequence number) and Q "
+                      "(its last){}",
+                      writtenCode(ctx, code),
+                      !oneBlock ? ""
+                      : code == kG73
+                          ? ": in the Series 10/11 format (parameter 0001#1 "
+                            "FCV) it is one block, P Q I K U W D F"
+                          : ": in the Series 10/11 format (parameter 0001#1 "
+                            "FCV) it is one block, P Q U W D F"));
     }
     keepSettings(ctx, code, words);
     return 0;
@@ -325,16 +351,25 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
   if (const auto w = lengthWord(ctx, words, 'W')) {
     reading.allowance.z = roundToAxisCounts(ctx, z, *w);
   }
+  const auto divisions = oneBlock ? wholeWord(words, 'D') : std::nullopt;
+  const auto depth = oneBlock ? incrementWord(ctx, words, 'D') : std::nullopt;
   if (code == kG73) {
-    reading.relief = {static_cast<double>(cycleLength(ctx, 5135)),
-                      static_cast<double>(cycleLength(ctx, 5136))};
-    reading.divisions = static_cast<int>(cycleSetting(ctx, 5137));
+    reading.relief = {
+        static_cast<double>(oneBlock ? lengthOr(ctx, words, 'I', 5135)
+                                     : cycleLength(ctx, 5135)),
+        static_cast<double>(oneBlock ? lengthOr(ctx, words, 'K', 5136)
+                                     : cycleLength(ctx, 5136))};
+    reading.divisions =
+        static_cast<int>(divisions.value_or(cycleSetting(ctx, 5137)));
     if (reading.divisions < 1) {
       ctx.shapeReading.code = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: {} divisions", writtenCode(ctx, code),
                                reading.divisions));
     }
+  } else if (code != kG70) {
+    reading.depth = depth.value_or(cycleLength(ctx, 5132));
+    reading.escape = cycleLength(ctx, 5133);
   }
   return 0;
 }

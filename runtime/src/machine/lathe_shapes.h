@@ -4,9 +4,11 @@
 // blocks ns to nf as they run after it: they move nothing (their moves
 // are the shape), and after nf the tool roughs the stock and returns to the
 // start point. G70 P Q finishes along a shape read before, or reads the one
-// that follows it. mbc reads a shape as it runs, so block ns must be the
-// first NC block after the cycle's; a program that jumps back to it stops
-// with MBC0001.
+// that follows it. In the Series 10/11 tape format (parameter 0001#1 FCV)
+// G71-G73 are one block: P Q U W with D (G71/G72: the depth; G73: the
+// divisions) and G73's I K, the rest from parameters. mbc reads a shape as
+// it runs, so block ns must be the first NC block after the cycle's; a
+// program that jumps back to it stops with MBC0001.
 #pragma once
 
 #include <optional>

@@ -505,6 +505,26 @@ mbrt_status readCommaWord(mbrt_ctx& ctx, const mbrt_word& word,
   return toLengthCounts(ctx, word, &motion.blendAmount);
 }
 
+/// A and D of the Series 10/11 format's one-block cycles: G76's tool angle,
+/// and the depth (G71, G72, G76), divisions (G73) or relief (G74, G75),
+/// which count least increments or times and take no decimal point.
+mbrt_status readSeriesTenWord(mbrt_ctx& ctx, const mbrt_word& word,
+                              Block& block) {
+  const double value = numeric(word.value);
+  if (word.letter == 'A') {
+    block.tenFormatA = value;
+    return 0;
+  }
+  if (word.kind == MBRT_WORD_DEC_LITERAL) {
+    return raise(ctx, AlarmId::IllegalDecimalPoint,
+                 fmt::format("D{}{}: D takes a whole number in G{}", value,
+                             value == std::trunc(value) ? "." : "",
+                             writtenLatheCode(ctx, block.nonModal)));
+  }
+  block.tenFormatD = value;
+  return 0;
+}
+
 mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   const char letter = word.letter;
   if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
@@ -520,10 +540,11 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
   }
-  if (block.nonModal == kLatheOwnCode + 760 &&
-      (letter == 'A' || letter == 'D') && seriesTenFormat(ctx)) {
-    (letter == 'A' ? block.tenFormatA : block.tenFormatD) = numeric(word.value);
-    return 0;
+  if (((letter == 'A' && block.nonModal == kLatheOwnCode + 760) ||
+       (letter == 'D' && block.nonModal >= kLatheOwnCode + 710 &&
+        block.nonModal <= kLatheOwnCode + 760)) &&
+      seriesTenFormat(ctx)) {
+    return readSeriesTenWord(ctx, word, block);
   }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
     // X after U in one block: the last of the two counts.
@@ -782,13 +803,6 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
     return raise(ctx, AlarmId::TooManyAddressCommands,
                  "a chamfer, corner R or ,A belongs to a G00-G03 move, not to "
                  "a cycle, a dwell or a reference return");
-  }
-  if (block.nonModal >= kLatheOwnCode + 710 &&
-      block.nonModal <= kLatheOwnCode + 750 && seriesTenFormat(ctx)) {
-    return raise(ctx, AlarmId::Unsupported,
-                 fmt::format("G{} in the Series 10/11 tape format (parameter "
-                             "0001#1 FCV): mbc reads only G70 and G76 in it",
-                             writtenLatheCode(ctx, block.nonModal)));
   }
   if (block.nonModal >= kLatheOwnCode + 700 &&
       block.nonModal <= kLatheOwnCode + 730) {
