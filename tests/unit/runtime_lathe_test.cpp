@@ -319,6 +319,24 @@ TEST(RuntimeLatheOffsets, G10WritesOffsets) {
   EXPECT_NEAR(combined.motions()[0].machine[0], -100.0, 1e-9);
 }
 
+// G10 L2 (and L20) write work offsets on a lathe too, not tool offset P:
+// G54 Z-300 puts program Z2 at machine Z-298; W adds in system A; P0 is the
+// external offset, which adds to every work coordinate system.
+TEST(RuntimeLatheOffsets, G10L2WritesWorkOffsets) {
+  Machine m(kOffsets);
+  ASSERT_EQ(m.block("G10 L2 P1 X0 Z-300."), 0);
+  ASSERT_EQ(m.block("G10 L2 P1 W2."), 0);
+  ASSERT_EQ(m.block("G10 L2 P0 Z-1."), 0);
+  EXPECT_EQ(m.read(2101), -0.02); // the profile's, not written
+  EXPECT_EQ(m.read(5222), -298.0);
+  EXPECT_EQ(m.read(5202), -1.0);
+  ASSERT_EQ(m.block("G54 G00 X20. Z2."), 0);
+  ASSERT_EQ(m.motions().size(), 1U);
+  EXPECT_NEAR(m.motions()[0].machine[1], -297.0, 1e-9);
+  EXPECT_NEAR(m.motions()[0].end[1], 2.0, 1e-9);
+  EXPECT_EQ(m.block("G10 L2 P7 Z0"), status(AlarmId::IllegalPInG10));
+}
+
 // G90 from A (X52 Z2): rapid to the cut's X, feed to the end, feed out in
 // X, rapid back; X alone repeats with the same Z; R tapers (the cut starts
 // at X + 2R).

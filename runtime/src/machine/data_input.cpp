@@ -36,8 +36,11 @@ mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   AxisCounts& offset = ctx.workOffsets[index];
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axes->axisMask >> axis & 1) != 0) {
+      // G91, or a lathe's U/W in G code system A, adds.
+      const bool adds = ctx.modal.incremental ||
+                        (words.axes->incrementalMask >> axis & 1) != 0;
       const Counts value = words.axes->axis[axis];
-      offset[axis] = ctx.modal.incremental ? offset[axis] + value : value;
+      offset[axis] = adds ? offset[axis] + value : value;
     }
   }
   resyncProgram(ctx); // the machine stays

@@ -397,6 +397,18 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
   return raise(ctx, AlarmId::ImproperGCode, gCodeText(tenths));
 }
 
+/// A lathe's G10 writes tool offsets (P X Z R Q), except G10 L2 and L20,
+/// which write work offsets as on a mill.
+bool writesWorkOffset(const mbrt_word* words, size_t count) {
+  double l = 0.0;
+  for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter == 'L') {
+      l = roundHalfAway(numeric(words[i].value));
+    }
+  }
+  return l == 2.0 || l == 20.0;
+}
+
 /// G codes take effect before every other word of the block: G20/G21 change
 /// how the block's own coordinates read.
 mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
@@ -446,6 +458,9 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
             applyGCode(ctx, next, static_cast<int>(tenths), block)) {
       return status;
     }
+  }
+  if (block.frames.code == kLatheG10 && writesWorkOffset(words, count)) {
+    block.frames.code = 100;
   }
   const bool inch = next.inch;
   next.inch = ctx.modal.inch;
