@@ -291,11 +291,16 @@ class Generator:
                                f"G96 S{self.rng.randint(50, 300)}", "G97",
                                "G99", "G98",
                                f"G04 {self.word('U')}"))]
-        if roll < 0.75:
+        if roll < 0.7:
             offset = self.rng.randint(1, 3)
             return [f"G10 P{self.pick((offset, 10000 + offset))} "
                     f"{self.word('X')} {self.word('Z')}",
                     f"T{self.rng.randint(1, 4):02d}{offset:02d}"]
+        if roll < 0.75:
+            # Work offsets, written as on a mill (W adds in system A).
+            return [f"G10 L2 P{self.rng.randint(0, 2)} "
+                    f"{self.pick(('Z', 'W'))}{self.length(-5, 5)}",
+                    self.pick(("G54", "G55")), f"G00 {self.word('Z')}"]
         if roll < 0.8:
             return [f"#{self.pick((2001, 2101, 2701, 2801, 10002, 15002))} = "
                     f"{self.expression(0, 1)}",
