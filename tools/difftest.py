@@ -250,7 +250,10 @@ class Generator:
         x, z = self.length(20, 60), self.length(-30, -5)
         if roll < 0.15:
             cycle = self.pick(("G90", "G92", "G94"))
-            taper = f" R{self.length(-2, 2)}" if self.chance(0.3) else ""
+            letter = ("R" if not self.series_ten else
+                      "K" if cycle == "G94" else "I")
+            taper = (f" {letter}{self.length(-2, 2)}" if self.chance(0.3)
+                     else "")
             lines = [f"G00 X70. Z5. S{self.rng.randint(200, 2000)}",
                      f"{cycle} X{x} Z{z}{taper} F{self.length(0.1, 2)}"]
             lines += [self.word("X") for _ in range(self.rng.randint(0, 2))]

@@ -93,6 +93,17 @@ TEST(RuntimeLatheSeriesTen, OneBlockG74G75) {
                   {"G97 S600 G00 X52. Z-20.", "G75 X40. Z-26. I2. K2.5 F0.05"});
 }
 
+TEST(RuntimeLatheSeriesTen, SingleCycleTaperIsIOrK) {
+  // G90 and G92 give the taper as I, G94 as K, where the standard format
+  // gives R.
+  expectSameCycle({"G97 S600 G00 X52. Z2.", "G90 X40. Z-20. R-2. F0.2", "X36.",
+                   "G00 X30. Z5.", "G92 X24. Z-15. R-1. F1.5", "G00 X60. Z2.",
+                   "G94 X20. Z-2. R-1. F0.2", "Z-4."},
+                  {"G97 S600 G00 X52. Z2.", "G90 X40. Z-20. I-2. F0.2", "X36.",
+                   "G00 X30. Z5.", "G92 X24. Z-15. I-1. F1.5", "G00 X60. Z2.",
+                   "G94 X20. Z-2. K-1. F0.2", "Z-4."});
+}
+
 TEST(RuntimeLatheSeriesTen, Alarms) {
   Machine m(kSeriesTen);
   ASSERT_EQ(m.block("G97 S600 M03 G00 X26. Z5."), 0);

@@ -3,7 +3,8 @@
 // in Z. G92 the same with a thread (F the lead) and rapid returns. G94:
 // rapid in Z to the face, feed in X to the end point, feed back out in Z,
 // rapid back in X. The taper R is the cut's start less its end: a radius
-// (G90, G92) or along Z (G94).
+// (G90, G92) or along Z (G94); the Series 10/11 format writes it as I
+// (G90, G92) or K (G94).
 //
 // Under tool nose radius compensation (0i-TF manual, canned cycles and tool
 // nose radius compensation) the vector is cancelled at the start point, the
@@ -14,6 +15,7 @@
 
 #include "cutter_comp.h"
 #include "lathe_codes.h"
+#include "lathe_settings.h"
 
 namespace mbc::rt {
 
@@ -69,10 +71,15 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
     data.hasZ = true;
     data.z = given[z];
   }
-  if (words.hasR) {
+  const int cycle = ctx.modal.motion;
+  // The Series 10/11 format (0001#1 FCV) writes the taper as I (G90, G92)
+  // or K (G94).
+  const int taperIndex = cycle == kFacingCycleMotion ? 2 : 0;
+  if (seriesTenFormat(ctx) && (words.centerMask >> taperIndex & 1) != 0) {
+    data.r = words.center[static_cast<std::size_t>(taperIndex)];
+  } else if (words.hasR) {
     data.r = words.r;
   }
-  const int cycle = ctx.modal.motion;
   AxisCounts end = start;
   end[x] = data.hasX ? data.x : start[x];
   end[z] = data.hasZ ? data.z : start[z];
