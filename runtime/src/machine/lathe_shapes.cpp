@@ -269,11 +269,14 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
                                writtenCode(ctx, code)));
     }
     if (reading.typeTwo) {
+      const char other = code == kG71 ? 'Z' : 'X';
       return raise(ctx, AlarmId::Unsupported,
                    fmt::format("G{} type II (the shape's first block N{} "
-                               "gives {} as well: pockets)",
-                               writtenCode(ctx, code), reading.ns,
-                               code == kG71 ? 'Z' : 'X'));
+                               "gives {} as well, which makes the control "
+                               "cut pockets; mbc cuts type I, whose first "
+                               "block gives {} alone)",
+                               writtenCode(ctx, code), reading.ns, other,
+                               code == kG71 ? 'X' : 'Z'));
     }
   }
   Shape cut = shape;
