@@ -32,10 +32,21 @@ constexpr char commaWordAddress(char letter) {
   return static_cast<char>(letter - 'a' + 'A');
 }
 
-/// "X", or ",C" for a comma word: an address as the program writes it.
+/// Appends "X", or ",C" for a comma word: an address as the program
+/// writes it.
+inline void appendAddressText(std::string& out, char letter) {
+  if (isCommaWord(letter)) {
+    out += ',';
+    out += commaWordAddress(letter);
+    return;
+  }
+  out += letter;
+}
+
 inline std::string addressText(char letter) {
-  return isCommaWord(letter) ? std::string{',', commaWordAddress(letter)}
-                             : std::string(1, letter);
+  std::string text;
+  appendAddressText(text, letter);
+  return text;
 }
 
 /// Specification I (spec §5.2): the local variable a G65 argument letter

@@ -290,6 +290,9 @@ struct CornerInsertion {
   bool openEnd = false;
   double angle = 0.0;
   int plane = 17; // G17-G19 when the move was held
+
+  /// ,C ,R or an open ,A (corner_blends.h), not a 90 degree form.
+  bool anyAngle() const { return blend != 0 || openEnd; }
 };
 
 /// The state a lathe's shape cycle puts back after running blocks or moves

@@ -47,6 +47,12 @@ std::uint32_t planeBits(PlaneIndex plane) {
   return (std::uint32_t{1} << plane.p) | (std::uint32_t{1} << plane.q);
 }
 
+/// A ,A line that gives neither coordinate of the plane: the next block
+/// gives its end point.
+bool opensAngledLine(const MotionWords& words, PlaneIndex plane) {
+  return words.angle && (words.axisMask & planeBits(plane)) == 0;
+}
+
 /// Whether `to` differs from `from` on an axis out of the plane.
 bool leavesPlane(const mbrt_ctx& ctx, const AxisCounts& from,
                  const AxisCounts& to, PlaneIndex plane) {
@@ -389,8 +395,7 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
 } // namespace
 
 bool holdsForNextBlock(const mbrt_ctx& ctx, const MotionWords& words) {
-  return words.blend != 0 ||
-         (words.angle && (words.axisMask & planeBits(planeIndex(ctx))) == 0);
+  return words.blend != 0 || opensAngledLine(words, planeIndex(ctx));
 }
 
 mbrt_status endAngledLine(mbrt_ctx& ctx, const MotionWords& words,
@@ -442,7 +447,7 @@ mbrt_status holdBlendMove(mbrt_ctx& ctx, const MotionWords& words,
     return missingPlaneAxis(ctx);
   }
   const int mode = ctx.modal.motion;
-  const bool open = words.angle && (words.axisMask & planeBits(plane)) == 0;
+  const bool open = opensAngledLine(words, plane);
   if (!open && mode != 1 && mode != 2 && mode != 3) {
     return raise(ctx, AlarmId::TooManyAddressCommands,
                  fmt::format(",{} ends a G01, G02 or G03 move, not G{:02}",

@@ -125,7 +125,7 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
                             const AxisCounts& target) {
-  if (ctx.corner.blend != 0 || ctx.corner.openEnd) {
+  if (ctx.corner.anyAngle()) {
     return moveAfterBlend(ctx, words, target);
   }
   CornerInsertion held = ctx.corner;
@@ -218,7 +218,7 @@ void releaseCornerMove(mbrt_ctx& ctx) {
     return;
   }
   ctx.corner.pending = false;
-  if (held.blend != 0 || held.openEnd) {
+  if (held.anyAngle()) {
     runHeldAsProgrammed(ctx, held);
     return;
   }

@@ -85,8 +85,7 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   const Counts peck = std::llabs(code == kG74 ? q : p);
   const Counts shift = std::llabs(code == kG74 ? p : q);
   const Counts relief =
-      oneBlock ? std::llabs(static_cast<Counts>(words.d.value_or(0.0))) *
-                     perIncrement
+      oneBlock      ? std::llabs(incrementCounts(ctx, words.d.value_or(0.0)))
       : motion.hasR ? std::llabs(motion.r)
                     : 0;
   const Counts back = cycleLength(ctx, 5139);
@@ -202,8 +201,7 @@ mbrt_status seriesTenThreadCycle(mbrt_ctx& ctx, const CycleWords& words) {
   ThreadWords thread;
   thread.taper = centerWord(motion, 0);
   thread.height = centerWord(motion, 2);
-  thread.first = static_cast<Counts>(roundHalfAway(words.d.value_or(0.0))) *
-                 ctx.countsPerIncrement();
+  thread.first = incrementCounts(ctx, words.d.value_or(0.0));
   thread.angle = words.a.value_or(cycleSetting(ctx, 5143));
   return cutThread(ctx, motion, thread);
 }

@@ -27,6 +27,13 @@ inline bool seriesTenFormat(const mbrt_ctx& ctx) {
   return ctx.profile.lathe() && ctx.profile.parameterBit(1, 1);
 }
 
+/// A word of the Series 10/11 format's one-block cycles that counts least
+/// increments (D), in counts.
+inline Counts incrementCounts(const mbrt_ctx& ctx, double increments) {
+  return static_cast<Counts>(roundHalfAway(increments)) *
+         ctx.countsPerIncrement();
+}
+
 inline void keepCycleLength(mbrt_ctx& ctx, int parameter, Counts counts) {
   ctx.cycleSettings[parameter] =
       static_cast<double>(counts) / ctx.countsPerMm();

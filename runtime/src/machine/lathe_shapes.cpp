@@ -47,20 +47,12 @@ std::optional<double> wholeWord(const FrameWords& words, char letter) {
                          : std::nullopt;
 }
 
-/// A word of the Series 10/11 format's one-block cycles that counts least
-/// increments (readWord refuses a decimal point in it).
-std::optional<Counts> incrementWord(const mbrt_ctx& ctx,
-                                    const FrameWords& words, char letter) {
-  const std::optional<double> value = wholeWord(words, letter);
-  return value ? std::optional(static_cast<Counts>(*value) *
-                               ctx.countsPerIncrement())
-               : std::nullopt;
-}
-
-/// A length word in counts, else the setting `parameter`.
-Counts lengthOr(const mbrt_ctx& ctx, const FrameWords& words, char letter,
-                int parameter) {
-  const std::optional<double> units = lengthWord(ctx, words, letter);
+/// A length setting in counts: the block's word `letter` when the cycle
+/// is one block (the Series 10/11 format) and gives it, else `parameter`.
+Counts lengthSetting(const mbrt_ctx& ctx, const FrameWords& words,
+                     bool oneBlock, char letter, int parameter) {
+  const std::optional<double> units =
+      oneBlock ? lengthWord(ctx, words, letter) : std::nullopt;
   return units ? static_cast<Counts>(roundToLengthCounts(ctx, *units))
                : cycleLength(ctx, parameter);
 }
@@ -354,16 +346,14 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
   if (const auto w = lengthWord(ctx, words, 'W')) {
     reading.allowance.z = roundToAxisCounts(ctx, z, *w);
   }
-  const auto divisions = oneBlock ? wholeWord(words, 'D') : std::nullopt;
-  const auto depth = oneBlock ? incrementWord(ctx, words, 'D') : std::nullopt;
+  // D: G73's divisions, G71/G72's depth in least increments.
+  const std::optional<double> d =
+      oneBlock ? wholeWord(words, 'D') : std::nullopt;
   if (code == kG73) {
     reading.relief = {
-        static_cast<double>(oneBlock ? lengthOr(ctx, words, 'I', 5135)
-                                     : cycleLength(ctx, 5135)),
-        static_cast<double>(oneBlock ? lengthOr(ctx, words, 'K', 5136)
-                                     : cycleLength(ctx, 5136))};
-    reading.divisions =
-        static_cast<int>(divisions.value_or(cycleSetting(ctx, 5137)));
+        static_cast<double>(lengthSetting(ctx, words, oneBlock, 'I', 5135)),
+        static_cast<double>(lengthSetting(ctx, words, oneBlock, 'K', 5136))};
+    reading.divisions = static_cast<int>(d.value_or(cycleSetting(ctx, 5137)));
     if (reading.divisions < 1) {
       ctx.shapeReading.code = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
@@ -371,7 +361,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
                                reading.divisions));
     }
   } else if (code != kG70) {
-    reading.depth = depth.value_or(cycleLength(ctx, 5132));
+    reading.depth = d ? incrementCounts(ctx, *d) : cycleLength(ctx, 5132);
     reading.escape = cycleLength(ctx, 5133);
   }
   return 0;

@@ -520,46 +520,55 @@ mbrt_status readCommaWord(mbrt_ctx& ctx, const mbrt_word& word,
   return toLengthCounts(ctx, word, &motion.blendAmount);
 }
 
-/// A and D of the Series 10/11 format's one-block cycles: G76's tool angle,
-/// and the depth (G71, G72, G76), divisions (G73) or relief (G74, G75),
-/// which count least increments or times and take no decimal point.
-mbrt_status readSeriesTenWord(mbrt_ctx& ctx, const mbrt_word& word,
-                              Block& block) {
-  const double value = numeric(word.value);
-  if (word.letter == 'A') {
-    block.tenFormatA = value;
-    return 0;
-  }
-  if (word.kind == MBRT_WORD_DEC_LITERAL) {
-    return raise(ctx, AlarmId::IllegalDecimalPoint,
-                 fmt::format("D{}{}: D takes a whole number in G{}", value,
-                             value == std::trunc(value) ? "." : "",
-                             writtenLatheCode(ctx, block.nonModal)));
-  }
-  block.tenFormatD = value;
-  return 0;
-}
-
-mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
+/// A word a one-shot code reads its own way, or nothing for the common
+/// reading: G04's X and U (seconds), and in the Series 10/11 format the A
+/// (G76's tool angle) and D (G71-G76: depth, divisions or relief, least
+/// increments or times without a decimal point) of one-block cycles.
+std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
+                                           Block& block) {
   const char letter = word.letter;
+  const double value = numeric(word.value);
   if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
     // X1.5 is 1.5 s; X1500 counts milliseconds, like P, unless literals
     // are whole units (3401#0 DPI).
     block.dwellSeconds =
         word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
-            ? numeric(word.value) / 1000.0
-            : numeric(word.value);
+            ? value / 1000.0
+            : value;
     return 0;
+  }
+  const bool seriesTenCycle = block.nonModal >= kLatheOwnCode + 710 &&
+                              block.nonModal <= kLatheOwnCode + 760 &&
+                              seriesTenFormat(ctx);
+  if (seriesTenCycle && letter == 'A' &&
+      block.nonModal == kLatheOwnCode + 760) {
+    block.tenFormatA = value;
+    return 0;
+  }
+  if (seriesTenCycle && letter == 'D') {
+    if (word.kind == MBRT_WORD_DEC_LITERAL) {
+      return raise(ctx, AlarmId::IllegalDecimalPoint,
+                   fmt::format("D{}{}: D takes a whole number in G{}", value,
+                               value == std::trunc(value) ? "." : "",
+                               writtenLatheCode(ctx, block.nonModal)));
+    }
+    block.tenFormatD = value;
+    return 0;
+  }
+  return std::nullopt;
+}
+
+mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
+  const char letter = word.letter;
+  if (block.nonModal != 0) { // most blocks have no one-shot code
+    if (const std::optional<mbrt_status> status =
+            readOneShotWord(ctx, word, block)) {
+      return *status;
+    }
   }
   if (letter == 'K' && ctx.modal.cycle != 0) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
-  }
-  if (((letter == 'A' && block.nonModal == kLatheOwnCode + 760) ||
-       (letter == 'D' && block.nonModal >= kLatheOwnCode + 710 &&
-        block.nonModal <= kLatheOwnCode + 760)) &&
-      seriesTenFormat(ctx)) {
-    return readSeriesTenWord(ctx, word, block);
   }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
     // X after U in one block: the last of the two counts.

@@ -45,16 +45,6 @@ bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
          letter == 'Q' || isCommaWord(letter);
 }
 
-/// "X", or ",C" for a comma word.
-void appendAddress(std::string& out, char letter) {
-  if (isCommaWord(letter)) {
-    out += ',';
-    out += commaWordAddress(letter);
-    return;
-  }
-  out += letter;
-}
-
 /// "12.5", "12.": a coordinate that reads as one under any 3401#0 DPI.
 void appendUnitsText(std::string& out, double value, int decimals) {
   const std::size_t start = out.size();
@@ -78,7 +68,7 @@ void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
       word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
           ? value
           : roundToCounts(value, scale);
-  appendAddress(out, word.letter);
+  appendAddressText(out, word.letter);
   appendUnitsText(out, counts / scale, axisDecimals(ctx, axis));
 }
 

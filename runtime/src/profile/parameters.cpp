@@ -47,14 +47,12 @@ constexpr std::array kParameters = {
     ParameterSpec{5139, 5141, 0, 1e6, 0, false},
     ParameterSpec{5142, 5142, 1, 99, 1, true},
     ParameterSpec{5143, 5143, 0, 120, 0, true},
-    ParameterSpec{5001, 5001, 0, 255, 0, true}, // #0 TLC, #1 TLB
-    ParameterSpec{5003, 5003, 0, 255, 0, true}, // #0 SUP, #1 SUV: CRC start
-    ParameterSpec{5008, 5008, 0, 255, 0, true}, // #1 CNC, #3 CNV: CRC check
-    ParameterSpec{5101, 5101, 0, 255, 0,
-                  true}, // #2 RTR (lathe), #4 RD1, #5 RD2
-    ParameterSpec{5114, 5115, 0, 1000, 0.1,
-                  false}, // G73 (lathe G83) retract, G83 gap
-    ParameterSpec{5200, 5200, 0, 255, 0, true},       // #0 G84, #5 PCP: rigid
+    ParameterSpec{5001, 5001, 0, 255, 0, true},     // #0 TLC, #1 TLB
+    ParameterSpec{5003, 5003, 0, 255, 0, true},     // #0 SUP, #1 SUV: CRC start
+    ParameterSpec{5008, 5008, 0, 255, 0, true},     // #1 CNC, #3 CNV: CRC check
+    ParameterSpec{5101, 5101, 0, 255, 0, true},     // #2 RTR, #4 RD1, #5 RD2
+    ParameterSpec{5114, 5115, 0, 1000, 0.1, false}, // peck retract, G83 gap
+    ParameterSpec{5200, 5200, 0, 255, 0, true},     // #0 G84, #5 PCP: rigid
     ParameterSpec{5210, 5210, 0, kMaxCode, 29, true}, // rigid tapping M code
     ParameterSpec{5213, 5213, 0, 1000, 0.1, false},   // rigid peck return
     ParameterSpec{5400, 5400, 0, 255, 0, true},       // #0 RIN, #6 XSC, #7 SCR
