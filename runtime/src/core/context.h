@@ -149,6 +149,17 @@ struct Frames {
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
 };
 
+/// Where a block's points go on the machine: its frames (G52, G92, mirror,
+/// scaling, rotation, the tool length offset, a lathe's tool offsets) and
+/// the values of its work offset and of the external offset. A move that
+/// waits for later blocks keeps the placement of its own block, whatever
+/// they change (frames.h PlacedAs).
+struct Placement {
+  Frames frames;
+  AxisCounts workOffset{};
+  AxisCounts external{};
+};
+
 /// Where a move was programmed and how fast it goes: the block's data, kept
 /// with a move that cutter compensation holds while later blocks run.
 struct MoveOrigin {
@@ -190,8 +201,7 @@ struct HeldMove {
   int side = 1;        // 1: tool left of the path, -1: right
   MoveOrigin origin;   // origin.program is set from `program` as it leaves
   std::string program; // the program it was read in
-  int lengthAxis = -1; // the tool length offset of the block it was read in
-  Counts length = 0;
+  Placement placement; // of the block it was read in
   // A lathe's imaginary tip vector, added to the move's points so that
   // the offset path is the tip's (cutter_comp.cpp followTip).
   AxisCounts tipShift{};
@@ -262,6 +272,19 @@ template <class Fn> struct Sink {
   void* user = nullptr;
 };
 
+/// The state of the block a held chamfer or corner R was read in, which
+/// its moves run in while the next block is read: the modal codes (F,
+/// G94/G95, the plane, G40-G42...), the placement, the D and S in force,
+/// and whether the block gave G40-G42 or F (held_block.h).
+struct BlockState {
+  ModalState modal;
+  Placement placement;
+  double dWord = 0.0; // #4107
+  double sWord = 0.0; // #4119
+  bool codeInBlock = false;
+  bool feedInBlock = false;
+};
+
 /// Chamfering and corner R (lathe_corners.h): the G01 block with I, K
 /// (C) or R holds its move until the next block tells where the corner
 /// goes. Program coordinates; `amount` signed along `toward`.
@@ -274,9 +297,9 @@ struct CornerInsertion {
   int along = -1;      // the axis the held move runs on
   int toward = -1;     // the axis of the next move
   Counts amount = 0;
-  double feed = 0.0;
   const char* file = nullptr; // the held block's
   int line = 0;
+  BlockState block; // the held block's state, which its moves run in
   // ,C or ,R (corner_blends.h): 'C' or 'R', at any angle, after a line or
   // an arc about `center` (the plane's axes, counts); 0 for the 90 degree
   // forms above.
@@ -289,7 +312,6 @@ struct CornerInsertion {
   // and ,A give the corner.
   bool openEnd = false;
   double angle = 0.0;
-  int plane = 17; // G17-G19 when the move was held
 
   /// ,C ,R or an open ,A (corner_blends.h), not a 90 degree form.
   bool anyAngle() const { return blend != 0 || openEnd; }

@@ -18,6 +18,7 @@
 #include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frames.h"
+#include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_offset_vars.h"
 #include "motion.h"
@@ -428,6 +429,12 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
   }
   if (const mbrt_status status =
           refuseUnderCompensation(ctx, "writing a work offset")) {
+    return status;
+  }
+  if (const mbrt_status status =
+          offset == ctx.modal.workOffset || offset == kExternalOffset
+              ? refuseUnderHeldCorner(ctx, "writing the work offset in force")
+              : 0) {
     return status;
   }
   const double counts = roundToAxisCounts(ctx, axis, numeric(value));

@@ -376,9 +376,9 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
   held.from = start;
   held.corner = target;
   held.amount = words.blendAmount;
-  held.feed = ctx.modal.feed;
   held.file = ctx.block.file;
   held.line = ctx.block.line;
+  held.block = captureBlock(ctx);
   held.blend = words.blend;
   held.rapid = ctx.modal.motion == 0;
   held.arc = move.arc;
@@ -386,7 +386,6 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
   held.center = {move.center.x, move.center.y};
   held.openEnd = open;
   held.angle = words.angle.value_or(0.0);
-  held.plane = ctx.modal.plane;
   if (!open) {
     ctx.program = target;
   }
@@ -470,11 +469,12 @@ mbrt_status moveAfterBlend(mbrt_ctx& ctx, const MotionWords& words,
   CornerInsertion held = ctx.corner;
   ctx.corner.pending = false;
   const PlaneIndex plane = planeIndex(ctx);
-  if (ctx.modal.plane != held.plane) {
+  if (ctx.modal.plane != held.block.modal.plane) {
     return raise(ctx, AlarmId::MissingMoveAfterCorner,
                  fmt::format("the block after the chamfer, corner R or ,A "
                              "line of line {} changes the plane (G{} to G{})",
-                             held.line, held.plane, ctx.modal.plane));
+                             held.line, held.block.modal.plane,
+                             ctx.modal.plane));
   }
   if (held.openEnd) {
     if (const mbrt_status status = closeAngledLine(ctx, held, words, target)) {

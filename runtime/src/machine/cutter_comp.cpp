@@ -26,8 +26,6 @@ namespace mbc::rt {
 
 namespace {
 
-constexpr int kLastDIndex = 6; // #4107: the last D
-
 PlanePoint pointOf(const AxisCounts& position, PlaneIndex plane) {
   return {static_cast<double>(position[plane.p]),
           static_cast<double>(position[plane.q])};
@@ -304,33 +302,6 @@ void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
   }
 }
 
-/// While a held move leaves, the tool length offset of the block it was
-/// read in: the control had converted it before a later G43, G44 or G49
-/// was read (16/18-MC manual: such a change counts as a change of the
-/// offset value, which acts from the block that gives it).
-class LengthOfMove {
-public:
-  LengthOfMove(mbrt_ctx& ctx, const HeldMove& move)
-      : frames_(ctx.frames), axis_(frames_.lengthAxis),
-        length_(frames_.length) {
-    frames_.lengthAxis = move.lengthAxis;
-    frames_.length = move.length;
-  }
-
-  LengthOfMove(const LengthOfMove&) = delete;
-  LengthOfMove& operator=(const LengthOfMove&) = delete;
-
-  ~LengthOfMove() {
-    frames_.lengthAxis = axis_;
-    frames_.length = length_;
-  }
-
-private:
-  Frames& frames_;
-  int axis_;
-  Counts length_;
-};
-
 /// The held move leaves along `points` (Corner), then the moves without
 /// plane motion read after it; PS0041 instead when its tool path
 /// interferes (`check`), the tool standing at the end of the move before.
@@ -343,6 +314,9 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
   held.swap(state.held);
   state.stillBlocks = 0;
   const HeldMove& move = held.front();
+  // The control had placed the move before later blocks changed offsets
+  // (16/18-MC manual: a new offset acts from the block that gives it).
+  const PlacedAs placed(ctx, move.placement);
   const PlaneIndex plane = planeIndex(ctx);
   const PlanePoint from = pointOf(toolPosition(ctx), plane);
   if (check && interferes(ctx, move, from, points.front())) {
@@ -356,7 +330,6 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
                                move.arc ? "arc" : "move",
                                move.offset / ctx.scale()));
   }
-  const LengthOfMove length(ctx, move);
   const MoveOrigin origin = originOf(move);
   const AxisCounts first = placeAt(move, plane, points.front());
   const bool fullCircle =
@@ -376,7 +349,7 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
     }
   }
   for (std::size_t i = 1; i < held.size(); ++i) {
-    const LengthOfMove stillLength(ctx, held[i]);
+    const PlacedAs stillPlaced(ctx, held[i].placement);
     moveStill(ctx, held[i]);
   }
   return 0;
@@ -555,8 +528,7 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   }
   move.origin = blockOrigin(ctx);
   move.program = move.origin.program;
-  move.lengthAxis = ctx.frames.lengthAxis;
-  move.length = ctx.frames.length;
+  move.placement = placementOf(ctx);
   move.still = !move.arc &&
                pointOf(move.start, plane).x == pointOf(move.end, plane).x &&
                pointOf(move.start, plane).y == pointOf(move.end, plane).y;

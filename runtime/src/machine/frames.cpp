@@ -155,6 +155,24 @@ void resyncProgram(mbrt_ctx& ctx) {
                     : local;
 }
 
+Placement placementOf(const mbrt_ctx& ctx) {
+  return {ctx.frames, ctx.workOffsets[ctx.modal.workOffset],
+          ctx.workOffsets[kExternalOffset]};
+}
+
+PlacedAs::PlacedAs(mbrt_ctx& ctx, const Placement& placement)
+    : ctx_(ctx), own_(placementOf(ctx)), workOffset_(ctx.modal.workOffset) {
+  ctx.frames = placement.frames;
+  ctx.workOffsets[workOffset_] = placement.workOffset;
+  ctx.workOffsets[kExternalOffset] = placement.external;
+}
+
+PlacedAs::~PlacedAs() {
+  ctx_.frames = own_.frames;
+  ctx_.workOffsets[kExternalOffset] = own_.external;
+  ctx_.workOffsets[workOffset_] = own_.workOffset;
+}
+
 ArcFrame arcFrame(const mbrt_ctx& ctx, int firstAxis, int secondAxis) {
   const Frames& frames = ctx.frames;
   ArcFrame arc;

@@ -32,6 +32,25 @@ AxisCounts localPosition(const mbrt_ctx& ctx);
 /// position that now names the control point.
 void resyncProgram(mbrt_ctx& ctx);
 
+/// The placement in force (context.h).
+Placement placementOf(const mbrt_ctx& ctx);
+
+/// While it lives, the context places points as `placement` does, with the
+/// work offset its modal state selects: a held move leaves in the placement
+/// of its own block. The context's own comes back after.
+class PlacedAs {
+public:
+  PlacedAs(mbrt_ctx& ctx, const Placement& placement);
+  ~PlacedAs();
+  PlacedAs(const PlacedAs&) = delete;
+  PlacedAs& operator=(const PlacedAs&) = delete;
+
+private:
+  mbrt_ctx& ctx_;
+  Placement own_;
+  int workOffset_;
+};
+
 /// How an arc in `plane` looks in the workpiece frame: its radius is
 /// multiplied by `scale` and, when `reversed`, it turns the other way.
 /// `supported` is false when mirror, scaling or rotation would make it an

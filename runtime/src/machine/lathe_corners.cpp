@@ -116,9 +116,9 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
                     static_cast<double>(std::abs(amount)) / ctx.scale()));
   }
   CornerInsertion& held = ctx.corner;
-  held = CornerInsertion{true,           true,           words.hasR,    start,
-                         target,         along,          toward,        amount,
-                         ctx.modal.feed, ctx.block.file, ctx.block.line};
+  held = CornerInsertion{
+      true,   true,   words.hasR,     start,          target,           along,
+      toward, amount, ctx.block.file, ctx.block.line, captureBlock(ctx)};
   ctx.program = target;
   return 0;
 }

@@ -10,26 +10,10 @@
 #pragma once
 
 #include "context.h"
+#include "held_block.h"
 #include "motion.h"
 
 namespace mbc::rt {
-
-/// Runs `moves` as the held block: its F, file and line.
-template <class Moves>
-mbrt_status asHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held,
-                        Moves moves) {
-  const double feed = ctx.modal.feed;
-  const char* file = ctx.block.file;
-  const int line = ctx.block.line;
-  ctx.modal.feed = held.feed;
-  ctx.block.file = held.file;
-  ctx.block.line = held.line;
-  const mbrt_status status = moves();
-  ctx.modal.feed = feed;
-  ctx.block.file = file;
-  ctx.block.line = line;
-  return status;
-}
 
 /// PS0021 for a corner or ,A line in a plane the machine lacks an axis of.
 mbrt_status missingPlaneAxis(mbrt_ctx& ctx);

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "cutter_comp.h"
 #include "frames.h"
+#include "held_block.h"
 
 namespace mbc::rt {
 
@@ -39,22 +41,36 @@ mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved) {
   }
   Frames& frames = ctx.frames;
   const AxisCounts wearBefore = frames.toolWear;
-  frames.toolWearNumber = static_cast<int>(number);
   if (number == 0.0) {
+    frames.toolWearNumber = 0;
     frames.toolWear = AxisCounts{};
   } else {
-    frames.toolGeometryNumber = static_cast<int>(number);
     const LatheOffset& offset =
         ctx.latheOffsets[static_cast<std::size_t>(number)];
-    frames.toolGeometry =
+    const AxisCounts geometry =
         offsetCounts(ctx, offset.xGeometry, offset.yGeometry, offset.zGeometry);
+    const bool newGeometry = geometry != frames.toolGeometry;
+    if (newGeometry) {
+      // The geometry offset moves the coordinate system, which a held
+      // move's corner or offset vector cannot span.
+      const std::string change = fmt::format(
+          "T{} (another geometry offset: a new coordinate system)", t);
+      if (const mbrt_status status = refuseUnderCompensation(ctx, change)) {
+        return status;
+      }
+      if (const mbrt_status status = refuseUnderHeldCorner(ctx, change)) {
+        return status;
+      }
+    }
+    frames.toolWearNumber = static_cast<int>(number);
+    frames.toolGeometryNumber = static_cast<int>(number);
+    frames.toolGeometry = geometry;
+    if (newGeometry) {
+      // The tool stays: the program position moves with the system.
+      resyncProgram(ctx);
+    }
     frames.toolWear =
         offsetCounts(ctx, offset.xWear, offset.yWear, offset.zWear);
-    // The tool stays: the geometry offset is a new coordinate system.
-    const AxisCounts wear = frames.toolWear;
-    frames.toolWear = wearBefore;
-    resyncProgram(ctx);
-    frames.toolWear = wear;
   }
   *moved = frames.toolWear != wearBefore;
   return 0;

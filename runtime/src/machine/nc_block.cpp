@@ -15,6 +15,7 @@
 #include "frame_codes.h"
 #include "frames.h"
 #include "g_codes.h"
+#include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_corners.h"
 #include "lathe_repetitive.h"
@@ -468,8 +469,12 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   next.cycle = ctx.modal.cycle;
   const bool newOrigin = next.workOffset != ctx.modal.workOffset;
   if (newOrigin || inch != ctx.modal.inch) {
-    if (const mbrt_status status = refuseUnderCompensation(
-            ctx, newOrigin ? "a work coordinate system change" : "G20/G21")) {
+    const char* change =
+        newOrigin ? "a work coordinate system change" : "G20/G21";
+    if (const mbrt_status status = refuseUnderCompensation(ctx, change)) {
+      return status;
+    }
+    if (const mbrt_status status = refuseUnderHeldCorner(ctx, change)) {
       return status;
     }
   }

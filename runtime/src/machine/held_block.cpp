@@ -1,0 +1,55 @@
+// The state a held chamfer or corner R runs in (held_block.h).
+#include "held_block.h"
+
+#include <fmt/format.h>
+
+#include "cutter_comp.h"
+#include "motion.h"
+
+namespace mbc::rt {
+
+BlockState captureBlock(const mbrt_ctx& ctx) {
+  return {ctx.modal,
+          placementOf(ctx),
+          ctx.lastWords[kLastDIndex],
+          ctx.lastWords[kLastSIndex],
+          ctx.compensation.codeInBlock,
+          ctx.feedInBlock};
+}
+
+InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
+    : ctx_(ctx), own_(captureBlock(ctx)), file_(ctx.block.file),
+      line_(ctx.block.line) {
+  const BlockState& block = held.block;
+  ctx.modal = block.modal;
+  ctx.lastWords[kLastDIndex] = block.dWord;
+  ctx.lastWords[kLastSIndex] = block.sWord;
+  ctx.compensation.codeInBlock = block.codeInBlock;
+  ctx.feedInBlock = block.feedInBlock;
+  ctx.block.file = held.file;
+  ctx.block.line = held.line;
+  placed_.emplace(ctx, block.placement);
+}
+
+InHeldBlock::~InHeldBlock() {
+  placed_.reset();
+  ctx_.modal = own_.modal;
+  ctx_.lastWords[kLastDIndex] = own_.dWord;
+  ctx_.lastWords[kLastSIndex] = own_.sWord;
+  ctx_.compensation.codeInBlock = own_.codeInBlock;
+  ctx_.feedInBlock = own_.feedInBlock;
+  ctx_.block.file = file_;
+  ctx_.block.line = line_;
+}
+
+mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what) {
+  if (!ctx.corner.pending) {
+    return 0;
+  }
+  return raise(ctx, AlarmId::Unsupported,
+               fmt::format("{} between a chamfer, corner R or ,A line (line "
+                           "{}) and the move that makes its corner",
+                           what, ctx.corner.line));
+}
+
+} // namespace mbc::rt
