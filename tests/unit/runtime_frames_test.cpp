@@ -86,6 +86,24 @@ TEST(RuntimeFrames, RotatedMovesDoNotDrift) {
   EXPECT_EQ(endOf(m, 1), 0.5);
 }
 
+// A block moves only the axes it commands. The tool stood at X47.001
+// Y50.003 when the frame came; the program position found from it is
+// rounded, and mapping it forward again moved X or Y an increment with
+// every Z move.
+TEST(RuntimeFrames, AxesABlockLeavesAloneStay) {
+  for (const char* frame : {"G68 X0 Y0 R30.", "G51 X0 Y0 P3.",
+                            "G51 X0 Y0 I-3. J0.7", "G51.1 X10.0005"}) {
+    Machine m;
+    blocks(m, {"G90 G00 X47.001 Y50.003 Z0", frame, "G91 G01 Z-1. F100",
+               "G81 Z-5. R1.", "G80 G90 G00 Z5.", "G91 G00 Z0"});
+    ASSERT_GT(m.motions().size(), 4U) << frame;
+    for (const mbrt_motion& move : m.motions()) {
+      EXPECT_EQ(move.end[0], 47.001) << frame << " line " << move.line;
+      EXPECT_EQ(move.end[1], 50.003) << frame << " line " << move.line;
+    }
+  }
+}
+
 TEST(RuntimeFrames, ArcInAnotherPlaneThanTheRotation) {
   Machine m;
   ASSERT_EQ(m.block("G68 X0 Y0 R45."), 0);

@@ -145,6 +145,13 @@ struct Frames {
   AxisCounts toolWear{};
   int toolGeometryNumber = 0; // the offsets they came from (0: none)
   int toolWearNumber = 0;
+  // Under mirror, scaling or rotation: the program position the last
+  // resync found (rounded back from the tool) and the workpiece point it
+  // stands for, so that an axis a block leaves alone stays where the tool
+  // is rather than be rounded through the transform again (frames.cpp).
+  bool synced = false;
+  AxisCounts syncedProgram{};
+  AxisCounts syncedWork{};
 
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
 };

@@ -92,12 +92,39 @@ AxisValues transformPoint(const mbrt_ctx& ctx, AxisValues point) {
   return point;
 }
 
+namespace {
+
+/// Whether `program` leaves `axis` where the last resync found the tool:
+/// its coordinate is the same, and under rotation, when it is one of the
+/// rotated pair, its partner's too.
+bool staysSynced(const Frames& frames, const AxisCounts& program, int axis) {
+  const auto same = [&](int a) {
+    return program[a] == frames.syncedProgram[a];
+  };
+  if (!same(axis)) {
+    return false;
+  }
+  const int p = frames.rotationAxes[0];
+  const int q = frames.rotationAxes[1];
+  return !frames.rotation || (axis != p && axis != q) || (same(p) && same(q));
+}
+
+} // namespace
+
 AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
-  AxisCounts work = ctx.frames.transforms()
-                        ? toCounts(transformPoint(ctx, toValues(program)))
-                        : program;
+  const Frames& frames = ctx.frames;
+  if (!frames.transforms()) {
+    AxisCounts work = program;
+    for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+      work[axis] += frames.local[axis];
+    }
+    return work;
+  }
+  AxisCounts work = toCounts(transformPoint(ctx, toValues(program)));
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    work[axis] += ctx.frames.local[axis];
+    work[axis] = frames.synced && staysSynced(frames, program, axis)
+                     ? frames.syncedWork[axis]
+                     : work[axis] + frames.local[axis];
   }
   return work;
 }
@@ -150,9 +177,17 @@ AxisCounts localPosition(const mbrt_ctx& ctx) {
 
 void resyncProgram(mbrt_ctx& ctx) {
   const AxisCounts local = localTip(ctx);
-  ctx.program = ctx.frames.transforms()
-                    ? toCounts(untransformPoint(ctx.frames, toValues(local)))
-                    : local;
+  Frames& frames = ctx.frames;
+  frames.synced = frames.transforms();
+  if (!frames.synced) {
+    ctx.program = local;
+    return;
+  }
+  ctx.program = toCounts(untransformPoint(frames, toValues(local)));
+  frames.syncedProgram = ctx.program;
+  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
+    frames.syncedWork[axis] = local[axis] + frames.local[axis];
+  }
 }
 
 Placement placementOf(const mbrt_ctx& ctx) {
