@@ -256,6 +256,21 @@ TEST(RuntimeLatheOffsets, TCodeShiftsAndMoves) {
   EXPECT_NEAR(m.read(5081), -250.0, 1e-9);
 }
 
+// G20 re-expresses the offset in force in inches, as the mill's G43
+// length: -10 + 0.2 mm of diameter is -0.3858 inch, not the -0.98 of
+// counts left in 0.001 mm.
+TEST(RuntimeLatheOffsets, UnitSwitchKeepsTheOffsetInForce) {
+  Machine m(R"({"series": "T", "tool_offsets": {
+    "3": {"x_geometry": -10, "x_wear": 0.2, "z_geometry": 5}}})");
+  blocks(m, {"G00 X100. Z50. T0303", "G20", "G00 X2. Z1."});
+  EXPECT_NEAR(m.read(5081), -0.3858, 1e-9);
+  EXPECT_NEAR(m.read(5082), 5.0 / 25.4, 0.00005); // in half increments
+  const mbrt_motion& move = m.motions().back();
+  EXPECT_EQ(move.end[0], 2.0);
+  EXPECT_NEAR(move.machine[0], 2.0 - 0.3858, 1e-9);
+  EXPECT_NEAR(move.machine[1], 1.0 + 5.0 / 25.4, 0.00005);
+}
+
 TEST(RuntimeLatheOffsets, Variables) {
   Machine m(kOffsets);
   EXPECT_EQ(m.read(2001), 0.04);

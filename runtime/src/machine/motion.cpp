@@ -472,6 +472,8 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   convertAll(ctx.intermediate);
   convertAll(frames.local);
   convertAll(frames.preset);
+  convertAll(frames.toolGeometry); // a lathe's tool offsets in force
+  convertAll(frames.toolWear);
   convert(frames.length);
   scaleAll(frames.mirrorCenter);
   scaleAll(frames.scaleCenter);
