@@ -88,3 +88,55 @@ def test_dask_on_two_worker_processes(table, pocket):
                                     machine=mbc.Machine()).compute()
     pandas.testing.assert_frame_equal(remote, local)
     pandas.testing.assert_frame_equal(on_machine, local)
+
+
+MACHINE_DATA = SOURCE / "tests" / "batch" / "machine_data.nc"
+
+
+@pytest.fixture(scope="module")
+def machine_data():
+    """A program that reads the machine data a control keeps over power-off
+    (#3002, #3005, signals, counters, commons, offsets), then changes it."""
+    return mbc.compile(str(MACHINE_DATA))
+
+
+def changing_rows(count):
+    return pandas.DataFrame({"id": [f"r{i:02}" for i in range(count)],
+                             "A": [1.0 + i % 4 * 0.25 for i in range(count)],
+                             "B": [float(5 + i % 3) for i in range(count)]})
+
+
+def test_rows_that_change_machine_data_do_not_see_each_other(machine_data):
+    distributed = pytest.importorskip("dask.distributed")
+    import mbc.dask
+    table = changing_rows(24)
+    one = mbc.batch(machine_data, table, threads=1)
+    assert (one["status"] == "ended").all()
+    # What each row read before it changed anything is one text.
+    assert len({"\n".join(d.splitlines()[:3]) for d in one["dprnt"]}) == 1
+    pandas.testing.assert_frame_equal(
+        mbc.batch(machine_data, table, threads=2), one)
+    backwards = mbc.batch(machine_data, table.iloc[::-1], threads=1)
+    pandas.testing.assert_frame_equal(backwards.iloc[::-1], one)
+    for i in (0, 7, 23):
+        pandas.testing.assert_frame_equal(
+            mbc.batch(machine_data, table.iloc[[i]]), one.iloc[[i]])
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1,
+                                  processes=True, dashboard_address=None) \
+            as cluster, distributed.Client(cluster):
+        remote = mbc.dask.batch(machine_data, table, npartitions=5).compute()
+    pandas.testing.assert_frame_equal(remote, one)
+
+
+def test_a_machine_after_reset_runs_as_a_new_one(machine_data):
+    used = mbc.Machine()
+    for step in (2.0, 0.5):
+        machine_data(used, A=step, B=3)
+    used.reset()
+    again = machine_data(used, A=1, B=4)
+    new = machine_data(mbc.Machine(), A=1, B=4)
+    assert again.dprnt == new.dprnt
+    assert again.variables == new.variables
+    for field in new.motions.dtype.names:
+        numpy.testing.assert_array_equal(again.motions[field],
+                                         new.motions[field])

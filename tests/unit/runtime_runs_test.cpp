@@ -80,5 +80,135 @@ TEST(RuntimeRuns, ResetStateHomesTheMachineAndKeepsItsData) {
   EXPECT_TRUE(isVacant(m.read(500)));
 }
 
+// docs/embedding.md lists what carries over from one run to the next in a
+// context without a reset; each item is read here after a new start.
+TEST(RuntimeRuns, WhatTheNextRunKeeps) {
+  Machine m(R"({"tool_offsets": {"1": {"h_geometry": 50}}})");
+  blocks(m, {"G10 L2 P1 X5.", "G10 L12 P1 R4.", "G52 X1.", "G43 H1",
+             "G91 G01 X10. F600.", "G66 P9000", "G81 Z-1. R1."});
+  for (const auto& [number, value] : {std::pair{100, 1.0},
+                                      {500, 2.0},
+                                      {3002, 3.0},
+                                      {3003, 1.0},
+                                      {3004, 7.0},
+                                      {3005, 1.0},
+                                      {1100, 1.0},
+                                      {3902, 9.0}}) {
+    ASSERT_EQ(m.write(number, value), 0) << '#' << number;
+  }
+  mbrt_finish(m.ctx(), MBRT_END_M02_M30);
+  const double clock = m.read(3001);
+  mbrt_start(m.ctx(), "O1000");
+  expectVariables(m, {{5001, 4.0},  // position: machine 10 less G54 5 and G52 1
+                      {5003, 0.0},  // back at the cycle's initial level
+                      {4003, 91.0}, // modal codes
+                      {4109, 600.0},  // last words
+                      {5081 + 2, 50}, // the tool length offset in force
+                      {100, 1.0},
+                      {500, 2.0},
+                      {5221, 5.0},
+                      {13001, 4.0},
+                      {3002, 3.0},
+                      {3005, 1.0},
+                      {1100, 1.0},
+                      {3901, 1.0}, // M30 counted the part
+                      {3902, 9.0},
+                      {3001, clock},
+                      // and what a new run cancels or clears
+                      {4012, 67.0},
+                      {4009, 80.0},
+                      {4007, 40.0},
+                      {3003, 0.0},
+                      {3004, 0.0}});
+}
+
+/// Every variable a program can read, as (status, value) by number: what
+/// one context shows of its state.
+std::vector<std::pair<mbrt_status, double>> everyVariable(Machine& m) {
+  std::vector<std::pair<mbrt_status, double>> values;
+  for (int number = 1; number < 100000; ++number) {
+    mbrt_num value = 0.0;
+    const mbrt_status status = mbrt_read_var(m.ctx(), number, &value);
+    values.emplace_back(status, isVacant(value) ? -1e300 : value);
+  }
+  return values;
+}
+
+/// A run that changes what it can of the machine and leaves moves held.
+void changeEverything(Machine& m, bool lathe) {
+  static const std::vector<const char*> kLathe = {"G10 P3 X0.2 Z-0.1 R0.4 Q3",
+                                                  "G10 L2 P1 X1. Z-300.",
+                                                  "G50 S2000",
+                                                  "G96 S150 T0303",
+                                                  "G01 X40. Z-5. F0.3",
+                                                  "G71 U2. R0.5",
+                                                  "G20",
+                                                  "G21",
+                                                  "G42 G01 X30. Z-10.",
+                                                  "G01 X20. K-1."};
+  static const std::vector<const char*> kMill = {
+      "G10 L2 P2 X5. Y-3.",
+      "G10 L12 P1 R5.",
+      "G10 L10 P1 R100.",
+      "G55 G43 H1 G00 X10. Y20. Z30.",
+      "G52 X1.",
+      "G92 X0 Y0",
+      "G68 X0 Y0 R30.",
+      "G91 G01 X5. F500.",
+      "G20",
+      "G21",
+      "M98 P2",
+      "G66 P9000 X1.",
+      "G67",
+      "G69 G50.1 X0",
+      "G41 D1 G90 X20.",
+      "Y20. ,C2."};
+  for (const char* text : lathe ? kLathe : kMill) {
+    EXPECT_EQ(m.block(text), 0) << text << m.report();
+  }
+  for (const auto& [number, value] : {std::pair{100, 1.0},
+                                      {500, 2.0},
+                                      {3002, 3.0},
+                                      {3004, 7.0},
+                                      {3005, 1.0},
+                                      {1100, 1.0},
+                                      {1133, 5.0},
+                                      {3901, 4.0},
+                                      {3902, 9.0}}) {
+    EXPECT_EQ(m.write(number, value), 0) << '#' << number;
+  }
+  mbrt_finish(m.ctx(), MBRT_END_M02_M30);
+}
+
+// After mbrt_reset a context is as mbrt_create made it, whatever the runs
+// before it changed (#3002, settings, signals, offsets, frames, held
+// moves...): every variable reads the same as on a new context, and the
+// same blocks make the same moves. Batches reset before each row.
+TEST(RuntimeRuns, ResetGivesANewContext) {
+  setenv("SOURCE_DATE_EPOCH", "1700000000", 1); // #3011/#3012
+  for (const char* profile : {R"({"tool_offsets": {"1": {"h_geometry": 50}}})",
+                              R"({"series": "T"})"}) {
+    const bool lathe = profile[2] == 's';
+    Machine fresh(profile);
+    Machine used(profile);
+    changeEverything(used, lathe);
+    mbrt_reset(used.ctx());
+    mbrt_start(used.ctx(), "O1000");
+    EXPECT_EQ(everyVariable(used), everyVariable(fresh)) << profile;
+    for (Machine* m : {&fresh, &used}) {
+      mbrt_start(m->ctx(), "O1000"); // past the alarms of the reads
+    }
+    const std::size_t before = used.json().size();
+    for (Machine* m : {&fresh, &used}) {
+      blocks(*m, {lathe ? "G01 X10. Z-2. F0.2 S500" : "G01 X10. Z-2. F200.",
+                  "X15.", "G02 X25. Z3. R5."});
+      mbrt_finish(m->ctx(), MBRT_END_M02_M30);
+    }
+    const std::vector<std::string> after(used.json().begin() + before,
+                                         used.json().end());
+    EXPECT_EQ(after, fresh.json()) << profile;
+  }
+}
+
 } // namespace
 } // namespace mbc::test

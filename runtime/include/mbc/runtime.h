@@ -249,12 +249,14 @@ void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table);
 mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
                           const mbrt_word* args, size_t count);
 /* The machine back to power-on: modal codes, the tool at the machine
- * origin, no G92/G52/mirror/scaling/rotation/tool length offset, the clock
- * (#3001) at 0, no alarm. Machine data (commons, offsets, part counters),
- * sinks and limits stay. */
+ * origin, no G92/G52/mirror/scaling/rotation/tool length offset, the output
+ * signals (#1100+) off, the clock (#3001) at 0, no alarm. Machine data
+ * (commons, offsets, part counters, #3002, #3005), sinks and limits stay. */
 void mbrt_reset_state(mbrt_ctx* ctx);
-/* Back to the state mbrt_create gave: mbrt_reset_state, and commons,
- * offsets and part counters from the profile. Sinks and limits stay. */
+/* Back to the state mbrt_create gave, all of it (commons, offsets, part
+ * counters, #3002, settings, signals from the profile): runs after it see
+ * nothing of runs before. What the host set stays: sinks, limits, block
+ * skip switches, motion buffering and the names of loaded programs. */
 void mbrt_reset(mbrt_ctx* ctx);
 
 /* ---- Alarms and results --------------------------------------------------

@@ -91,8 +91,8 @@ void clearModalCodes(mbrt_ctx& ctx) {
 
 /// The machine's power-on state: modal codes, the tool at the machine
 /// origin, no frames (G92, G52, mirror, scaling, rotation, tool length
-/// offset) and the clock at 0. Machine data (commons, offsets, part
-/// counters) stays.
+/// offset), the output signals off and the clock at 0. Machine data
+/// (commons, offsets, part counters, #3002, settings) stays.
 void resetMachineState(mbrt_ctx& ctx) {
   ctx.machine = AxisCounts{};
   ctx.frames = Frames{};
@@ -101,6 +101,7 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.intermediateMask = 0;
   ctx.compensation = CompensationState{};
   ctx.corner = CornerInsertion{};
+  ctx.outputWords = {}; // the output signals #1100+ are off at power-on
   ctx.spindleLimit = 0.0;
   ctx.cycleSettings.clear();
   ctx.shapes.clear();
@@ -157,6 +158,23 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.alarm = PendingAlarm{};
   ctx.motionBuffer.clear();
   takeDateAndTime(ctx);
+}
+
+/// What the host set on a context, which a reset keeps: the sinks, the
+/// limits, the block skip switches and the names of the programs loaded.
+void keepHostSettings(mbrt_ctx& from, mbrt_ctx& to) {
+  to.alarmSink = from.alarmSink;
+  to.motionSink = from.motionSink;
+  to.printSink = from.printSink;
+  to.messageSink = from.messageSink;
+  to.traceSink = from.traceSink;
+  to.gcodeSink = from.gcodeSink;
+  to.block.tracing = from.block.tracing;
+  to.maxBlocks = from.maxBlocks;
+  to.output.limit = from.output.limit;
+  to.skipMask = from.skipMask;
+  to.programNames = std::move(from.programNames);
+  to.bufferedNames = std::move(from.bufferedNames); // buffered motions' names
 }
 
 } // namespace
@@ -285,11 +303,19 @@ void mbrt_reset_state(mbrt_ctx* ctx) {
 }
 
 void mbrt_reset(mbrt_ctx* ctx) {
-  if (!refuseInSink(*ctx, "mbrt_reset")) {
-    loadProfile(*ctx);
-    resetMachineState(*ctx);
-    startRun(*ctx, "MAIN");
+  if (refuseInSink(*ctx, "mbrt_reset")) {
+    return;
   }
+  // A new context in the old one's place: no state of a run (a clock, a
+  // setting, a signal, whatever is added later) can outlive the reset, so
+  // that runs after it never see each other.
+  mbrt_ctx fresh;
+  fresh.profile = std::move(ctx->profile);
+  keepHostSettings(*ctx, fresh);
+  loadProfile(fresh);
+  resetMachineState(fresh);
+  startRun(fresh, "MAIN");
+  *ctx = std::move(fresh);
 }
 
 mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {

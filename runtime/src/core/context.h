@@ -292,6 +292,30 @@ struct BlockState {
   bool feedInBlock = false;
 };
 
+/// A flag a signal handler or another thread sets while the run reads it.
+/// It copies as a value, so that mbrt_reset can replace a whole context.
+class SignalFlag {
+public:
+  SignalFlag() = default;
+
+  SignalFlag(const SignalFlag& other) : value_(other.value_.load()) {}
+
+  SignalFlag& operator=(const SignalFlag& other) {
+    value_.store(other.value_.load());
+    return *this;
+  }
+
+  SignalFlag& operator=(bool value) {
+    value_.store(value);
+    return *this;
+  }
+
+  operator bool() const { return value_.load(); }
+
+private:
+  std::atomic<bool> value_{false};
+};
+
 /// Chamfering and corner R (lathe_corners.h): the G01 block with I, K
 /// (C) or R holds its move until the next block tells where the corner
 /// goes. Program coordinates; `amount` signed along `toward`.
@@ -444,8 +468,8 @@ struct mbrt_ctx {
   // run (mbrt_interrupt, mbrt_out_of_memory), so it is read and written
   // atomically.
   mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
-  std::atomic<bool> interrupted{false};
-  std::atomic<bool> outOfMemory{false};
+  mbc::rt::SignalFlag interrupted;
+  mbc::rt::SignalFlag outOfMemory;
   bool illegalMainNumber = false; // PS0074 at the first block
   // Sinks being called (motion, text, alarm), and the first call that
   // would have restarted, reset or freed the context from inside one.
