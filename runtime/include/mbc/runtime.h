@@ -194,6 +194,34 @@ size_t mbrt_set_commons(const mbrt_ctx* ctx, int* numbers, mbrt_num* values,
 /* How many tool offsets the machine has (#10001.. up to #10000 + count). */
 int mbrt_tool_offset_count(const mbrt_ctx* ctx);
 
+/* ---- The offset memory in the machine's unit ------------------------------
+ * Work and tool offsets by the names of the machine profile's
+ * "work_offsets" and "tool_offsets": a work offset set ("EXT", "G54".."G59",
+ * "G54.1P1".."G54.1P300") and an axis in profile order; a tool offset's
+ * number and field ("h_geometry", "h_wear", "d_geometry", "d_wear" as the
+ * offset memory type has them; a lathe's "x_wear", "z_wear", "y_wear",
+ * "r_wear", "tip" and with geometry and wear memory "x_geometry"...).
+ * Work offsets are in the machine's unit (the profile's "units"; degrees on
+ * a rotary axis, a diameter on a lathe's X) whatever G20/G21 a run left in
+ * force; tool offsets are the numbers the memory holds (G20/G21 do not
+ * convert them). This is what `mbc run --state` saves and loads. Each
+ * returns 1, or 0 for a name, number or axis the machine does not have or
+ * a value it cannot hold (more than nine digits; a tip other than 0-9).
+ * A write of the work offset in force keeps the machine position, as
+ * writing #5221+ does. */
+int mbrt_get_work_offset(const mbrt_ctx* ctx, const char* set, int axis,
+                         double* value);
+int mbrt_set_work_offset(mbrt_ctx* ctx, const char* set, int axis,
+                         double value);
+int mbrt_get_tool_offset(const mbrt_ctx* ctx, int number, const char* field,
+                         double* value);
+int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
+                         double value);
+/* The names to go through: the i-th work offset set (0, 1, ...) and the
+ * i-th field of this machine's tool offsets, NULL past the last. */
+const char* mbrt_work_offset_set(int i);
+const char* mbrt_tool_offset_field(const mbrt_ctx* ctx, int i);
+
 /* ---- Programs and their arguments ----------------------------------------
  */
 

@@ -504,7 +504,9 @@ struct mbrt_ctx {
 
   /// Least input increments per unit: 1000 (0.001 mm) or 10000 (0.0001
   /// inch).
-  double inputScale() const { return modal.inch ? 10000.0 : 1000.0; }
+  double inputScale() const { return inputScale(modal.inch); }
+
+  static double inputScale(bool inch) { return inch ? 10000.0 : 1000.0; }
 
   /// Counts per least input increment: 2 on a machine with an axis
   /// programmed as a diameter, whose increment (0.001 mm of diameter) is
@@ -513,7 +515,11 @@ struct mbrt_ctx {
   int countsPerIncrement() const { return profile.diameterMask != 0 ? 2 : 1; }
 
   /// Counts per input unit of a radius or a length.
-  double scale() const { return inputScale() * countsPerIncrement(); }
+  double scale() const { return scale(modal.inch); }
+
+  double scale(bool inch) const {
+    return inputScale(inch) * countsPerIncrement();
+  }
 
   bool isRotary(int axis) const {
     return (profile.rotaryMask >> axis & 1) != 0;
@@ -552,11 +558,13 @@ struct mbrt_ctx {
   /// Counts per unit of an axis as programs write it and the control shows
   /// it: a rotary axis counts 0.001 degree whatever G20/G21, a diameter
   /// axis counts its radius, so a unit of diameter is half the counts.
-  double axisScale(int axis) const {
+  double axisScale(int axis) const { return axisScale(axis, modal.inch); }
+
+  double axisScale(int axis, bool inch) const {
     if (isRotary(axis)) {
       return mbc::rt::kCountsPerDegree;
     }
-    return isDiameter(axis) ? inputScale() : scale();
+    return isDiameter(axis) ? inputScale(inch) : scale(inch);
   }
 
   /// Counts per least input increment of an axis (axisScale over the

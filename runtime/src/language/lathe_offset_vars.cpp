@@ -8,6 +8,7 @@
 #include <array>
 
 #include "flat_gcode.h"
+#include "offset_keys.h"
 
 namespace mbc::rt {
 
@@ -18,23 +19,21 @@ struct OffsetSeries {
   int shortCount;
   int longBase; // #longBase + n
   double LatheOffset::*field;
-  bool geometry;
-  char letter; // the G10 word that writes it; 'Q' for the tip
 };
 
 constexpr int kShortCount = 64;
 constexpr int kShortY = 49;
 
 constexpr std::array kSeries = {
-    OffsetSeries{2000, kShortCount, 10000, &LatheOffset::xWear, false, 'X'},
-    OffsetSeries{2100, kShortCount, 11000, &LatheOffset::zWear, false, 'Z'},
-    OffsetSeries{2200, kShortCount, 12000, &LatheOffset::rWear, false, 'R'},
-    OffsetSeries{2300, kShortCount, 13000, &LatheOffset::tip, false, 'Q'},
-    OffsetSeries{2400, kShortY, 14000, &LatheOffset::yWear, false, 'Y'},
-    OffsetSeries{2450, kShortY, 19000, &LatheOffset::yGeometry, true, 'Y'},
-    OffsetSeries{2700, kShortCount, 15000, &LatheOffset::xGeometry, true, 'X'},
-    OffsetSeries{2800, kShortCount, 16000, &LatheOffset::zGeometry, true, 'Z'},
-    OffsetSeries{2900, kShortCount, 17000, &LatheOffset::rGeometry, true, 'R'},
+    OffsetSeries{2000, kShortCount, 10000, &LatheOffset::xWear},
+    OffsetSeries{2100, kShortCount, 11000, &LatheOffset::zWear},
+    OffsetSeries{2200, kShortCount, 12000, &LatheOffset::rWear},
+    OffsetSeries{2300, kShortCount, 13000, &LatheOffset::tip},
+    OffsetSeries{2400, kShortY, 14000, &LatheOffset::yWear},
+    OffsetSeries{2450, kShortY, 19000, &LatheOffset::yGeometry},
+    OffsetSeries{2700, kShortCount, 15000, &LatheOffset::xGeometry},
+    OffsetSeries{2800, kShortCount, 16000, &LatheOffset::zGeometry},
+    OffsetSeries{2900, kShortCount, 17000, &LatheOffset::rGeometry},
 };
 
 struct Found {
@@ -63,9 +62,11 @@ mbrt_status findOffset(mbrt_ctx& ctx, long n, Found* found) {
   std::string why;
   if (series == nullptr) {
     why = "no lathe offset variable";
-  } else if (series->geometry && !ctx.profile.geometryWear) {
+  } else if (latheOffsetKey(series->field).geometry &&
+             !ctx.profile.geometryWear) {
     why = "geometry offsets need \"geometry_wear\"";
-  } else if (series->letter == 'Y' && ctx.axisOf('Y') < 0) {
+  } else if (latheOffsetKey(series->field).letter == 'Y' &&
+             ctx.axisOf('Y') < 0) {
     why = "the machine has no Y axis";
   } else if (found->number > ctx.profile.toolOffsetCount) {
     why = fmt::format("offset {} (the machine has {})", found->number,
@@ -95,8 +96,9 @@ mbrt_status writeLatheOffset(mbrt_ctx& ctx, long n, Num value) {
     return status;
   }
   const OffsetSeries& series = *found.series;
+  const LatheOffsetKey& key = latheOffsetKey(series.field);
   double units = numeric(value);
-  if (series.letter == 'Q') {
+  if (key.letter == 'Q') {
     units = roundHalfAway(units);
     if (units < 0.0 || units > 9.0) {
       return raise(ctx, AlarmId::ArgumentOutOfRange,
@@ -113,8 +115,8 @@ mbrt_status writeLatheOffset(mbrt_ctx& ctx, long n, Num value) {
   }
   ctx.latheOffsets[static_cast<std::size_t>(found.number)].*series.field =
       units;
-  flattenLatheOffset(ctx, series.geometry ? 10000 + found.number : found.number,
-                     series.letter, units);
+  flattenLatheOffset(ctx, key.geometry ? 10000 + found.number : found.number,
+                     key.letter, units);
   return 0;
 }
 

@@ -21,7 +21,9 @@
 #include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_offset_vars.h"
+#include "machine_unit.h"
 #include "motion.h"
+#include "offset_keys.h"
 
 namespace mbc::rt {
 
@@ -126,17 +128,6 @@ OffsetField offsetSeries(const Profile& profile, int series, bool shortForm) {
   }
 }
 
-/// The G10 L of a field, for the flattened program.
-int offsetL(OffsetField field) {
-  if (field == &ToolOffset::hGeometry) {
-    return 10;
-  }
-  if (field == &ToolOffset::hWear) {
-    return 11;
-  }
-  return field == &ToolOffset::dGeometry ? 12 : 13;
-}
-
 /// Series `Series` of the tool offsets (short form: #2xxx), offset number
 /// index + 1; beyond the profile's count, or a series the machine does not
 /// have, is PS0115.
@@ -190,7 +181,7 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   const double units =
       countsToUnits(static_cast<Counts>(counts), ctx.inputScale());
   ctx.toolOffsets[index + 1].*field = units;
-  flattenToolOffset(ctx, offsetL(field), index + 1, units);
+  flattenToolOffset(ctx, millOffsetKey(field).l, index + 1, units);
   return 0;
 }
 
@@ -418,7 +409,8 @@ Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
 /// written for a machine with more axes still run.
 mbrt_status readOffset(mbrt_ctx& ctx, int offset, int axis, Num* out) {
   *out = axis < ctx.axisCount()
-             ? countsToUnits(ctx.workOffsets[offset][axis], ctx.axisScale(axis))
+             ? countsToUnits(workOffsetInForce(ctx, offset, axis),
+                             ctx.axisScale(axis))
              : 0.0;
   return 0;
 }
@@ -443,7 +435,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
                  fmt::format("work offset {}", numeric(value)));
   }
   // The machine position stays; the workpiece position follows the offset.
-  ctx.workOffsets[offset][axis] = static_cast<Counts>(counts);
+  storeWorkOffset(ctx, offset, axis, static_cast<Counts>(counts));
   resyncProgram(ctx);
   flattenWorkOffset(ctx, offset);
   return 0;

@@ -8,6 +8,7 @@
 
 #include "cutter_comp.h"
 #include "frames.h"
+#include "machine_unit.h"
 
 namespace mbc::rt {
 
@@ -33,14 +34,15 @@ mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   }
   const int index = l == 2 ? kExternalOffset + static_cast<int>(p)
                            : kFirstG541Offset + static_cast<int>(p) - 1;
-  AxisCounts& offset = ctx.workOffsets[index];
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axes->axisMask >> axis & 1) != 0) {
       // G91, or a lathe's U/W in G code system A, adds.
       const bool adds = ctx.modal.incremental ||
                         (words.axes->incrementalMask >> axis & 1) != 0;
       const Counts value = words.axes->axis[axis];
-      offset[axis] = adds ? offset[axis] + value : value;
+      storeWorkOffset(ctx, index, axis,
+                      adds ? workOffsetInForce(ctx, index, axis) + value
+                           : value);
     }
   }
   resyncProgram(ctx); // the machine stays

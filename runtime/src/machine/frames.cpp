@@ -6,6 +6,8 @@
 
 #include <mbc/arith.h>
 
+#include "machine_unit.h"
+
 namespace mbc::rt {
 
 namespace {
@@ -28,11 +30,11 @@ AxisCounts toCounts(const AxisValues& values) {
 
 /// The sum of the work offset, the external offset and the G92 shift.
 AxisCounts originOf(const mbrt_ctx& ctx) {
-  const AxisCounts& offset = ctx.workOffsets[ctx.modal.workOffset];
-  const AxisCounts& external = ctx.workOffsets[kExternalOffset];
   AxisCounts origin{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    origin[axis] = offset[axis] + external[axis] + ctx.frames.preset[axis];
+    origin[axis] = workOffsetInForce(ctx, ctx.modal.workOffset, axis) +
+                   workOffsetInForce(ctx, kExternalOffset, axis) +
+                   ctx.frames.preset[axis];
   }
   return origin;
 }

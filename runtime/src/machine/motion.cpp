@@ -19,6 +19,7 @@
 #include "lathe_corners.h"
 #include "lathe_cycles.h"
 #include "lathe_shapes.h"
+#include "machine_unit.h"
 #include "plane_geometry.h"
 #include "spindle.h"
 
@@ -444,8 +445,7 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   if (ctx.modal.inch == inch) {
     return;
   }
-  // 0.0001 inch is 2.54 counts of 0.001 mm.
-  const double factor = inch ? 1.0 / 2.54 : 2.54;
+  const double factor = unitCountsFactor(inch);
   const auto convert = [factor](Counts& counts) {
     counts = static_cast<Counts>(
         roundHalfAway(static_cast<double>(counts) * factor));
@@ -465,8 +465,7 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
       }
     }
   };
-  convertAll(ctx.machine);
-  std::for_each(ctx.workOffsets.begin(), ctx.workOffsets.end(), convertAll);
+  convertAll(ctx.machine); // the offset memory keeps the machine's unit
   Frames& frames = ctx.frames;
   convertAll(ctx.skipPosition);
   convertAll(ctx.intermediate);

@@ -17,6 +17,7 @@
 #include <cstdlib>
 
 #include "g_codes.h"
+#include "machine_unit.h"
 
 namespace mbc::rt {
 
@@ -205,9 +206,10 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     data += ' ';
     data += ctx.profile.axes[axis];
-    appendUnitsText(
-        data, countsToUnits(ctx.workOffsets[offset][axis], ctx.axisScale(axis)),
-        axisDecimals(ctx, axis));
+    appendUnitsText(data,
+                    countsToUnits(workOffsetInForce(ctx, offset, axis),
+                                  ctx.axisScale(axis)),
+                    axisDecimals(ctx, axis));
   }
   sendData(ctx, data);
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "offset_keys.h"
 #include "parameters.h"
 #include "profile_json.h"
 
@@ -118,53 +119,37 @@ void parseParameters(const json& value, Profile& profile) {
                   });
 }
 
-/// Memory A holds one value per offset (h_geometry), memory B a geometry
-/// and a wear that H and D share, memory C all four.
+/// The fields of the offset memory type (offset_keys.h).
 void parseToolOffset(const json& value, const std::string& path, char memory,
                      ToolOffset& offset) {
+  const auto keys = millOffsetKeys(memory);
   for (const auto& [key, item] : object(value, path).items()) {
     const std::string itemPath = child(path, key);
-    if (key == "h_geometry") {
-      offset.hGeometry = number(item, itemPath);
-    } else if (key == "h_wear" && memory != 'A') {
-      offset.hWear = number(item, itemPath);
-    } else if (key == "d_geometry" && memory == 'C') {
-      offset.dGeometry = number(item, itemPath);
-    } else if (key == "d_wear" && memory == 'C') {
-      offset.dWear = number(item, itemPath);
-    } else {
+    // A structured binding is no lambda capture before clang 16.
+    const std::string& name = key;
+    const auto field = std::find_if(keys.begin(), keys.end(),
+                                    [&](auto& k) { return name == k.key; });
+    if (field == keys.end()) {
       unknownKey(itemPath);
     }
+    offset.*(field->field) = number(item, itemPath);
   }
 }
 
 /// A lathe's offset: the geometry fields only with geometry_wear.
 void parseLatheOffset(const json& value, const std::string& path,
                       bool geometryWear, LatheOffset& offset) {
-  static constexpr std::pair<const char*, double LatheOffset::*> kFields[] = {
-      {"x_wear", &LatheOffset::xWear},
-      {"z_wear", &LatheOffset::zWear},
-      {"y_wear", &LatheOffset::yWear},
-      {"r_wear", &LatheOffset::rWear},
-      {"tip", &LatheOffset::tip},
-      {"x_geometry", &LatheOffset::xGeometry},
-      {"z_geometry", &LatheOffset::zGeometry},
-      {"y_geometry", &LatheOffset::yGeometry},
-      {"r_geometry", &LatheOffset::rGeometry}};
-  constexpr std::size_t kWithoutGeometry = 5;
+  const auto keys = latheOffsetKeys(geometryWear);
   for (const auto& [key, item] : object(value, path).items()) {
     const std::string itemPath = child(path, key);
-    const auto* end = std::begin(kFields) +
-                      (geometryWear ? std::size(kFields) : kWithoutGeometry);
     // A structured binding is no lambda capture before clang 16.
     const std::string& name = key;
-    const auto* field =
-        std::find_if(std::begin(kFields), end,
-                     [&](const auto& f) { return name == f.first; });
-    if (field == end) {
+    const auto field = std::find_if(keys.begin(), keys.end(),
+                                    [&](auto& k) { return name == k.key; });
+    if (field == keys.end()) {
       unknownKey(itemPath);
     }
-    offset.*(field->second) = number(item, itemPath);
+    offset.*(field->field) = number(item, itemPath);
   }
   if (offset.tip != std::floor(offset.tip) || offset.tip < 0 ||
       offset.tip > 9) {
@@ -228,25 +213,6 @@ void parseToolOffsets(const json& value, Profile& profile) {
     parseToolOffset(item, path, profile.toolOffsetMemory,
                     profile.toolOffsets[*n]);
   }
-}
-
-/// "EXT", "G54".."G59", "G54.1P1".."G54.1P300" -> index in workOffsets.
-std::optional<int> workOffsetIndex(std::string_view key) {
-  if (key == "EXT") {
-    return kExternalOffset;
-  }
-  if (key.size() == 3 && key.substr(0, 2) == "G5" && key[2] >= '4' &&
-      key[2] <= '9') {
-    return kFirstG54Offset + (key[2] - '4');
-  }
-  constexpr std::string_view prefix = "G54.1P";
-  if (key.substr(0, prefix.size()) == prefix) {
-    const auto p = keyNumber(key.substr(prefix.size()));
-    if (p && *p >= 1 && *p <= kG541Count) {
-      return kFirstG541Offset + *p - 1;
-    }
-  }
-  return std::nullopt;
 }
 
 void parseWorkOffsets(const json& value, Profile& profile) {
