@@ -1,11 +1,14 @@
-// The state file. Every value lives at a variable number: the commons, the
-// work offsets at #5201 (external), #5221 + 20 k (G54..G59) and #14001 +
-// 20 (n - 1) (G54.1 Pn), the tool offsets at #10001 (H wear), #11001 (H
-// geometry), #12001 (D wear), #13001 (D geometry). Loading writes only what
-// differs, so the flattened program gets G10 blocks for real changes only.
+// The state file. It names every value as the machine profile does
+// ("variables", "work_offsets", "tool_offsets" with the profile's keys) and
+// says which machine it is for ("series", "unit"); the runtime reads and
+// writes the offsets in the machine's unit (runtime.h, "The offset memory
+// in the machine's unit"), so that a run ending in G20 saves millimetres on
+// a metric machine and every value comes back exactly. Loading writes only
+// what differs, so the flattened program gets G10 blocks for real changes.
 #include "driver/state_file.h"
 
 #include "driver/output_files.h"
+#include <mbc/engine.h>
 #include <mbc/read_file.h>
 #include <mbc/value.h>
 
@@ -16,6 +19,9 @@
 #include <cerrno>
 #include <cstring>
 #include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace mbc::driver {
 
@@ -23,59 +29,92 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kG541Sets = 300;
+constexpr int kFirstNonvolatile = 500;
+constexpr int kLastNonvolatile = 999;
 
-struct ToolField {
-  const char* key;
-  int base;
+/// What the file says of the machine it is for, and what this one is.
+struct Machine {
+  std::string series; // "M" or "T"
+  std::string unit;   // "mm" or "inch"
+  int axes = 0;
 };
 
-constexpr ToolField kToolFields[] = {{"h_geometry", 11000},
-                                     {"h_wear", 10000},
-                                     {"d_geometry", 13000},
-                                     {"d_wear", 12000}};
-
-/// Every work offset set: its profile key and the number of its X.
-std::vector<std::pair<std::string, int>> workOffsetSets() {
-  std::vector<std::pair<std::string, int>> sets{{"EXT", 5201}};
-  for (int k = 0; k < 6; ++k) {
-    sets.emplace_back(fmt::format("G{}", 54 + k), 5221 + 20 * k);
-  }
-  for (int n = 1; n <= kG541Sets; ++n) {
-    sets.emplace_back(fmt::format("G54.1P{}", n), 14001 + 20 * (n - 1));
-  }
-  return sets;
-}
-
-int axisCount(const mbrt_ctx* ctx) {
+Machine machineOf(const mbrt_ctx* ctx) {
   mbrt_stats stats{};
   mbrt_get_stats(ctx, &stats);
-  return stats.axis_count;
+  return {mbrt_lathe_system(ctx) != 0 ? "T" : "M", stats.unit,
+          stats.axis_count};
 }
 
-double readValue(mbrt_ctx* ctx, int number) {
-  mbrt_num value = 0.0;
-  mbrt_read_var(ctx, number, &value);
+/// One value of the state: which section, which entry, which field.
+struct Place {
+  enum Kind { Variable, WorkOffset, ToolOffset } kind;
+
+  int number = 0;   // the variable, the tool offset, or the axis
+  std::string name; // the work offset set, or the tool offset field
+  auto operator<=>(const Place&) const = default;
+};
+
+using State = std::map<Place, double>;
+
+double read(mbrt_ctx* ctx, const Place& place) {
+  double value = vacant();
+  switch (place.kind) {
+    case Place::Variable:
+      mbrt_peek_common(ctx, place.number, &value);
+      break;
+    case Place::WorkOffset:
+      mbrt_get_work_offset(ctx, place.name.c_str(), place.number, &value);
+      break;
+    case Place::ToolOffset:
+      mbrt_get_tool_offset(ctx, place.number, place.name.c_str(), &value);
+      break;
+  }
   return value;
 }
 
-/// The whole state as variable number -> value (vacant for unset commons).
-std::map<int, double> currentState(mbrt_ctx* ctx) {
-  std::map<int, double> state;
-  for (int n = 500; n <= 999; ++n) {
-    mbrt_num value = vacant();
-    mbrt_peek_common(ctx, n, &value);
-    state[n] = value;
+bool write(mbrt_ctx* ctx, const Place& place, double value) {
+  switch (place.kind) {
+    case Place::Variable:
+      return mbrt_write_var(ctx, place.number, value, nullptr) == 0;
+    case Place::WorkOffset:
+      return mbrt_set_work_offset(ctx, place.name.c_str(), place.number,
+                                  value) != 0;
+    case Place::ToolOffset:
+      return mbrt_set_tool_offset(ctx, place.number, place.name.c_str(),
+                                  value) != 0;
   }
-  const int axes = axisCount(ctx);
-  for (const auto& [key, first] : workOffsetSets()) {
+  return false;
+}
+
+std::vector<std::string> toolFields(const mbrt_ctx* ctx) {
+  std::vector<std::string> fields;
+  for (int i = 0; const char* field = mbrt_tool_offset_field(ctx, i); ++i) {
+    fields.emplace_back(field);
+  }
+  return fields;
+}
+
+/// Every value the state holds, as the context has it.
+State currentState(mbrt_ctx* ctx) {
+  State state;
+  const auto add = [&](Place place) {
+    const double value = read(ctx, place);
+    state.emplace(std::move(place), value);
+  };
+  for (int n = kFirstNonvolatile; n <= kLastNonvolatile; ++n) {
+    add({Place::Variable, n, ""});
+  }
+  const int axes = machineOf(ctx).axes;
+  for (int i = 0; const char* set = mbrt_work_offset_set(i); ++i) {
     for (int axis = 0; axis < axes; ++axis) {
-      state[first + axis] = readValue(ctx, first + axis);
+      add({Place::WorkOffset, axis, set});
     }
   }
+  const std::vector<std::string> fields = toolFields(ctx);
   for (int n = 1; n <= mbrt_tool_offset_count(ctx); ++n) {
-    for (const ToolField& field : kToolFields) {
-      state[field.base + n] = readValue(ctx, field.base + n);
+    for (const std::string& field : fields) {
+      add({Place::ToolOffset, n, field});
     }
   }
   return state;
@@ -109,36 +148,47 @@ const json& section(const json& root, const char* key) {
   return *it;
 }
 
+/// The file's "series" or "unit", when it gives it, must be this machine's:
+/// its values are in the unit of the machine that wrote it.
+void checkMachine(const json& root, const char* key, const std::string& mine) {
+  const auto it = root.find(key);
+  if (it == root.end()) {
+    return; // a file of an earlier mbc, in this machine's unit
+  }
+  if (!it->is_string() || *it != mine) {
+    throw std::runtime_error(
+        fmt::format("\"{}\": {}: the file is for another machine (this "
+                    "one's is \"{}\")",
+                    key, it->dump(), mine));
+  }
+}
+
 /// The state a file asks for: the current one with every value the file
 /// can hold reset (vacant, 0), then the file's values.
-std::map<int, double> wantedState(mbrt_ctx* ctx, const json& root) {
-  std::map<int, double> state = currentState(ctx);
-  for (auto& [number, value] : state) {
-    value = number <= 999 ? vacant() : 0.0;
+State wantedState(mbrt_ctx* ctx, const json& root) {
+  State state = currentState(ctx);
+  for (auto& [place, value] : state) {
+    value = place.kind == Place::Variable ? vacant() : 0.0;
   }
-  const auto set = [&](int number, const json& value, const std::string& what) {
-    if (!value.is_number() || !state.contains(number)) {
+  const auto set = [&](const Place& place, const json& value,
+                       const std::string& what) {
+    if (!value.is_number() || !state.contains(place)) {
       throw std::runtime_error(fmt::format("bad value for {}", what));
     }
-    state[number] = value.get<double>();
+    state[place] = value.get<double>();
   };
   for (const auto& [key, value] : section(root, "variables").items()) {
-    set(numberKey(key, "variables"), value, "variables." + key);
+    set({Place::Variable, numberKey(key, "variables"), ""}, value,
+        "variables." + key);
   }
-  const auto sets = workOffsetSets();
-  // Lambdas take structured bindings through init-captures: clang before 16
-  // cannot capture a binding itself.
   for (const auto& [key, values] : section(root, "work_offsets").items()) {
-    const auto found =
-        std::find_if(sets.begin(), sets.end(),
-                     [&k = key](const auto& s) { return s.first == k; });
-    if (found == sets.end() || !values.is_array()) {
+    const std::string what = "work_offsets." + key;
+    if (!values.is_array() || !state.contains({Place::WorkOffset, 0, key})) {
       throw std::runtime_error(
-          fmt::format("\"work_offsets.{}\" is no work offset array", key));
+          fmt::format("\"{}\" is no work offset array", what));
     }
     for (std::size_t axis = 0; axis < values.size(); ++axis) {
-      set(found->second + static_cast<int>(axis), values[axis],
-          "work_offsets." + key);
+      set({Place::WorkOffset, static_cast<int>(axis), key}, values[axis], what);
     }
   }
   for (const auto& [key, entry] : section(root, "tool_offsets").items()) {
@@ -148,14 +198,12 @@ std::map<int, double> wantedState(mbrt_ctx* ctx, const json& root) {
           fmt::format("\"tool_offsets.{}\" must be an object", key));
     }
     for (const auto& [name, value] : entry.items()) {
-      const auto field =
-          std::find_if(std::begin(kToolFields), std::end(kToolFields),
-                       [&n = name](const ToolField& f) { return n == f.key; });
-      if (field == std::end(kToolFields)) {
+      const Place place{Place::ToolOffset, number, name};
+      if (!state.contains(place)) {
         throw std::runtime_error(
             fmt::format("unknown key \"tool_offsets.{}.{}\"", key, name));
       }
-      set(field->base + number, value, "tool_offsets." + key);
+      set(place, value, "tool_offsets." + key);
     }
   }
   return state;
@@ -182,17 +230,29 @@ bool loadState(mbrt_ctx* ctx, const std::string& path, std::string& error) {
       throw std::runtime_error("the top level must be an object");
     }
     for (const auto& [key, value] : root.items()) {
-      if (key != "variables" && key != "work_offsets" &&
-          key != "tool_offsets") {
+      if (key != "series" && key != "unit" && key != "variables" &&
+          key != "work_offsets" && key != "tool_offsets") {
         throw std::runtime_error(fmt::format("unknown key \"{}\"", key));
       }
     }
-    const std::map<int, double> current = currentState(ctx);
-    for (const auto& [number, value] : wantedState(ctx, root)) {
-      if (!sameValue(value, current.at(number)) &&
-          mbrt_write_var(ctx, number, value, nullptr) != 0) {
+    const Machine machine = machineOf(ctx);
+    checkMachine(root, "series", machine.series);
+    checkMachine(root, "unit", machine.unit);
+    const State current = currentState(ctx);
+    for (const auto& [place, value] : wantedState(ctx, root)) {
+      if (!sameValue(value, current.at(place)) && !write(ctx, place, value)) {
         throw std::runtime_error(
-            fmt::format("#{} = {} is refused", number, value));
+            place.kind == Place::Variable
+                ? fmt::format("#{} = {} is refused", place.number, value)
+                : fmt::format("{} {} = {} is refused",
+                              place.kind == Place::WorkOffset
+                                  ? "work offset " + place.name
+                                  : "tool offset " +
+                                        std::to_string(place.number),
+                              place.kind == Place::WorkOffset
+                                  ? "axis " + std::to_string(place.number)
+                                  : place.name,
+                              value));
       }
     }
   } catch (const std::exception& e) {
@@ -203,39 +263,38 @@ bool loadState(mbrt_ctx* ctx, const std::string& path, std::string& error) {
 }
 
 bool saveState(mbrt_ctx* ctx, const std::string& path) {
-  const std::map<int, double> state = currentState(ctx);
   json variables = json::object();
-  for (int n = 500; n <= 999; ++n) {
-    if (!isVacant(state.at(n))) {
-      variables[std::to_string(n)] = state.at(n);
-    }
-  }
   json offsets = json::object();
-  const int axes = axisCount(ctx);
-  for (const auto& [key, first] : workOffsetSets()) {
-    json values = json::array();
-    bool nonzero = false;
-    for (int axis = 0; axis < axes; ++axis) {
-      values.push_back(state.at(first + axis));
-      nonzero = nonzero || state.at(first + axis) != 0.0;
-    }
-    if (nonzero) {
-      offsets[key] = values;
-    }
-  }
   json tools = json::object();
-  for (int n = 1; n <= mbrt_tool_offset_count(ctx); ++n) {
-    json entry = json::object();
-    for (const ToolField& field : kToolFields) {
-      if (state.at(field.base + n) != 0.0) {
-        entry[field.key] = state.at(field.base + n);
+  for (const auto& [place, value] : currentState(ctx)) {
+    switch (place.kind) {
+      case Place::Variable:
+        if (!isVacant(value)) {
+          variables[std::to_string(place.number)] = value;
+        }
+        break;
+      case Place::WorkOffset: {
+        // A set is saved whole when any axis is off zero.
+        json& set = offsets[place.name];
+        set.push_back(value);
+        break;
       }
-    }
-    if (!entry.empty()) {
-      tools[std::to_string(n)] = entry;
+      case Place::ToolOffset:
+        if (value != 0.0) {
+          tools[std::to_string(place.number)][place.name] = value;
+        }
+        break;
     }
   }
-  const json root = {{"variables", variables},
+  for (auto it = offsets.begin(); it != offsets.end();) {
+    const bool zero = std::all_of(it->begin(), it->end(),
+                                  [](const json& v) { return v == 0.0; });
+    it = zero ? offsets.erase(it) : std::next(it);
+  }
+  const Machine machine = machineOf(ctx);
+  const json root = {{"series", machine.series},
+                     {"unit", machine.unit},
+                     {"variables", variables},
                      {"work_offsets", offsets},
                      {"tool_offsets", tools}};
   return replaceFile(path, root.dump(1) + "\n");

@@ -34,4 +34,53 @@ cmp -s bad.json before.json || fail "the bad file was changed"
 echo '{"tool_offsets": {"1": {"h_geom": 1}}}' >bad.json
 "$mbc" run count.nc --state bad.json 2>err
 grep -q 'unknown key "tool_offsets.1.h_geom"' err || fail "message: $(cat err)"
+
+# A run that ends in G20 on a metric machine saves millimetres: three such
+# runs leave G54 where the profile put it, to the last digit.
+echo '{"work_offsets": {"G54": [-250, -123.457, 0.001]}}' >metric.json
+cat >inch.nc <<'NC'
+G21
+#101=#5221
+G20
+G91G01X0.1F10.
+M30
+NC
+for run in 1 2 3; do
+  "$mbc" run inch.nc --machine metric.json --state inch.json \
+    --vars-out inch.vars 2>/dev/null || fail "inch run $run"
+done
+grep -q '"101":-250[,}]' inch.vars || fail "G54 X after three inch runs: $(cat inch.vars)"
+tr -d ' \n' <inch.json | grep -q '"unit":"mm"' || fail "unit: $(cat inch.json)"
+tr -d ' \n' <inch.json | grep -q '"G54":\[-250.0,-123.457,0.001\]' ||
+  fail "G54 after inch runs: $(cat inch.json)"
+# A lathe saves its own offsets (geometry through G10 P10000+n) by the
+# profile's names, and gets them back.
+echo '{"series": "T"}' >lathe.json
+cat >lathe.nc <<'NC'
+IF[#500EQ#0]GOTO10
+#501=#15003
+#502=#10003
+M30
+N10G10P10003X-10.25Z5.5R0.4Q3
+G10P3X0.12
+#500=1
+M30
+NC
+for run in 1 2; do
+  "$mbc" run lathe.nc --machine lathe.json --state lathe-state.json \
+    --vars-out lathe.vars 2>/dev/null || fail "lathe run $run"
+done
+grep -q '"501":-10.25,"502":0.12' lathe.vars || fail "lathe offsets: $(cat lathe.vars)"
+tr -d ' \n' <lathe-state.json |
+  grep -q '"3":{"r_geometry":0.4,"tip":3.0,"x_geometry":-10.25,"x_wear":0.12,"z_geometry":5.5}' ||
+  fail "lathe state: $(cat lathe-state.json)"
+! grep -q 'G54.1' lathe-state.json || fail "a lathe's offsets as work offsets: $(cat lathe-state.json)"
+# A file of another machine stops the run.
+"$mbc" run count.nc --state lathe-state.json 2>err
+[ $? -eq 2 ] && grep -q '"series": "T": the file is for another machine' err ||
+  fail "a lathe's file on a mill: $(cat err)"
+echo '{"unit": "inch"}' >other-unit.json
+"$mbc" run count.nc --state other-unit.json 2>err
+[ $? -eq 2 ] && grep -q '"unit": "inch": the file is for another machine (this one.s is "mm")' err ||
+  fail "an inch file on a metric machine: $(cat err)"
 echo ok
