@@ -82,11 +82,24 @@ TEST(RuntimeArc, CentreFromRadius) {
   }
 }
 
-TEST(RuntimeArc, RadiusShorterThanHalfTheChordIsStretched) {
+// An R that cannot reach the end point is PS0020 (no arc of that radius
+// goes there); short of half the chord by the radius tolerance (3410,
+// 0.02 mm) at most, it is stretched to the semicircle.
+TEST(RuntimeArc, RadiusShortOfHalfTheChord) {
   Machine m;
-  ASSERT_EQ(m.block("G02 X10. Y0 R1. F100"), 0);
-  EXPECT_NEAR(m.motions()[0].center[0], 5.0, 1e-12);
-  EXPECT_NEAR(m.motions()[0].center[1], 0.0, 1e-12);
+  EXPECT_EQ(m.block("G02 X10. Y0 R1. F100", 2),
+            status(AlarmId::ArcRadiusTolerance));
+  EXPECT_EQ(m.report(), "test.nc:2: alarm PS0020: OVER TOLERANCE OF RADIUS: "
+                        "R1 cannot reach the end point: half the distance to "
+                        "it is 5.0000\n");
+  EXPECT_TRUE(m.motions().empty());
+  Machine near;
+  ASSERT_EQ(near.block("G02 X10.03 Y0 R5. F100"), 0);
+  EXPECT_NEAR(near.motions()[0].center[0], 5.015, 1e-12);
+  EXPECT_NEAR(near.motions()[0].center[1], 0.0, 1e-12);
+  Machine unchecked(R"({"parameters": {"3410": 0}})");
+  ASSERT_EQ(unchecked.block("G02 X10. Y0 R1. F100"), 0);
+  EXPECT_NEAR(unchecked.motions()[0].center[0], 5.0, 1e-12);
 }
 
 TEST(RuntimeArc, RadiusWithStartAtTheEndMakesNoMotion) {

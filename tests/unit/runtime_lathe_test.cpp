@@ -568,7 +568,7 @@ TEST(RuntimeLatheShapes, Alarms) {
   EXPECT_EQ(missing.block("G70 P10"), status(AlarmId::ShapeAddressMissing));
   Machine arc(kLathe);
   blocks(arc, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0.4 W0.1 F0.2"});
-  EXPECT_EQ(arc.block("N10 G02 X30. Z-2. R2."),
+  EXPECT_EQ(arc.block("N10 G02 X30. Z-2. R10."),
             status(AlarmId::ShapeFirstBlock));
   Machine back(kLathe);
   blocks(back, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 F0.2",

@@ -275,6 +275,10 @@ mbrt_status blockMove(mbrt_ctx& ctx, const MotionWords& words,
   if (mode != 2 && mode != 3) {
     return 0;
   }
+  if (const mbrt_status status =
+          checkRadiusReaches(ctx, words, start, target)) {
+    return status;
+  }
   const std::optional<PlanePoint> center =
       arcCenter(ctx, words, start, target, mode == 2);
   if (!center && ctx.profile.parameterBit(3403, 5)) {

@@ -220,7 +220,8 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
 }
 
 /// R > 0 takes the arc of at most 180 degrees, R < 0 the longer one; an R
-/// shorter than half the chord is stretched to it, as FANUC does.
+/// short of half the chord by the radius tolerance at most
+/// (checkRadiusReaches) is stretched to it.
 Point centerFromRadius(Point start, Point end, double r, bool clockwise) {
   const double dx = end.x - start.x;
   const double dy = end.y - start.y;
@@ -352,6 +353,27 @@ std::optional<PlanePoint> arcCenter(const mbrt_ctx& ctx,
   return std::nullopt;
 }
 
+mbrt_status checkRadiusReaches(mbrt_ctx& ctx, const MotionWords& words,
+                               const AxisCounts& start,
+                               const AxisCounts& target) {
+  if (!words.hasR) {
+    return 0;
+  }
+  const auto [p, q] = planeIndex(ctx);
+  const double tolerance = ctx.profile.parameter(3410) * ctx.countsPerMm();
+  const double half = std::hypot(static_cast<double>(target[p] - start[p]),
+                                 static_cast<double>(target[q] - start[q])) /
+                      2.0;
+  const auto radius = static_cast<double>(std::abs(words.r));
+  if (tolerance > 0.0 && half - radius > tolerance) {
+    return raise(ctx, AlarmId::ArcRadiusTolerance,
+                 fmt::format("R{:g} cannot reach the end point: half the "
+                             "distance to it is {:.4f}",
+                             radius / ctx.scale(), half / ctx.scale()));
+  }
+  return 0;
+}
+
 namespace {
 
 mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
@@ -370,6 +392,10 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                  static_cast<double>(target[q])};
   if (words.hasR && from.x == to.x && from.y == to.y) {
     return 0; // FANUC: R with start == end makes no motion at all
+  }
+  if (const mbrt_status status =
+          checkRadiusReaches(ctx, words, start, target)) {
+    return status;
   }
   const std::optional<Point> found =
       arcCenter(ctx, words, start, target, clockwise);

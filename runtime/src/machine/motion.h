@@ -93,6 +93,14 @@ std::optional<PlanePoint> arcCenter(const mbrt_ctx& ctx,
                                     const AxisCounts& start,
                                     const AxisCounts& target, bool clockwise);
 
+/// PS0020 when a G02/G03 block's R falls short of half the distance from
+/// `start` to `target` by more than parameter 3410: no arc of that radius
+/// reaches the end point. Within the tolerance the arc is the semicircle,
+/// as rounded end points need.
+mbrt_status checkRadiusReaches(mbrt_ctx& ctx, const MotionWords& words,
+                               const AxisCounts& start,
+                               const AxisCounts& target);
+
 /// A G00 or G01 move of the program to `target` (program coordinates),
 /// which cutter compensation may hold; `words` give G41/G42 I J K.
 mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
