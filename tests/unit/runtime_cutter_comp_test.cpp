@@ -54,6 +54,26 @@ TEST(RuntimeCutterComp, G41AgainEndsTheMoveBeforePerpendicular) {
   }
 }
 
+// G39 at an outer corner: the move before ends on its perpendicular vector
+// (X20 Y5), then an arc of the offset about the corner turns the vector
+// perpendicular to the direction given, Y up: from (20, 5) to (25, 0). At
+// an inner corner (Y down, on the left of the path) the arc would turn 270
+// degrees through the far side: refused.
+TEST(RuntimeCutterComp, G39AtOuterCornersOnly) {
+  Machine outer;
+  blocks(outer, {"G10 L12 P1 R5.", "G90 G01 X-10. Y0 F500.", "G41 D1 X0",
+                 "X20.", "G39 Y-10.", "Y-10."});
+  const Points path = ends(outer, 2);
+  ASSERT_GE(path.size(), 2U);
+  EXPECT_EQ(path[0], std::make_pair(20.0, 5.0));
+  EXPECT_EQ(path[1], std::make_pair(25.0, 0.0));
+  EXPECT_EQ(outer.motions()[3].kind, MBRT_MOTION_CW);
+  Machine inner;
+  blocks(inner,
+         {"G10 L12 P1 R5.", "G90 G01 X-10. Y0 F500.", "G41 D1 X0", "X20."});
+  EXPECT_EQ(inner.block("G39 Y10.", 5), status(AlarmId::Unsupported));
+}
+
 // G40 X Y I J: the held move ends where its offset path meets the offset
 // of a virtual path along I J from its end, inner corner or outer.
 TEST(RuntimeCutterComp, G40WithIJMeetsTheVirtualPath) {

@@ -751,6 +751,17 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
   if (const mbrt_status status = readOffset(ctx, arc)) {
     return status;
   }
+  if (!state.held.empty()) {
+    // The manuals draw G39 at outer corners only; at an inner one its arc
+    // would turn 270 degrees about the corner, through the far side.
+    const HeldMove& held = state.held.front();
+    const PlanePoint end = tangentAt(held, plane, pointOf(held.end, plane));
+    if (cross(end, direction) * arc.side > 1e-9) {
+      return raise(ctx, AlarmId::Unsupported,
+                   "G39 at an inner corner (its arc would turn 270 degrees "
+                   "about the corner, through the far side)");
+    }
+  }
   if (const mbrt_status status = releaseHeldMoves(ctx)) {
     return status;
   }
