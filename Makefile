@@ -20,6 +20,9 @@ all: build
 
 # `make bench` adds its contenders: LinuxCNC's rs274 and valgrind.
 BENCH_PACKAGES := linuxcnc-uspace valgrind libbenchmark-dev
+# The tests' oracles: LinuxCNC's rs274, and a locale with a decimal comma
+# (the toolpath's numbers must not follow the C locale).
+TEST_PACKAGES := linuxcnc-uspace locales-all
 
 deps:
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(DEB_PACKAGES)"
@@ -66,6 +69,7 @@ demo: build
 	 else echo "== 3D view: open $(BUILD_DIR)/demo.html in a browser =="; fi
 
 test: build
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
 
 # Not part of `make test`: timings need a quiet machine (bench/README.md).
@@ -81,6 +85,7 @@ bench: build
 # verified after every pass of every compile (driver/ir_pipeline.cpp).
 ASAN_BUILD_DIR ?= build-asan
 test-asan: deps
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"
 	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=Debug \
 	  -DMBC_SANITIZE=address,undefined
 	cmake --build $(ASAN_BUILD_DIR) -j$(JOBS)
@@ -104,6 +109,7 @@ fuzz: deps
 N ?= 1000
 SEED ?= 1
 difftest: build
+	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"
 	python3 tools/difftest.py --mbc $(BUILD_DIR)/mbc \
 	  --engines $(BUILD_DIR)/tests/difftest_engines -n $(N) --seed $(SEED) \
 	  --jobs $(JOBS) --out $(BUILD_DIR)

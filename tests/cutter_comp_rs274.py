@@ -116,8 +116,8 @@ def close(a, b):
 
 def main():
     if shutil.which("rs274") is None:
-        print("rs274 is not installed (make bench installs linuxcnc-uspace)")
-        return 77
+        print("rs274 is not installed (make test installs linuxcnc-uspace)")
+        return 1
     failed = 0
     with tempfile.TemporaryDirectory() as tmp:
         folder = pathlib.Path(tmp)

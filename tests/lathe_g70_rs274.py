@@ -6,7 +6,7 @@ X, U/W increments in G code system A, arcs by R and by I/K as radii), and
 the same profile in absolute words as a LinuxCNC subroutine that its G70 (lathe mode, G7)
 follows. Every move of mbc's G70 but its rapid return to the start point
 (LinuxCNC's G70 stays at the shape's end) must end, and every arc turn
-about, the point rs274's does. Skips (exit 77) when rs274 is not installed.
+about, the point rs274's does. Fails when rs274 is not installed.
 
     tests/lathe_g70_rs274.py MBC
 """

@@ -6,8 +6,8 @@ with X as a radius. The same turned profile, written for a FANUC lathe
 (diameter X, incremental U/W in G code system A, I and K as radii) and for
 LinuxCNC (G91 for the incremental blocks), must end every move at the same
 point and turn every arc about the same centre: mbc's X and arc centre X
-are diameters, so half of them is compared. Skips (exit 77) when rs274 is
-not installed (`make bench` installs it).
+are diameters, so half of them is compared. Fails when rs274 is
+not installed (`make test` installs it).
 
     tests/lathe_rs274.py MBC
 """

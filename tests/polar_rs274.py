@@ -6,7 +6,7 @@ program origin. Where its rules are FANUC's (an absolute radius and angle,
 a left-out radius or angle keeping the current one, a G91 angle adding to
 the current angle) the same moves must end at the same points. A G91
 radius differs (FANUC measures it from the current position) and is left
-out here. Skips (exit 77) when rs274 is not installed (`make bench`
+out here. Fails when rs274 is not installed (`make test`
 installs it).
 
     tests/polar_rs274.py MBC
