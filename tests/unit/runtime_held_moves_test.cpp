@@ -195,6 +195,20 @@ TEST(RuntimeHeldMoves, CompensationChangesActFromTheNextMove) {
   }
 }
 
+// A block whose move a chamfer holds is a move in the plane, not a block
+// without motion: after a Z move (the one 19625 allows) the X20 move still
+// meets the next one at the inner corner's intersection, not on its
+// perpendicular vector (an overcut).
+TEST(RuntimeHeldMoves, AHeldCornerIsNoBlockWithoutMotion) {
+  Machine m(kMill);
+  blocks(m, {"G90 G00 X-10. Y0 Z0", "G41 D2 G01 X0 Y0 F100.", "X20.", "Z-1.",
+             "Y20. ,C2.", "X0"});
+  const std::vector<mbrt_motion> moves = movesOfLine(m, 3);
+  ASSERT_EQ(moves.size(), 1U);
+  EXPECT_EQ(moves[0].end[0], 18.0);
+  EXPECT_EQ(moves[0].end[1], 2.0);
+}
+
 // ,R in G40, then G41 D2 in the next block: the block without G41 runs as
 // programmed; the next move is the start-up.
 TEST(RuntimeHeldMoves, StartUpActsFromItsOwnBlock) {

@@ -706,6 +706,9 @@ mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore) {
   if (state.planeMoves != planeMovesBefore || !state.engaged) {
     return 0;
   }
+  if (ctx.corner.pending && ctx.corner.fresh) {
+    return 0; // a move in the plane, held for its chamfer or corner R
+  }
   // G40 alone: the vector goes with the next move in the plane. G41/G42
   // alone: the vector at the end of the move before is perpendicular.
   if (!offsetOn(ctx) || state.codeInBlock) {
