@@ -105,13 +105,17 @@ fuzz: deps
 	tools/fuzz.sh $(FUZZ_BUILD_DIR) $(SECONDS)
 
 # Random programs under every engine against the interpreter
-# (tools/difftest.py); a difference is reduced and written to $(BUILD_DIR).
+# (tools/difftest.py), then the machine model's oracles on as many seeds
+# (tools/oracles.py); a difference or a violation is reduced and written
+# to $(BUILD_DIR).
 N ?= 1000
 SEED ?= 1
 difftest: build
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"
 	python3 tools/difftest.py --mbc $(BUILD_DIR)/mbc \
 	  --engines $(BUILD_DIR)/tests/difftest_engines -n $(N) --seed $(SEED) \
+	  --jobs $(JOBS) --out $(BUILD_DIR)
+	python3 tools/oracles.py --mbc $(BUILD_DIR)/mbc -n $(N) --seed $(SEED) \
 	  --jobs $(JOBS) --out $(BUILD_DIR)
 
 # Debian 12's clang-format (14), the version the tree is formatted with.

@@ -962,13 +962,20 @@ def keep_case(out, seed, text, profile):
     return path
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__)
+def add_run_options(parser, items):
+    """The options of a run over random seeds (this one and
+    tools/oracles.py): mbc, how many `items` from which seed, the jobs at
+    once, and where reduced cases go."""
     parser.add_argument("--mbc", default="build/mbc")
-    parser.add_argument("-n", type=int, default=100, help="programs")
+    parser.add_argument("-n", type=int, default=100, help=items)
     parser.add_argument("--seed", type=int, default=1, help="first seed")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", default=".", help="where reduced cases go")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    add_run_options(parser, "programs")
     parser.add_argument("--show", type=int, help="print the program of a seed")
     parser.add_argument("--engines", help="build/tests/difftest_engines: all "
                         "engines of a program in one process (faster)")
