@@ -207,8 +207,26 @@ TEST(RuntimeVariables, PositionsAreReadOnly) {
   Machine m;
   EXPECT_EQ(m.read(5004), 0.0); // beyond the machine's three axes
   EXPECT_EQ(m.read(5101), 0.0);
+  EXPECT_EQ(m.read(5121), 0.0); // no manual handle interruption
+  EXPECT_EQ(m.write(5121, 1.0), status(AlarmId::WriteProtectedVariable));
   mbrt_num value = 0;
-  EXPECT_EQ(mbrt_read_var(m.ctx(), 5121, &value),
+  EXPECT_EQ(mbrt_read_var(m.ctx(), 5141, &value),
+            status(AlarmId::VariableOutOfRange));
+}
+
+// The system constants of a 30i-B: #3100 is vacant as #0 is, #3101 pi,
+// #3102 e; none can be written.
+TEST(RuntimeVariables, SystemConstants) {
+  Machine m;
+  EXPECT_TRUE(isVacant(m.read(3100)));
+  EXPECT_EQ(m.read(3101), 3.141592653589793);
+  EXPECT_EQ(m.read(3102), 2.718281828459045);
+  for (double number : {3100.0, 3101.0, 3102.0}) {
+    EXPECT_EQ(m.write(number, 1.0), status(AlarmId::WriteProtectedVariable))
+        << number;
+  }
+  mbrt_num value = 0;
+  EXPECT_EQ(mbrt_read_var(m.ctx(), 3103, &value),
             status(AlarmId::VariableOutOfRange));
 }
 

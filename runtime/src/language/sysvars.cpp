@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string_view>
 
 #include "block_calls.h"
@@ -46,6 +47,14 @@ constexpr int kOffsetStride = 20;
 
 mbrt_status readZero(mbrt_ctx&, int, Num* out) {
   *out = 0.0;
+  return 0;
+}
+
+/// #3100-#3102, the system constants of a 30i-B: vacant (as #0), pi and e.
+mbrt_status readConstant(mbrt_ctx&, int index, Num* out) {
+  constexpr std::array<double, 3> kConstants = {0.0, std::numbers::pi,
+                                                std::numbers::e};
+  *out = index == 0 ? vacant() : kConstants[static_cast<std::size_t>(index)];
   return 0;
 }
 
@@ -495,6 +504,7 @@ constexpr std::array kSystemVariables = {
     SysVarRange{3007, 3007, readZero, nullptr}, // mirror image: none
     SysVarRange{3011, 3011, readField<&mbrt_ctx::date>, nullptr},
     SysVarRange{3012, 3012, readField<&mbrt_ctx::timeOfDay>, nullptr},
+    SysVarRange{3100, 3102, readConstant, nullptr},
     SysVarRange{3901, 3901, readField<&mbrt_ctx::partsCount>,
                 writeField<&mbrt_ctx::partsCount>},
     SysVarRange{3902, 3902, readField<&mbrt_ctx::partsRequired>,
@@ -512,6 +522,8 @@ constexpr std::array kSystemVariables = {
     SysVarRange{5061, 5080, readPosition<skipPosition>, nullptr},
     SysVarRange{5081, 5100, readPosition<toolLengthOffset>, nullptr},
     SysVarRange{5101, 5120, readZero, nullptr}, // servo deviation
+    // The manual handle interruption amounts: no handle turns here.
+    SysVarRange{5121, 5140, readZero, nullptr},
     SysVarRange{5201, 5340, readG54Offset, writeG54Offset},
     SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
                 writeG541Offset<kOffsetStride>},
