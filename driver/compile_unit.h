@@ -25,6 +25,7 @@ struct LoadOptions {
   // build, whose code learns its machine when it runs.
   bool defaultMachine = true;
   char latheSystem = 0; // the profile's lathe G code system, 0: a mill
+  bool inch = false;    // the profile's unit at power-on is the inch
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
   DiagnosticOutput diagnostics;

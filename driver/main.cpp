@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <string_view>
 
 namespace {
 
@@ -46,6 +47,9 @@ int dispatch(int argc, char** argv) {
         return 2;
       }
       load.latheSystem = static_cast<char>(mbrt_lathe_system(machine.get()));
+      mbrt_stats stats{};
+      mbrt_get_stats(machine.get(), &stats);
+      load.inch = std::string_view(stats.unit) == "inch";
     }
     load.checkWarnings = true;
     return loadUnit(options->files, load, cu) ? 0 : 1;

@@ -18,7 +18,7 @@ namespace detail {
 Parser::Parser(const SourceManager& sources, std::uint32_t file,
                DiagnosticEngine& diags, const ParseOptions& options, Unit& unit)
     : sources_(sources), file_(file), diags_(diags), options_(options),
-      unit_(unit), lexer_(sources, file, diags) {
+      unit_(unit), lexer_(sources, file, diags), inch_(options.inch) {
 }
 
 void Parser::advance() {

@@ -394,10 +394,12 @@ void Parser::parseWords(Stmt& s) {
       const int a = latheFunction(options_.latheSystem,
                                   static_cast<int>(std::round(g * 10.0)));
       dwell = dwell || a == 40;
+      inch_ = a == 200 || (inch_ && a != 210); // G20/G21 (C: G70/G71)
       units.notLengths += a >= 700 && a <= 760 ? "PQR" : a == 100 ? "Q" : "";
       continue;
     }
     dwell = dwell || g == 4;
+    inch_ = g == 20 || (inch_ && g != 21);
     if (g == 73 || g == 74 || g == 76 || (g >= 81 && g <= 89)) {
       units.notLengths += 'K';
     } else if (g == 51) {
@@ -529,19 +531,25 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
     return;
   }
   double v = w.value->number;
-  // The increment is 0.001 mm (or degree) at IS-B metric; trim the zeros.
-  std::string scaled = fmt::format("{:.3f}", v * 0.001);
+  bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C' ||
+                w.letter == commaWordLetter('A') ||
+                units.angles.find(w.letter) != std::string::npos;
+  // The increment is 0.001 mm, 0.0001 inch in G20, 0.001 degree whatever
+  // the unit (IS-B); trim the zeros.
+  const bool inch = inch_ && !rotary;
+  std::string scaled = inch ? fmt::format("{:.4f}", v * 0.0001)
+                            : fmt::format("{:.3f}", v * 0.001);
   while (scaled.back() == '0') {
     scaled.pop_back();
   }
   if (scaled.back() == '.') {
     scaled.pop_back();
   }
-  bool rotary = w.letter == 'A' || w.letter == 'B' || w.letter == 'C' ||
-                w.letter == commaWordLetter('A') ||
-                units.angles.find(w.letter) != std::string::npos;
   diags_.report(DiagKind::NoDecimalPoint, w.range, addressText(w.letter),
-                fmt::format("{}", v), scaled, rotary ? "deg" : "mm");
+                fmt::format("{}", v), scaled,
+                rotary ? "deg"
+                : inch ? "in"
+                       : "mm");
 }
 
 // print := ('DPRNT'|'BPRNT') '[' (text | '#' var '[' digits ']')* ']'

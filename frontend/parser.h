@@ -22,6 +22,10 @@ struct ParseOptions {
   /// A lathe's G code system ('A', 'B', 'C'), 0 on a machining centre:
   /// which G codes mbc check reports and which words of them are lengths.
   char latheSystem = 0;
+  /// The unit at power-on (the profile's): inch input reads a literal
+  /// without decimal point in 0.0001 inch. G20/G21 change it from their
+  /// block on, in the order of the text.
+  bool inch = false;
 };
 
 /// Parses one file and appends its programs to unit.
@@ -121,7 +125,8 @@ private:
   Token previous_; // the token before tok_
   std::deque<Token> ahead_;
   std::vector<Token> blockComments_;
-  int program_ = -1; // index in unit_.programs
+  int program_ = -1;  // index in unit_.programs
+  bool inch_ = false; // G20 in force at this point of the text
   bool reportedDepth_ = false;
   bool macroStatement_ = false; // the block's statement starts with # or a
                                 // keyword
