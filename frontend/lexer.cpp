@@ -412,7 +412,8 @@ Token Lexer::lexWord(std::uint32_t begin) {
   }
   std::uint32_t length =
       best ? static_cast<std::uint32_t>(best->spelling.size()) : 0;
-  if (!best && run.size() >= 2) {
+  // Two letters and a third are stray text (ASSY), not an abbreviation.
+  if (!best && run.size() == 2) {
     std::uint32_t next = pos_ + 2;
     while (next < end_ && isBlank(text_[next])) {
       ++next;

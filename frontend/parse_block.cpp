@@ -3,7 +3,9 @@
 #include "frontend/parser.h"
 #include <mbc/addresses.h>
 
+#include <cctype>
 #include <cmath>
+#include <optional>
 
 namespace mbc {
 
@@ -275,6 +277,35 @@ void Parser::addSequenceWord(Block& b, SourceRange range) {
 std::string Parser::sourceText(SourceRange r) const {
   return std::string(
       sources_.text(r.begin.file).substr(r.begin.offset, r.length));
+}
+
+std::optional<SourceRange> Parser::strayText(const Token& letter) const {
+  const std::string_view text = sources_.text(letter.range.begin.file);
+  const std::size_t begin = letter.range.begin.offset;
+  const auto isLetter = [&](std::size_t i) {
+    return i < text.size() &&
+           std::isalpha(static_cast<unsigned char>(text[i])) != 0;
+  };
+  // An address is followed by its value, so three letters in a row are
+  // words; two may be an address missing its value next to another one.
+  if (!isLetter(begin + 1) || !isLetter(begin + 2)) {
+    return std::nullopt;
+  }
+  std::size_t end = text.find('\n', begin);
+  end = end == std::string_view::npos ? text.size() : end;
+  const std::string_view rest = text.substr(begin, end - begin);
+  std::size_t length = rest.find_first_of("();");
+  if (length == std::string_view::npos) {
+    length = rest.find_last_not_of(" \t\r") + 1; // the rest of the line
+  } else {
+    length = 0; // up to a comment or a statement: the word alone
+    while (isLetter(begin + length)) {
+      ++length;
+    }
+  }
+  SourceRange range = letter.range;
+  range.length = static_cast<std::uint32_t>(length);
+  return range;
 }
 
 // `COS(#1)` or `X(#1+5.)`: the '(' was read as a comment, which is the real

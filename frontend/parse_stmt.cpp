@@ -317,6 +317,12 @@ Word Parser::parseWord() {
       w.value = parseCall(1);
       break;
     default:
+      if (const std::optional<SourceRange> text = strayText(letter)) {
+        const std::string written = sourceText(*text);
+        diags_.report(DiagKind::StrayText, *text, written)
+            .fixIts.push_back({*text, fmt::format("({})", written)});
+        fail();
+      }
       diags_.report(DiagKind::ExpectedAddressValue, letter.range, letter.text);
       noteParenthesis(letter);
       fail();

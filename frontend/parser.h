@@ -7,6 +7,7 @@
 #include "frontend/lexer.h"
 
 #include <deque>
+#include <optional>
 
 namespace mbc {
 
@@ -86,6 +87,10 @@ private:
   void pushBlock(Block& b);
   void noteParenthesis(const Token& after);
   std::string sourceText(SourceRange r) const;
+  /// The stray text (ASSY, OP 10 ROUGH) that starts at an address without
+  /// a value: three letters in a row, up to the end of the line, or the
+  /// word alone before a comment; none for a plain missing value.
+  std::optional<SourceRange> strayText(const Token& letter) const;
   const Token* messageAfter(std::uint32_t offset) const;
   void checkMessageLength(const Stmt& s, const Token& comment);
   Program& currentProgram(SourceLoc at);
