@@ -36,7 +36,7 @@ import random
 import subprocess
 
 from oracle_geometry import (Frame, add, beside, corner, cross, distance,
-                             mul, norm, points, sub, tangent, unit)
+                             fmt, mul, norm, points, sub, tangent, unit)
 
 TOLERANCE = 0.003  # rounding to 0.001 mm of ends, centres and frames
 # The imaginary tip from the nose centre by tip direction, in nose radii
@@ -54,12 +54,6 @@ ARC_TOLERANCE = 0.005
 # arcs that bend towards each other) to less than the tool: the contour's
 # fault, which no compensation can help.
 CORNER_REACH = 2.5
-
-
-def fmt(value):
-    """A coordinate as a program writes it: three decimals, a point."""
-    text = f"{value:.3f}".rstrip("0")
-    return "0" if text in ("-0.", "0.") else text
 
 
 class Case:

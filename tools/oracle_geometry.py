@@ -10,6 +10,13 @@ never more than a full turn."""
 import math
 
 
+def fmt(value):
+    """A coordinate as a program writes it: three decimals at most, and a
+    decimal point."""
+    text = f"{value:.3f}".rstrip("0")
+    return "0" if text in ("-0.", "0.") else text
+
+
 def add(a, b):
     return (a[0] + b[0], a[1] + b[1])
 

@@ -21,15 +21,10 @@ import math
 import random
 import subprocess
 
-from oracle_geometry import Frame
+from oracle_geometry import Frame, fmt
 
 TOLERANCE = 0.0025  # each side rounds its points to 0.001 mm
 FORMS = ("absolute", "incremental", "polar")
-
-
-def fmt(value):
-    text = f"{value:.3f}".rstrip("0")
-    return "0" if text in ("-0.", "0.") else text
 
 
 def point(rng, reach=40.0):

@@ -160,6 +160,15 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   takeDateAndTime(ctx);
 }
 
+/// A new context's state from its profile: what mbrt_create makes, and
+/// mbrt_reset again.
+void powerOn(mbrt_ctx& ctx, Profile profile) {
+  ctx.profile = std::move(profile);
+  loadProfile(ctx);
+  resetMachineState(ctx);
+  startRun(ctx, "MAIN");
+}
+
 /// What the host set on a context, which a reset keeps: the sinks, the
 /// limits, the block skip switches and the names of the programs loaded.
 void keepHostSettings(mbrt_ctx& from, mbrt_ctx& to) {
@@ -195,10 +204,7 @@ mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
       return nullptr;
     }
     auto* ctx = new mbrt_ctx;
-    ctx->profile = std::move(*profile);
-    loadProfile(*ctx);
-    resetMachineState(*ctx);
-    startRun(*ctx, "MAIN");
+    powerOn(*ctx, std::move(*profile));
     return ctx;
   } catch (const std::bad_alloc&) {
     // No allocation here: there is no memory for one.
@@ -310,11 +316,8 @@ void mbrt_reset(mbrt_ctx* ctx) {
   // setting, a signal, whatever is added later) can outlive the reset, so
   // that runs after it never see each other.
   mbrt_ctx fresh;
-  fresh.profile = std::move(ctx->profile);
   keepHostSettings(*ctx, fresh);
-  loadProfile(fresh);
-  resetMachineState(fresh);
-  startRun(fresh, "MAIN");
+  powerOn(fresh, std::move(ctx->profile));
   *ctx = std::move(fresh);
 }
 

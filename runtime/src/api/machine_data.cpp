@@ -4,7 +4,9 @@
 #include <mbc/runtime.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
+#include <span>
 #include <string>
 
 #include "context.h"
@@ -34,9 +36,10 @@ std::optional<double> machineCounts(double value, double increments,
   return counts * perIncrement;
 }
 
-const MillOffsetKey* millField(const mbrt_ctx& ctx, const char* name) {
-  for (const MillOffsetKey& key :
-       millOffsetKeys(ctx.profile.toolOffsetMemory)) {
+/// The entry of `keys` (offset_keys.h) named `name`, or nullptr.
+template <class Key>
+const Key* findField(std::span<const Key> keys, const char* name) {
+  for (const Key& key : keys) {
     if (name != nullptr && std::strcmp(name, key.key) == 0) {
       return &key;
     }
@@ -44,13 +47,10 @@ const MillOffsetKey* millField(const mbrt_ctx& ctx, const char* name) {
   return nullptr;
 }
 
-const LatheOffsetKey* latheField(const mbrt_ctx& ctx, const char* name) {
-  for (const LatheOffsetKey& key : latheOffsetKeys(ctx.profile.geometryWear)) {
-    if (name != nullptr && std::strcmp(name, key.key) == 0) {
-      return &key;
-    }
-  }
-  return nullptr;
+/// The name of the i-th entry of `keys`, or nullptr past the last.
+template <class Key> const char* fieldName(std::span<const Key> keys, int i) {
+  return i >= 0 && static_cast<std::size_t>(i) < keys.size() ? keys[i].key
+                                                             : nullptr;
 }
 
 bool hasToolOffset(const mbrt_ctx& ctx, int number) {
@@ -108,14 +108,9 @@ int mbrt_set_work_offset(mbrt_ctx* ctx, const char* set, int axis,
 }
 
 const char* mbrt_tool_offset_field(const mbrt_ctx* ctx, int i) {
-  if (ctx->profile.lathe()) {
-    const auto keys = latheOffsetKeys(ctx->profile.geometryWear);
-    return i >= 0 && static_cast<std::size_t>(i) < keys.size() ? keys[i].key
-                                                               : nullptr;
-  }
-  const auto keys = millOffsetKeys(ctx->profile.toolOffsetMemory);
-  return i >= 0 && static_cast<std::size_t>(i) < keys.size() ? keys[i].key
-                                                             : nullptr;
+  return ctx->profile.lathe()
+             ? fieldName(latheOffsetKeys(ctx->profile.geometryWear), i)
+             : fieldName(millOffsetKeys(ctx->profile.toolOffsetMemory), i);
 }
 
 int mbrt_get_tool_offset(const mbrt_ctx* ctx, int number, const char* field,
@@ -125,13 +120,15 @@ int mbrt_get_tool_offset(const mbrt_ctx* ctx, int number, const char* field,
   }
   const auto n = static_cast<std::size_t>(number);
   if (ctx->profile.lathe()) {
-    const LatheOffsetKey* key = latheField(*ctx, field);
+    const LatheOffsetKey* key =
+        findField(latheOffsetKeys(ctx->profile.geometryWear), field);
     if (key != nullptr) {
       *value = ctx->latheOffsets[n].*(key->field);
     }
     return key != nullptr;
   }
-  const MillOffsetKey* key = millField(*ctx, field);
+  const MillOffsetKey* key =
+      findField(millOffsetKeys(ctx->profile.toolOffsetMemory), field);
   if (key != nullptr) {
     *value = ctx->toolOffsets[n].*(key->field);
   }
@@ -147,7 +144,8 @@ int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
   const double increments = ctx->inputScale(ctx->profile.inch);
   const std::optional<double> counts = machineCounts(value, increments, 1);
   if (ctx->profile.lathe()) {
-    const LatheOffsetKey* key = latheField(*ctx, field);
+    const LatheOffsetKey* key =
+        findField(latheOffsetKeys(ctx->profile.geometryWear), field);
     const bool tip = key != nullptr && key->letter == 'Q';
     if (key == nullptr ||
         (tip && (value != std::floor(value) || value < 0 || value > 9)) ||
@@ -160,7 +158,8 @@ int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
                        key->letter, units);
     return 1;
   }
-  const MillOffsetKey* key = millField(*ctx, field);
+  const MillOffsetKey* key =
+      findField(millOffsetKeys(ctx->profile.toolOffsetMemory), field);
   if (key == nullptr || !counts) {
     return 0;
   }

@@ -52,4 +52,11 @@ mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what) {
                            what, ctx.corner.line));
 }
 
+mbrt_status refuseUnderHeldMoves(mbrt_ctx& ctx, std::string_view what) {
+  if (const mbrt_status status = refuseUnderCompensation(ctx, what)) {
+    return status;
+  }
+  return refuseUnderHeldCorner(ctx, what);
+}
+
 } // namespace mbc::rt

@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "cutter_comp.h"
 #include "frames.h"
 #include "held_block.h"
 
@@ -53,12 +52,10 @@ mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved) {
     if (newGeometry) {
       // The geometry offset moves the coordinate system, which a held
       // move's corner or offset vector cannot span.
-      const std::string change = fmt::format(
-          "T{} (another geometry offset: a new coordinate system)", t);
-      if (const mbrt_status status = refuseUnderCompensation(ctx, change)) {
-        return status;
-      }
-      if (const mbrt_status status = refuseUnderHeldCorner(ctx, change)) {
+      if (const mbrt_status status = refuseUnderHeldMoves(
+              ctx, fmt::format("T{} (another geometry offset: a new "
+                               "coordinate system)",
+                               t))) {
         return status;
       }
     }

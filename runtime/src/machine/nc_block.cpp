@@ -469,12 +469,8 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   next.cycle = ctx.modal.cycle;
   const bool newOrigin = next.workOffset != ctx.modal.workOffset;
   if (newOrigin || inch != ctx.modal.inch) {
-    const char* change =
-        newOrigin ? "a work coordinate system change" : "G20/G21";
-    if (const mbrt_status status = refuseUnderCompensation(ctx, change)) {
-      return status;
-    }
-    if (const mbrt_status status = refuseUnderHeldCorner(ctx, change)) {
+    if (const mbrt_status status = refuseUnderHeldMoves(
+            ctx, newOrigin ? "a work coordinate system change" : "G20/G21")) {
       return status;
     }
   }
