@@ -10,7 +10,11 @@ motion programs without reading mbc's geometry:
 * calls: part of the program in a subprogram (M98) or a macro (G65) makes
   the path of the program that has it inline;
 * G16: points written as a radius and an angle make the path of their
-  Cartesian twins, to the rounding of the conversion.
+  Cartesian twins, to the rounding of the conversion;
+* a tool length offset given in a later block (G43 H, preferably in the
+  block after a chamfer or corner R, whose moves that block makes): the
+  plain path, the machine Z higher by the offset from that block's own
+  moves on, and not for the moves of the blocks before it.
 
 A motion program is a list of blocks: rapids and feeds (with ,C and ,R
 corners between lines), arcs with R or I J, a drilling cycle, and
@@ -24,6 +28,7 @@ import subprocess
 from oracle_geometry import Frame, fmt
 
 TOLERANCE = 0.0025  # each side rounds its points to 0.001 mm
+LENGTH = 25.0  # H1, which the length relation's G43 takes
 FORMS = ("absolute", "incremental", "polar")
 
 
@@ -155,23 +160,42 @@ class Motion:
     def compensates(self):
         return any(kind == "contour" for kind, _ in self.blocks)
 
-    def text(self, form="absolute", frame_lines=(), caller=None):
+    def length_block(self):
+        """The block the length relation gives G43 H1: a line after a
+        line with a corner when there is one, else any line or rapid;
+        None when the program has neither."""
+        moves = [i for i, (kind, _) in enumerate(self.blocks)
+                 if kind in ("line", "rapid")]
+        after_corner = [i for i in moves if i > 0 and
+                        self.blocks[i - 1][0] == "line" and
+                        self.blocks[i - 1][1][1]]
+        return (after_corner or moves or [None])[0]
+
+    def text(self, form="absolute", frame_lines=(), caller=None,
+             length_at=None):
         """The program: `form` one of FORMS (polar: the lines, rapids and
         holes as G16 radius and angle); `frame_lines` after the opening;
-        `caller` "M98" or "G65" moves call_span's blocks into O2000."""
+        `caller` "M98" or "G65" moves call_span's blocks into O2000;
+        `length_at` a block that gets G43 H1. self.line_of holds the line
+        each block starts at."""
         state = {"at": (0.0, 0.0), "z": 5.0, "polar": False}
+        head = ["%", "O4000(MOTION ORACLE)", "G90G17G21G40G49G80G94G98",
+                f"G10L10P1R{fmt(LENGTH)}", "G00X0Y0Z5.", *frame_lines,
+                "G00G90X0Y0Z5."]
         body, called = [], []
         first, last = self.call_span
+        self.line_of = {}
         for i, (kind, data) in enumerate(self.blocks):
             lines = self._block(kind, data, form, state)
+            if i == length_at:
+                lines[0] = "G43H1" + lines[0]
+            self.line_of[i] = len(head) + len(body) + 1
             (called if caller and first <= i < last else body).extend(lines)
             if caller and i + 1 == last:
                 body.append(f"{caller}P2000")
         # The frame, then the program's first point in its coordinates: a
         # frame set under a standing tool moves the program position.
-        program = ["%", "O4000(MOTION ORACLE)", "G90G17G21G40G49G80G94G98",
-                   "G00X0Y0Z5.", *frame_lines, "G00G90X0Y0Z5.", *body,
-                   "G15G80G40G90G00Z5.", "M30"]
+        program = [*head, *body, "G15G80G40G90G00Z5.", "M30"]
         if caller:
             program += ["O2000", *called, "M99"]
         return "\n".join(program + ["%"]) + "\n"
@@ -323,6 +347,25 @@ def differences(plain, other, work=Frame(), machine=None, z_scale=1.0):
     return found
 
 
+def length_differences(plain, other, line):
+    """Where `other` (the program with G43 H1 at `line`) is not `plain`
+    with the machine Z higher by LENGTH from the moves of `line` on: the
+    moves a held block makes during that block stay at its own length."""
+    if len(plain) != len(other):
+        return [f"{len(plain)} moves, and {len(other)} with G43 at line "
+                f"{line}"]
+    found = []
+    for n, (a, b) in enumerate(zip(plain, other), 1):
+        rise = LENGTH if a["line"] >= line else 0.0
+        same = all(a[k] == b[k] for k in ("motion", "line", "x", "y", "z"))
+        if not same or abs(a["mz"] + rise - b["mz"]) > TOLERANCE:
+            found.append(f"move {n} (line {a['line']}): {a['motion']} to "
+                         f"({a['x']}, {a['y']}, {a['z']}) at machine Z "
+                         f"{a['mz'] + rise:.4f}, but {b['motion']} to "
+                         f"({b['x']}, {b['y']}, {b['z']}) at {b['mz']}")
+    return found
+
+
 def relations(mbc, motion, folder, rng):
     """(relation name, what differs) for each relation that fails, and the
     number checked; an error of a run counts as a difference. None when
@@ -347,6 +390,15 @@ def relations(mbc, motion, folder, rng):
         found = [error] if records is None else differences(twin, records)
         if found:
             failed.append(("G16", found))
+    at = motion.length_block()
+    if at is not None:  # a tool length offset from a later block on
+        text = motion.text(length_at=at)
+        records, error = run(mbc, text, folder, "G43")
+        checked += 1
+        found = ([error] if records is None else
+                 length_differences(plain, records, motion.line_of[at]))
+        if found:
+            failed.append(("G43", found))
     for relation, text, moved, on_machine, z_scale in trials:
         records, error = run(mbc, text, folder, relation.replace(" ", "_"))
         checked += 1
