@@ -92,7 +92,7 @@ Abi::Abi(llvm::Module& m)
   printItem = llvm::StructType::create(context, {ptr, f64, i32, i32},
                                        "mbrt_print_item");
   flow = llvm::StructType::create(
-      context, {i32, i32, i64, i32, f64, i32, i32, ptr, i64}, "mbrt_flow");
+      context, {i32, i32, i64, i32, f64, i32, i32, ptr, i64, f64}, "mbrt_flow");
   level = llvm::StructType::create(
       context, {llvm::ArrayType::get(f64, kLocalCount), i64}, "mbrt_level");
   blockState = llvm::StructType::create(context, {ptr, i32, i32, i64, i64},

@@ -32,7 +32,8 @@ enum FlowField {
   kFlowCountsPart,
   kFlowCallKind,
   kFlowArgs,
-  kFlowArgCount
+  kFlowArgCount,
+  kFlowStartSeq
 };
 
 enum LevelField { kLevelValue, kLevelAdpMask };

@@ -41,6 +41,7 @@ bool FunctionEmitter::isInlineValue(const ir::Inst& inst) const {
     case ir::Op::RoundAddr:
     case ir::Op::Phi:
     case ir::Op::BlockSkip:
+    case ir::Op::StartSeq:
     case ir::Op::StVar:
     case ir::Op::LdInd:
     case ir::Op::StInd:

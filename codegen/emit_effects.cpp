@@ -300,9 +300,9 @@ llvm::Value* FunctionEmitter::emitCallMacro(const ir::Inst& inst) {
   const Words words = buildWords(inst);
   b_.CreateCall(abi_.fn(Rt::mbrt_trace_call),
                 {ctx_, p, l, words.data, words.count});
-  check(
-      b_.CreateCall(m_.dispatch, {ctx_, p, llvm::ConstantInt::get(abi_.i32, 1),
-                                  words.data, words.count, l, flowSlot_}));
+  check(b_.CreateCall(m_.dispatch,
+                      {ctx_, p, llvm::ConstantInt::get(abi_.i32, 1), words.data,
+                       words.count, l, constant(0), flowSlot_}));
   return b_.CreateInsertValue(
       loadFlow(), llvm::ConstantInt::get(abi_.i32, MBRT_FLOW_NEXT), kFlowKind);
 }

@@ -58,6 +58,8 @@ llvm::Value* FunctionEmitter::emitOp(const ir::Inst& inst) {
                           static_cast<unsigned>(inst.ops.size()));
     case ir::Op::RetSeq:
       return b_.CreateLoad(abi_.f64, retSeqSlot_);
+    case ir::Op::StartSeq:
+      return b_.CreateCall(abi_.fn(Rt::mbrt_entry_sequence), {ctx_});
     case ir::Op::BlockSkip:
       return b_.CreateICmpNE(
           b_.CreateCall(

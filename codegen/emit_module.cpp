@@ -63,12 +63,14 @@ void attribute(ModuleState& m, llvm::Function* fn, llvm::IRBuilder<>& b,
 }
 
 // i32 mbc.call(ptr ctx, double p, i32 kind, ptr args, i64 count,
-//              double repeat, ptr out): the program numbered round(p), called
-// round(repeat) times, or PS0076 (evaluator findProgram and call).
+//              double repeat, double start, ptr out): the program numbered
+// round(p), called round(repeat) times from sequence number `start` (0: its
+// top), or PS0076 (evaluator findProgram and call).
 llvm::Function* emitDispatch(ModuleState& m) {
   const Abi& abi = m.abi;
   auto* type = llvm::FunctionType::get(
-      abi.i32, {abi.ptr, abi.f64, abi.i32, abi.ptr, abi.i64, abi.f64, abi.ptr},
+      abi.i32,
+      {abi.ptr, abi.f64, abi.i32, abi.ptr, abi.i64, abi.f64, abi.f64, abi.ptr},
       false);
   auto* fn = llvm::Function::Create(type, llvm::GlobalValue::InternalLinkage,
                                     "mbc.call", abi.module);
@@ -104,8 +106,8 @@ llvm::Function* emitDispatch(ModuleState& m) {
     b.CreateRet(
         b.CreateCall(abi.fn(Rt::mbrt_run_call),
                      {ctx, m.cstring(callee.name), fn->getArg(2), fn->getArg(3),
-                      fn->getArg(4), repeat, m.bodies[i],
-                      llvm::ConstantPointerNull::get(abi.ptr), fn->getArg(6)}));
+                      fn->getArg(4), repeat, fn->getArg(6), m.bodies[i],
+                      llvm::ConstantPointerNull::get(abi.ptr), fn->getArg(7)}));
   }
   b.SetInsertPoint(missing);
   b.CreateRet(b.CreateCall(abi.fn(Rt::mbrt_raise_program_not_found), {ctx, p}));
@@ -171,7 +173,8 @@ llvm::Function* emitResume(ModuleState& m) {
       m.dispatch, {ctx, b.CreateSIToFP(field(abi.i32, kFlowProgram), abi.f64),
                    field(abi.i32, kFlowCallKind), field(abi.ptr, kFlowArgs),
                    field(abi.i64, kFlowArgCount),
-                   b.CreateSIToFP(field(abi.i64, kFlowRepeat), abi.f64), flow});
+                   b.CreateSIToFP(field(abi.i64, kFlowRepeat), abi.f64),
+                   field(abi.f64, kFlowStartSeq), flow});
   llvm::BasicBlock* called = block("called");
   llvm::BasicBlock* failed = block("failed");
   b.CreateCondBr(b.CreateICmpEQ(status, i32(0)), called, failed);

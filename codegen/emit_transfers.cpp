@@ -12,10 +12,18 @@ namespace mbc::codegen::detail {
 
 // Computed GOTO (evaluator switchTo), and the switch of an M99 P landing: a
 // number outside 1..99999 or without an N is PS0128, worded by the runtime.
+// The start of a program an M98 Q entered (evaluator startAt) is
+// PS0078 when it has no such N.
 void FunctionEmitter::emitSwitch(const ir::Inst& inst) {
   llvm::Value* target = numOperand(inst, 0);
   switchOnSequence(inst, target);
-  bool landing = fn_.insts[inst.ops[0]].op == ir::Op::RetSeq;
+  const ir::Op from = fn_.insts[inst.ops[0]].op;
+  if (from == ir::Op::StartSeq) {
+    leave(b_.CreateCall(abi_.fn(Rt::mbrt_raise_start_sequence),
+                        {ctx_, target, name_}));
+    return;
+  }
+  bool landing = from == ir::Op::RetSeq;
   leave(b_.CreateCall(
       abi_.fn(Rt::mbrt_raise_sequence),
       {ctx_, m_.cstring(landing ? "M99 P" : "GOTO "), target, name_}));

@@ -150,14 +150,32 @@ mbrt_status Interpreter::jumpTo(int seq, int from) {
 }
 
 mbrt_status Interpreter::enter(int program, int kind,
-                               std::vector<mbrt_word> args, long repeat) {
+                               std::vector<mbrt_word> args, long repeat,
+                               double startSeq) {
   const char* name = unit_.programs[program].name.c_str();
   if (mbrt_status st = mbrt_call(ctx_, name, kind, args.data(), args.size())) {
     return st;
   }
-  stack_.push_back({prog_, pc_ + 1, repeat - 1, kind, std::move(args)});
+  stack_.push_back(
+      {prog_, pc_ + 1, repeat - 1, kind, std::move(args), startSeq});
   prog_ = program;
+  return start();
+}
+
+// The called program's first block, or the N an M98 Q names, searched from
+// its top (PS0078 when it has none).
+mbrt_status Interpreter::start() {
+  const double seq = stack_.back().startSeq;
   pc_ = 0;
+  if (seq == 0) {
+    return 0;
+  }
+  const Program& program = unit_.programs[prog_];
+  const int target = findSequence(program, static_cast<int>(seq), 0);
+  if (target < 0) {
+    return mbrt_raise_start_sequence(ctx_, seq, program.name.c_str());
+  }
+  pc_ = target;
   return 0;
 }
 
@@ -173,8 +191,11 @@ mbrt_status Interpreter::leave(bool hasSeq, double seq, bool& finished) {
   if (f.remaining > 0 && !hasSeq) {
     --f.remaining;
     const char* name = unit_.programs[prog_].name.c_str();
-    pc_ = 0;
-    return mbrt_call(ctx_, name, f.kind, f.args.data(), f.args.size());
+    if (mbrt_status st =
+            mbrt_call(ctx_, name, f.kind, f.args.data(), f.args.size())) {
+      return st;
+    }
+    return start();
   }
   prog_ = f.program;
   pc_ = f.returnBlock;

@@ -35,6 +35,7 @@ private:
     long remaining; // repetitions still to run (L)
     int kind;       // mbrt_call_kind
     std::vector<mbrt_word> args;
+    double startSeq; // M98 Q: the N each repetition starts at, 0: the top
   };
 
   // Control (interpreter.cpp).
@@ -43,7 +44,8 @@ private:
   // M99 P's `seq` rounded, PS0128 outside 1..99999.
   mbrt_status jumpToSeq(double seq, int from);
   mbrt_status enter(int program, int kind, std::vector<mbrt_word> args,
-                    long repeat);
+                    long repeat, double startSeq = 0);
+  mbrt_status start();
   mbrt_status leave(bool hasSeq, double seq, bool& finished);
   int findProgram(double number) const;
 

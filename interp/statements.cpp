@@ -119,7 +119,8 @@ mbrt_status Interpreter::execNc(const Stmt& s, bool& finished) {
         return 0;
       }
       return enter(target, flow.call_kind,
-                   {flow.args, flow.args + flow.arg_count}, flow.repeat);
+                   {flow.args, flow.args + flow.arg_count}, flow.repeat,
+                   flow.start_seq);
     }
     case MBRT_FLOW_RETURN: {
       if (stack_.empty() && flow.has_seq != 0) {

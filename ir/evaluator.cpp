@@ -144,6 +144,20 @@ mbrt_status Evaluator::switchTo(const Function& fn, const Inst& inst,
   return caseTarget(fn, inst, static_cast<int>(n), next);
 }
 
+// M98 Q: the N the program starts at, searched from its top (interp
+// enter).
+mbrt_status Evaluator::startAt(const Function& fn, const Inst& inst, double seq,
+                               BlockId& next) {
+  const std::vector<std::int64_t>& numbers = inst.get<SequenceCases>().numbers;
+  for (std::size_t i = 0; i < numbers.size() && i < inst.targets.size(); ++i) {
+    if (static_cast<double>(numbers[i]) == seq) {
+      next = inst.targets[i];
+      return 0;
+    }
+  }
+  return mbrt_raise_start_sequence(ctx_, seq, fn.name.c_str());
+}
+
 // M99 P back into this activation: to the landing, or through the
 // resume's own case table.
 mbrt_status Evaluator::resumeAt(const Function& fn, Frame& frame,
@@ -204,8 +218,9 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
         return mbrt_raise_program_not_found(ctx_, flow.program);
       }
       FlowRec out{};
-      if (mbrt_status st = call(target, depth, flow.call_kind, flow.args,
-                                flow.arg_count, flow.repeat, out)) {
+      if (mbrt_status st =
+              call(target, depth, flow.call_kind, flow.args, flow.arg_count,
+                   flow.repeat, flow.start_seq, out)) {
         return st;
       }
       if (out.flow.has_seq) {
@@ -242,7 +257,7 @@ mbrt_status Evaluator::resumeNc(const Function& fn, Frame& frame, int depth,
 // other engine. `out` is the call's flow: NEXT, with has_seq/seq for M99 P.
 mbrt_status Evaluator::call(int callee, int depth, int kind,
                             const mbrt_word* args, std::size_t count,
-                            long repeat, FlowRec& out) {
+                            long repeat, double startSeq, FlowRec& out) {
   struct Activation {
     Evaluator* self;
     int callee;
@@ -264,7 +279,7 @@ mbrt_status Evaluator::call(int callee, int depth, int kind,
   out.fromCall = true;
   return mbrt_run_call(
       ctx_, module_.functions[static_cast<std::size_t>(callee)].name.c_str(),
-      kind, args, count, repeat, body, &activation, &out.flow);
+      kind, args, count, repeat, startSeq, body, &activation, &out.flow);
 }
 
 } // namespace detail

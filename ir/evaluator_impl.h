@@ -56,6 +56,8 @@ private:
                        const Inst& inst, BlockId& next);
   mbrt_status switchTo(const Function& fn, const Inst& inst, double value,
                        const char* jump, BlockId& next);
+  mbrt_status startAt(const Function& fn, const Inst& inst, double seq,
+                      BlockId& next);
   mbrt_status resumeAt(const Function& fn, Frame& frame, const Inst& inst,
                        double seq, BlockId& next);
   mbrt_status jumpToSeq(const Function& fn, const Inst& inst, double seq,
@@ -63,7 +65,8 @@ private:
   mbrt_status caseTarget(const Function& fn, const Inst& inst, int seq,
                          BlockId& next);
   mbrt_status call(int callee, int depth, int kind, const mbrt_word* args,
-                   std::size_t count, long repeat, FlowRec& out);
+                   std::size_t count, long repeat, double startSeq,
+                   FlowRec& out);
   int findProgram(double number) const;
   mbrt_status internalError(const char* what);
 

@@ -82,6 +82,9 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
     case Op::RetSeq:
       v[id] = frame.retSeq;
       return 0;
+    case Op::StartSeq:
+      v[id] = mbrt_entry_sequence(ctx_);
+      return 0;
     case Op::BlockSkip:
       v[id] = truth(mbrt_skip_switch(ctx_, inst.get<SkipSwitch>().number) != 0);
       return 0;
@@ -123,6 +126,9 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
       next = v[inst.ops[0]] != 0 ? inst.targets[0] : inst.targets[1];
       return 0;
     case Op::Switch: // a landing's switch words its alarm as M99 P does
+      if (fn.insts[inst.ops[0]].op == Op::StartSeq) {
+        return startAt(fn, inst, v[inst.ops[0]], next);
+      }
       return switchTo(
           fn, inst, v[inst.ops[0]],
           fn.insts[inst.ops[0]].op == Op::RetSeq ? "M99 P" : "GOTO ", next);
@@ -232,7 +238,7 @@ mbrt_status Evaluator::execCallMacro(const Inst& inst, Frame& frame, int depth,
     return 0;
   }
   return call(target, depth, MBRT_CALL_MACRO, frame.args.data(),
-              frame.args.size(), repeat, out);
+              frame.args.size(), repeat, 0.0, out);
 }
 
 mbrt_status Evaluator::execTrace(const Inst& inst, const Frame& frame) {

@@ -7,6 +7,7 @@
 #include "frontend/sema.h"
 #include "frontend/trace_text.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -17,8 +18,9 @@ namespace {
 class FunctionLowering {
 public:
   FunctionLowering(const Program& program, Module& module, Function& fn,
-                   const LowerOptions& options)
-      : program_(program), module_(module), fn_(fn), options_(options) {}
+                   const LowerOptions& options, bool startsAtSequence)
+      : program_(program), module_(module), fn_(fn), options_(options),
+        startsAtSequence_(startsAtSequence) {}
 
   void run();
 
@@ -38,6 +40,7 @@ private:
   void addSequenceTable(SequenceCases& cases, std::vector<BlockId>& targets,
                         int from);
   BlockId landing(int from);
+  void enterAt(BlockId entry);
   ValueId lowerExpr(const Expr& e, char roundLetter = 0);
   ValueId lowerNum(const Expr& e, char roundLetter = 0);
   ValueId lowerCall(const Expr& e, char roundLetter);
@@ -49,6 +52,7 @@ private:
   Module& module_;
   Function& fn_;
   const LowerOptions& options_;
+  bool startsAtSequence_;      // some M98 Q may enter it (mayStartAtSequence)
   std::vector<BlockId> heads_; // head block of each source block, + exit
   BlockId cur_ = 0;
   std::uint32_t line_ = 0;
@@ -107,8 +111,7 @@ void FunctionLowering::run() {
   for (int i = 0; i <= n; ++i) {
     heads_.push_back(newBlock());
   }
-  cur_ = entry;
-  terminate(Op::Br, {head(0)});
+  enterAt(entry);
   for (int i = 0; i < n; ++i) {
     lowerBlock(i);
   }
@@ -316,6 +319,24 @@ BlockId FunctionLowering::landing(int from) {
   return land;
 }
 
+// A program starts at its first block, or at the N an M98 Q names,
+// searched from its top (PS0078 when it has none).
+void FunctionLowering::enterAt(BlockId entry) {
+  cur_ = entry;
+  if (!startsAtSequence_) {
+    terminate(Op::Br, {head(0)});
+    return;
+  }
+  ValueId start = emit(Op::StartSeq);
+  ValueId top = emit(Op::Eq, {start, constant(0)});
+  BlockId search = newBlock();
+  terminate(Op::CondBr, {head(0), search}, {top});
+  cur_ = search;
+  terminate(Op::Switch, {}, {start});
+  Inst& sw = fn_.insts.back();
+  addSequenceTable(sw.get<SequenceCases>(), sw.targets, 0);
+}
+
 Words FunctionLowering::lowerWords(const std::vector<Word>& words,
                                    std::vector<ValueId>& ops) {
   Words into;
@@ -439,10 +460,40 @@ ValueId FunctionLowering::lowerCall(const Expr& e, char roundLetter) {
   return v;
 }
 
+bool isLiteral(const Word& w, double value) {
+  return w.kind == mbc::WordKind::IntLiteral &&
+         w.value->kind == ExprKind::Number && w.value->number == value;
+}
+
+// Only an M98 or M198 block with Q starts a program at a sequence number.
+// Where the unit has none, no program needs the start's case table, whose
+// edges into every N would cost the optimiser what it knows there. Calls
+// reach only the programs of their own unit, so the answer is exact; an M
+// code computed at run time (M#1 Q5) counts as a call.
+bool mayStartAtSequence(const Unit& unit) {
+  for (const Program& p : unit.programs) {
+    for (const mbc::Block& b : p.blocks) {
+      const std::vector<Word>& words = b.stmt.words;
+      const auto hasQ = [](const Word& w) { return w.letter == 'Q'; };
+      const auto mayCall = [](const Word& w) {
+        return w.letter == 'M' && (w.kind == mbc::WordKind::Value ||
+                                   isLiteral(w, 98) || isLiteral(w, 198));
+      };
+      if (b.stmt.kind == StmtKind::Nc &&
+          std::any_of(words.begin(), words.end(), hasQ) &&
+          std::any_of(words.begin(), words.end(), mayCall)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 } // namespace
 
 Module lower(const Unit& unit, const SourceManager& sources,
              const LowerOptions& options) {
+  const bool startsAtSequence = mayStartAtSequence(unit);
   Module m;
   m.functions.resize(unit.programs.size());
   for (std::size_t i = 0; i < unit.programs.size(); ++i) {
@@ -451,7 +502,7 @@ Module lower(const Unit& unit, const SourceManager& sources,
     fn.name = p.name;
     fn.number = p.number;
     fn.file = sources.name(p.file);
-    FunctionLowering(p, m, fn, options).run();
+    FunctionLowering(p, m, fn, options, startsAtSequence).run();
   }
   return m;
 }

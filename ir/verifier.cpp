@@ -263,6 +263,10 @@ void FunctionVerifier::checkInst(BlockId b, std::uint32_t index, ValueId id) {
   if (inst.op == Op::RetSeq) {
     checkLanding(b, id);
   }
+  // The runtime sets what startseq reads only as the program is entered.
+  if (inst.op == Op::StartSeq && b != 0) {
+    fail(b, id, "startseq outside the entry block");
+  }
 }
 
 // retseq reads the sequence number of the M99 P that entered its block, so

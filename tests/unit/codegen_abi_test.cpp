@@ -65,13 +65,13 @@ TEST_F(CodegenAbi, StructsLayOutAsTheRuntimeDeclaresThem) {
                   offsetof(mbrt_print_item, value),
                   offsetof(mbrt_print_item, int_digits),
                   offsetof(mbrt_print_item, frac_digits)));
-  EXPECT_EQ(shape(abi_.flow),
-            SHAPE(mbrt_flow, offsetof(mbrt_flow, kind),
-                  offsetof(mbrt_flow, program), offsetof(mbrt_flow, repeat),
-                  offsetof(mbrt_flow, has_seq), offsetof(mbrt_flow, seq),
-                  offsetof(mbrt_flow, counts_part),
-                  offsetof(mbrt_flow, call_kind), offsetof(mbrt_flow, args),
-                  offsetof(mbrt_flow, arg_count)));
+  EXPECT_EQ(
+      shape(abi_.flow),
+      SHAPE(mbrt_flow, offsetof(mbrt_flow, kind), offsetof(mbrt_flow, program),
+            offsetof(mbrt_flow, repeat), offsetof(mbrt_flow, has_seq),
+            offsetof(mbrt_flow, seq), offsetof(mbrt_flow, counts_part),
+            offsetof(mbrt_flow, call_kind), offsetof(mbrt_flow, args),
+            offsetof(mbrt_flow, arg_count), offsetof(mbrt_flow, start_seq)));
   EXPECT_EQ(shape(abi_.level), SHAPE(mbrt_level, offsetof(mbrt_level, value),
                                      offsetof(mbrt_level, adp_mask)));
   EXPECT_EQ(shape(abi_.blockState),

@@ -62,19 +62,26 @@ b5:
 
 func @<DRILL_CYCLE> #100000000 "lib.nc" {
 b0:
+  %5 = startseq
+  %6 = const 0
+  %7 = eq %5, %6
+  condbr %7, b1, b4
+b1:
   begin 2
   %0 = ldvar #26
   %1 = const 0.25
   %2 = const 2
   %3 = call.macro %1, %2
-  resume %3, b1, b2
-b1:
+  resume %3, b2, b3
+b2:
   begin 3
   ret
-b2:
-  %4 = retseq
-  switch %4 [3: b1]
 b3:
+  %4 = retseq
+  switch %4 [3: b2]
+b4:
+  switch %5 [3: b2]
+b5:
   begin 4
   raise PS0114, "expected ']' to close '['"
 }

@@ -215,15 +215,23 @@ TEST(RuntimeNcBlock, LatheFormsOnAMill) {
 }
 
 // M198 calls like M98 (the program comes from the search path); M98 Q
-// (start at a sequence number) stops instead of being ignored; G04 P counts
-// milliseconds and takes no decimal point.
+// starts the program at a sequence number, without P one of the running
+// program; G04 P counts milliseconds and takes no decimal point.
 TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
   Machine m;
   expectSubprogramCall(m, "M198 P2002 L2", 2002, 2);
-  EXPECT_EQ(m.block("M98 P2002 Q30", 4), status(AlarmId::Unsupported));
-  EXPECT_EQ(m.report(), "test.nc:4: alarm MBC0001: NOT SUPPORTED BY MBC YET: "
-                        "M98 P2002 Q30 (starting a subprogram at a sequence "
-                        "number)\n");
+  EXPECT_EQ(m.flow().start_seq, 0.0);
+  expectSubprogramCall(m, "M98 P2002 Q30", 2002, 1);
+  EXPECT_EQ(m.flow().start_seq, 30.0);
+  EXPECT_EQ(m.block("M98 P2002 Q0", 4),
+            status(AlarmId::SequenceNumberNotFound));
+  EXPECT_EQ(m.report(), "test.nc:4: alarm PS0078: SEQUENCE NUMBER NOT FOUND: "
+                        "M98 Q0\n");
+  expectSubprogramCall(m, "M98 Q30 L2", 1000, 2); // O1000 is running
+  EXPECT_EQ(m.flow().start_seq, 30.0);
+  Machine anonymous; // a file without O number has none to call
+  mbrt_start(anonymous.ctx(), "MAIN");
+  EXPECT_EQ(anonymous.block("M98 Q30"), status(AlarmId::Unsupported));
   Machine d;
   EXPECT_EQ(d.block("G04 P1.5", 2), status(AlarmId::IllegalDecimalPoint));
   ASSERT_EQ(d.block("G04 P1500"), 0);
@@ -415,7 +423,8 @@ TEST(RuntimeNcBlock, SubprogramCallFlow) {
   EXPECT_EQ(m.flow().kind, MBRT_FLOW_NEXT);
   EXPECT_EQ(m.block("M98", 6), status(AlarmId::ProgramNotFound));
   EXPECT_EQ(m.report(),
-            "test.nc:6: alarm PS0076: PROGRAM NOT FOUND: M98 without P\n");
+            "test.nc:6: alarm PS0076: PROGRAM NOT FOUND: M98 without P or "
+            "Q\n");
 }
 
 // With 4-digit program numbers the high digits of a longer P are the

@@ -97,7 +97,7 @@ TEST(RuntimePrograms, CallRepeatsWithArgumentsAndLevels) {
   Machine m;
   const std::vector<mbrt_word> args = parseWords("A=7");
   mbrt_flow out{};
-  ASSERT_EQ(mbrt_run_call(m.ctx(), "O0012", 1, args.data(), args.size(), 3,
+  ASSERT_EQ(mbrt_run_call(m.ctx(), "O0012", 1, args.data(), args.size(), 3, 0,
                           countingBody, nullptr, &out),
             0);
   EXPECT_EQ(m.read(100), 3.0);
@@ -111,7 +111,7 @@ TEST(RuntimePrograms, M99PStopsTheRepeats) {
   Machine m;
   m.write(102, 40);
   mbrt_flow out{};
-  ASSERT_EQ(mbrt_run_call(m.ctx(), "O0012", 0, nullptr, 0, 5, countingBody,
+  ASSERT_EQ(mbrt_run_call(m.ctx(), "O0012", 0, nullptr, 0, 5, 0, countingBody,
                           nullptr, &out),
             0);
   EXPECT_EQ(m.read(100), 1.0);
@@ -122,7 +122,7 @@ TEST(RuntimePrograms, M99PStopsTheRepeats) {
 TEST(RuntimePrograms, NoRepeatNoCall) {
   Machine m;
   mbrt_flow out{};
-  EXPECT_EQ(mbrt_run_call(m.ctx(), "O0012", 1, nullptr, 0, 0, countingBody,
+  EXPECT_EQ(mbrt_run_call(m.ctx(), "O0012", 1, nullptr, 0, 0, 0, countingBody,
                           nullptr, &out),
             0);
   EXPECT_TRUE(isVacant(m.read(100)));

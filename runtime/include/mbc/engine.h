@@ -115,6 +115,9 @@ struct mbrt_flow {
    * executes its next NC block. */
   const mbrt_word* args;
   size_t arg_count;
+  /* CALL by M98/M198 Q: the sequence number the program starts at; 0 from
+   * its top. */
+  double start_seq;
 };
 
 /* Executes an NC block (modal G codes, motion, canned cycles, F S T M H D
@@ -166,10 +169,17 @@ int mbrt_call_depth(const mbrt_ctx* ctx);
 
 /* A call of `body` (kind: mbrt_call_kind), `repeat` times (none when <= 0):
  * each time mbrt_call, the body, the return; an M99 P stops the repetitions
- * and is passed on in out->has_seq/seq. */
+ * and is passed on in out->has_seq/seq. Each time the body starts at
+ * sequence number `start_seq` (M98 Q; 0: at its top), which it reads with
+ * mbrt_entry_sequence. */
 mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
                           const mbrt_word* args, size_t count, long repeat,
-                          mbrt_body_fn body, void* user, mbrt_flow* out);
+                          double start_seq, mbrt_body_fn body, void* user,
+                          mbrt_flow* out);
+
+/* The sequence number the program just entered starts at (M98 P Q, M98 Q),
+ * 0 for its first block. A body reads it before anything else. */
+double mbrt_entry_sequence(const mbrt_ctx* ctx);
 
 /* Runs a program as the main program from the current state (after
  * mbrt_start and any variable presets): 0 or the alarm that stopped it. */
@@ -210,6 +220,11 @@ mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail);
  * "N<seq> not found in <program>". */
 mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
                                 const char* program);
+
+/* PS0078 "M98 Q<seq>" or "N<seq> not found in <program>": the sequence
+ * number a call asked its program to start at is not there. */
+mbrt_status mbrt_raise_start_sequence(mbrt_ctx* ctx, double seq,
+                                      const char* program);
 
 /* PS0076 "O<number>": a called program that does not exist (PS0074 when
  * the number has more digits than the machine's program numbers). */

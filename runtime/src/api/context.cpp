@@ -119,6 +119,7 @@ void resetMachineState(mbrt_ctx& ctx) {
 void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
   ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
+  ctx.entrySequence = 0.0;
   ctx.calls.clear();
   ctx.modalCalls.clear();
   ctx.blockCalls.clear();

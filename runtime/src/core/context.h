@@ -428,6 +428,7 @@ struct mbrt_ctx {
   int subDepth = 0;
   std::string mainProgram;
   int mainProgramNumber = 0;
+  double entrySequence = 0.0; // mbrt_entry_sequence
   /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
   std::map<int, std::string> programNames;
 

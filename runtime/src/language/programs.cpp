@@ -33,13 +33,15 @@ void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table) {
 
 mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
                           const mbrt_word* args, size_t count, long repeat,
-                          mbrt_body_fn body, void* user, mbrt_flow* out) {
+                          double start_seq, mbrt_body_fn body, void* user,
+                          mbrt_flow* out) {
   *out = mbrt_flow{};
   for (; repeat > 0; --repeat) {
     mbrt_status st = mbrt_call(ctx, program, kind, args, count);
     if (st) {
       return st;
     }
+    ctx->entrySequence = start_seq;
     mbrt_flow leave{};
     if ((st = body(ctx, user, &leave))) {
       return st;
@@ -54,7 +56,12 @@ mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
   return 0;
 }
 
+double mbrt_entry_sequence(const mbrt_ctx* ctx) {
+  return ctx->entrySequence;
+}
+
 mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program) {
+  ctx->entrySequence = 0;
   mbrt_flow leave{};
   const mbrt_status st = program->body(ctx, nullptr, &leave);
   return st > 0 ? st : 0;

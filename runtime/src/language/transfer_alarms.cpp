@@ -19,6 +19,15 @@ mbrt_status mbrt_raise_sequence(mbrt_ctx* ctx, const char* jump, double seq,
   return rt::raise(*ctx, AlarmId::IllegalMacroSequenceNumber, detail);
 }
 
+mbrt_status mbrt_raise_start_sequence(mbrt_ctx* ctx, double seq,
+                                      const char* program) {
+  double n = roundHalfAway(seq);
+  std::string detail = !isSequenceNumber(n)
+                           ? fmt::format("M98 Q{}", seq)
+                           : fmt::format("N{} not found in {}", n, program);
+  return rt::raise(*ctx, AlarmId::SequenceNumberNotFound, detail);
+}
+
 mbrt_status mbrt_raise_program_not_found(mbrt_ctx* ctx, double number) {
   double n = roundHalfAway(number);
   if (const mbrt_status status = rt::checkProgramNumber(*ctx, n)) {

@@ -673,27 +673,30 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
 
 /// M98 P L. With 8-digit program numbers P is the program and L the repeat
 /// count; with 4 digits a P of more than four digits and no L carries the
-/// repeat count in its high digits (spec §5.8).
+/// repeat count in its high digits (spec §5.8). Q starts the program at that
+/// sequence number; without P it is one of the running program.
 mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
-  if (!block.hasP) {
-    return raise(ctx, AlarmId::ProgramNotFound, "M98 without P");
+  if (!block.hasP && !block.qWritten) {
+    return raise(ctx, AlarmId::ProgramNotFound, "M98 without P or Q");
   }
-  if (block.qWritten) {
+  double program = block.hasP ? block.p : ctx.programNumber();
+  if (!block.hasP && program == 0) {
     return raise(ctx, AlarmId::Unsupported,
-                 fmt::format("M98 P{} Q{} (starting a subprogram at a "
-                             "sequence number)",
-                             block.p, *block.qWritten));
+                 fmt::format("M98 Q{} in a program without an O number",
+                             *block.qWritten));
   }
-  double program = block.p;
   double repeat = block.hasL ? block.l : 1.0;
   constexpr double kRepeatUnit = kMaxProgramNumber4Digits + 1.0;
-  if (ctx.profile.programNumberDigits == 4 && !block.hasL &&
+  if (ctx.profile.programNumberDigits == 4 && block.hasP && !block.hasL &&
       program > kMaxProgramNumber4Digits && !isNamedProgramNumber(program)) {
     repeat = std::floor(program / kRepeatUnit);
     program = std::fmod(program, kRepeatUnit);
   }
   if (const mbrt_status status = checkProgramNumber(ctx, program)) {
     return status;
+  }
+  if (block.qWritten && !isSequenceNumber(roundHalfAway(*block.qWritten))) {
+    return mbrt_raise_start_sequence(&ctx, *block.qWritten, ctx.programName());
   }
   if (repeat < 1.0) {
     return 0; // L0: no call
@@ -707,6 +710,7 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   flow->call_kind = MBRT_CALL_SUB;
   flow->program = *number;
   flow->repeat = static_cast<long>(repeat);
+  flow->start_seq = block.qWritten ? roundHalfAway(*block.qWritten) : 0.0;
   return 0;
 }
 
