@@ -176,7 +176,13 @@ TEST(RuntimeBlockCalls, ProfilesCannotRedefineTheControlsCodes) {
   EXPECT_EQ(mbrt_create(R"({"parameters": {"6050": 81}})", err, sizeof err),
             nullptr);
   EXPECT_STREQ(err, "machine profile: \"parameters.6050\" must not be a G code "
-                    "the control has (G81)");
+                    "mbc executes (G81)");
+  // A code of the control's list that mbc does not execute (G37, automatic
+  // tool length measurement) may be given to a probing macro.
+  Machine probing(R"({"parameters": {"6050": 37}})");
+  ASSERT_EQ(probing.block("G37 Z-10."), 0);
+  EXPECT_EQ(probing.flow().kind, MBRT_FLOW_CALL);
+  EXPECT_EQ(probing.flow().program, 9010);
   EXPECT_EQ(mbrt_create(R"({"parameters": {"6071": 30}})", err, sizeof err),
             nullptr);
   EXPECT_STREQ(err,

@@ -26,7 +26,8 @@ inline constexpr bool isCallingCodeParameter(int n) {
 }
 
 /// Whether G<tenths/10> may be made a custom macro code: FANUC's own G
-/// codes never are (G65, G66 and G66.1 call by themselves).
+/// codes that mbc executes never are (G65, G66 and G66.1 call by
+/// themselves); one it does not execute may be.
 bool mayBeCustomGCode(int tenths);
 
 /// Whether a profile may make M<m> call: not M00, M01, M02, M30 (they stop

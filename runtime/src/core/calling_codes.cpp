@@ -12,8 +12,10 @@ bool stopsOrEnds(double m) {
 
 } // namespace
 
+// A FANUC code mbc does not execute may call a macro: the builder gave its
+// number to the macro, and mbc relies only on the codes it executes.
 bool mayBeCustomGCode(int tenths) {
-  return !isFanucGCode(tenths);
+  return !isFanucGCode(tenths) || unmodelledGCode(tenths) != nullptr;
 }
 
 bool mayBeCustomMCode(double m) {

@@ -95,7 +95,7 @@ void parseParameters(const json& value, Profile& profile) {
                         *n < kCustomGCodes.firstParameter + kCustomGCodes.size;
     if (gCodes && x != 0 &&
         !mayBeCustomGCode(static_cast<int>(std::fabs(x)) * 10)) {
-      fail(path, fmt::format("must not be a G code the control has (G{})",
+      fail(path, fmt::format("must not be a G code mbc executes (G{})",
                              std::fabs(x)));
     }
     if (!gCodes && isCallingCodeParameter(*n) && x != 0 &&
