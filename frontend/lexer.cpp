@@ -4,6 +4,7 @@
 #include "frontend/utf8.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -308,6 +309,22 @@ Token Lexer::lexSpecial(std::uint32_t begin) {
       pos_ = begin + 1;
       break;
     }
+    case '_':
+      // #_ABSMT[1]: a 30i-B system variable by name.
+      if (begin > 0 && text_[begin - 1] == '#') {
+        std::uint32_t end = begin + 1;
+        while (end < end_ &&
+               (std::isalnum(static_cast<unsigned char>(text_[end])) != 0 ||
+                text_[end] == '_')) {
+          ++end;
+        }
+        pos_ = end;
+        Token t = make(Tok::Invalid, begin);
+        diags_.report(DiagKind::VariableNameUnsupported, t.range,
+                      std::string(text_.substr(begin + 1, end - begin - 1)));
+        return t;
+      }
+      break;
     default:
       break;
   }

@@ -279,6 +279,44 @@ std::string Parser::sourceText(SourceRange r) const {
       sources_.text(r.begin.file).substr(r.begin.offset, r.length));
 }
 
+// Functions and statements of the 30i-B that mbc does not have: the block
+// stops with MBC0001 naming them, where the letters would otherwise read as
+// addresses (docs/control-tables.md).
+void Parser::refuseUnsupportedFunction(const Token& letter) {
+  struct Form {
+    std::string_view name;
+    const char* what;
+    bool bracket; // written NAME[...]
+  };
+
+  static constexpr Form kForms[] = {
+      {"PRM", "reading a parameter", true},
+      {"AXNUM", "the number of an axis address", true},
+      {"AX", "an axis address by its number", true},
+      {"SETVN", "names for common variables", false},
+  };
+  const std::string_view text = sources_.text(letter.range.begin.file);
+  const std::size_t begin = letter.range.begin.offset;
+  std::size_t end = begin;
+  while (end < text.size() &&
+         std::isalpha(static_cast<unsigned char>(text[end])) != 0) {
+    ++end;
+  }
+  std::string word(text.substr(begin, end - begin));
+  for (char& ch : word) {
+    ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  }
+  for (const Form& form : kForms) {
+    if (word == form.name &&
+        (!form.bracket || (end < text.size() && text[end] == '['))) {
+      SourceRange range = letter.range;
+      range.length = static_cast<std::uint32_t>(end - begin);
+      diags_.report(DiagKind::UnsupportedFunction, range, form.name, form.what);
+      fail();
+    }
+  }
+}
+
 std::optional<SourceRange> Parser::strayText(const Token& letter) const {
   const std::string_view text = sources_.text(letter.range.begin.file);
   const std::size_t begin = letter.range.begin.offset;

@@ -219,6 +219,7 @@ void Parser::enterBracket(int depth, const Token& at) {
 }
 
 void Parser::addressInExpression(const Token& t) {
+  refuseUnsupportedFunction(t);
   diags_.report(DiagKind::AddressInExpression, t.range, t.text);
   if (int var = argumentLocal(t.text[0])) {
     diags_.note(DiagKind::ArgumentVariableNote, t.range, t.text, var);

@@ -317,6 +317,7 @@ Word Parser::parseWord() {
       w.value = parseCall(1);
       break;
     default:
+      refuseUnsupportedFunction(letter);
       if (const std::optional<SourceRange> text = strayText(letter)) {
         const std::string written = sourceText(*text);
         diags_.report(DiagKind::StrayText, *text, written)

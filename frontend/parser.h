@@ -91,6 +91,7 @@ private:
   /// a value: three letters in a row, up to the end of the line, or the
   /// word alone before a comment; none for a plain missing value.
   std::optional<SourceRange> strayText(const Token& letter) const;
+  void refuseUnsupportedFunction(const Token& letter);
   const Token* messageAfter(std::uint32_t offset) const;
   void checkMessageLength(const Stmt& s, const Token& comment);
   Program& currentProgram(SourceLoc at);

@@ -160,10 +160,17 @@ void warnMissing(int n, SourceRange at, Reported& reported,
   if (!reported.defaultMachine && dependsOnProfile(n)) {
     return;
   }
-  if (variableAccess(n) == VarAccess::Missing &&
-      reported.numbers.insert(n).second) {
-    diags.report(DiagKind::VariableMissing, at, n);
+  if (variableAccess(n) != VarAccess::Missing ||
+      !reported.numbers.insert(n).second) {
+    return;
   }
+  UnmodelledVariable unmodelled{};
+  if (unmodelledVariable(n, &unmodelled)) {
+    diags.report(DiagKind::VariableNotModelled, at, n, unmodelled.meaning,
+                 unmodelled.reason);
+    return;
+  }
+  diags.report(DiagKind::VariableMissing, at, n);
 }
 
 void checkVariables(const Expr& e, Reported& reported,

@@ -18,6 +18,16 @@ VarAccess variableAccess(int n);
 /// D offsets #2401-#2800 of 6000#3 V15).
 bool dependsOnProfile(int n);
 
+/// A variable of the control's map that mbc does not model: what it holds
+/// and why mbc has it not.
+struct UnmodelledVariable {
+  const char* meaning;
+  const char* reason;
+};
+
+/// Whether #n is such a variable (PS0115 when a block reads or writes it).
+bool unmodelledVariable(int n, UnmodelledVariable* out);
+
 /// The input signals: #1000-#1031 one each, #1032-#1035 32 at a time.
 inline constexpr int kFirstInputSignal = 1000;
 inline constexpr int kFirstInputWord = 1032;

@@ -210,6 +210,10 @@ static_assert(std::is_sorted(kGCodes.begin(), kGCodes.end(),
 
 } // namespace
 
+std::span<const GCodeInfo> millGCodeList() {
+  return kGCodes;
+}
+
 const GCodeInfo* findGCode(int tenths) {
   const auto it = std::lower_bound(
       kGCodes.begin(), kGCodes.end(), tenths,

@@ -4,6 +4,8 @@
 
 #include <mbc/g_codes.h>
 
+#include <span>
+
 namespace mbc::rt {
 
 struct GCodeInfo {
@@ -26,5 +28,8 @@ inline constexpr bool isLookAheadCode(int tenths) {
 
 /// The FANUC G code with this number in tenths, or nullptr if there is none.
 const GCodeInfo* findGCode(int tenths);
+
+/// Every code of the list, by number (docs/control-tables.md).
+std::span<const GCodeInfo> millGCodeList();
 
 } // namespace mbc::rt

@@ -80,6 +80,15 @@ mbrt_status findOffset(mbrt_ctx& ctx, long n, Found* found) {
 
 } // namespace
 
+std::vector<LatheOffsetVariables> latheOffsetVariables() {
+  std::vector<LatheOffsetVariables> rows;
+  for (const OffsetSeries& series : kSeries) {
+    rows.push_back({series.shortBase, series.shortCount, series.longBase,
+                    latheOffsetKey(series.field).key});
+  }
+  return rows;
+}
+
 mbrt_status readLatheOffset(mbrt_ctx& ctx, long n, Num* out) {
   Found found;
   if (const mbrt_status status = findOffset(ctx, n, &found)) {

@@ -6,6 +6,8 @@
 // #19000+n. The short forms reach offset 64 (Y: 49).
 #pragma once
 
+#include <vector>
+
 #include "context.h"
 
 namespace mbc::rt {
@@ -16,6 +18,18 @@ namespace mbc::rt {
 inline bool isLatheOffsetNumber(long n) {
   return (n >= 2001 && n <= 2999) || (n >= 10001 && n <= 19999);
 }
+
+/// One series of a lathe's offset variables: #shortBase+n up to the short
+/// count, #longBase+n up to 999, and the profile's name of the field.
+struct LatheOffsetVariables {
+  int shortBase;
+  int shortCount;
+  int longBase;
+  const char* key;
+};
+
+/// Every series (docs/control-tables.md).
+std::vector<LatheOffsetVariables> latheOffsetVariables();
 
 mbrt_status readLatheOffset(mbrt_ctx& ctx, long n, Num* out);
 

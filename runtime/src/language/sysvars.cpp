@@ -34,12 +34,16 @@ using Reader = mbrt_status (*)(mbrt_ctx& ctx, int index, Num* out);
 using Writer = mbrt_status (*)(mbrt_ctx& ctx, int index, Num value,
                                const char* comment);
 
+/// One row of the control's system variable map (docs/control-tables.md is
+/// printed from these rows).
 struct SysVarRange {
   long first;
   long last;
-  Reader read;
+  const char* meaning;
+  Reader read;            // nullptr: the control has it, mbc does not (PS0115)
   Writer write;           // nullptr: read-only (PS0116)
   bool byProfile = false; // missing on the default machine (#2401-#2800)
+  const char* note = nullptr; // why a reader gives what it gives, or why not
 };
 
 /// Offsets are 20 numbers apart per coordinate system, one per axis.
@@ -479,67 +483,127 @@ mbrt_status writeG541Offset(mbrt_ctx& ctx, int index, Num value, const char*) {
                      value);
 }
 
+constexpr const char* kNoInterrupts =
+    "macro interrupts (M96) are not modelled: nothing interrupts a run";
+constexpr const char* kExtendedNumbers =
+    "the 30i-B's extended variable numbers are not modelled: mbc reads the "
+    "classic numbers";
+
 constexpr std::array kSystemVariables = {
-    SysVarRange{1000, 1031, readInputSignal, nullptr},
-    SysVarRange{1032, 1035, readInputWord, nullptr},
-    SysVarRange{1100, 1131, readOutputSignal, writeOutputSignal},
-    SysVarRange{1132, 1135, readOutputWord, writeOutputWord},
-    SysVarRange{2001, 2200, readToolOffset<0, true>, writeToolOffset<0, true>},
-    SysVarRange{2201, 2400, readToolOffset<1, true>, writeToolOffset<1, true>},
-    SysVarRange{2401, 2600, readToolOffset<2, true>, writeToolOffset<2, true>,
-                true},
-    SysVarRange{2601, 2800, readToolOffset<3, true>, writeToolOffset<3, true>,
-                true},
-    SysVarRange{2801, 2999, readLatheOnly, writeLatheOnly, true},
-    SysVarRange{3000, 3000, readZero, writeMacroAlarm},
-    SysVarRange{3001, 3001, readClockMs, writeClockMs},
-    SysVarRange{3002, 3002, readClockHours, writeClockHours},
-    SysVarRange{3003, 3003, readField<&mbrt_ctx::singleBlockBits>,
+    SysVarRange{1000, 1031, "interface input signals UI000-UI031, a bit each",
+                readInputSignal, nullptr, false,
+                "as the profile or --set gives them (no PMC)"},
+    SysVarRange{1032, 1035, "input signals as 32-bit words", readInputWord,
+                nullptr},
+    SysVarRange{1100, 1131, "interface output signals UO000-UO031, a bit each",
+                readOutputSignal, writeOutputSignal},
+    SysVarRange{1132, 1135, "output signals as 32-bit words", readOutputWord,
+                writeOutputWord},
+    SysVarRange{2001, 2200, "tool offsets 1-200, 1st set (#10001+)",
+                readToolOffset<0, true>, writeToolOffset<0, true>},
+    SysVarRange{2201, 2400, "tool offsets 1-200, 2nd set (#11001+)",
+                readToolOffset<1, true>, writeToolOffset<1, true>},
+    SysVarRange{2401, 2600, "tool offsets 1-200, 3rd set (#12001+)",
+                readToolOffset<2, true>, writeToolOffset<2, true>, true,
+                "with 6000#3 V15"},
+    SysVarRange{2601, 2800, "tool offsets 1-200, 4th set (#13001+)",
+                readToolOffset<3, true>, writeToolOffset<3, true>, true,
+                "with 6000#3 V15"},
+    SysVarRange{2801, 2999, "tool offsets of a lathe (T series)", readLatheOnly,
+                writeLatheOnly, true, "on a lathe"},
+    SysVarRange{3000, 3000, "macro alarm #3000=n (MESSAGE)", readZero,
+                writeMacroAlarm},
+    SysVarRange{3001, 3001, "clock 1, milliseconds", readClockMs, writeClockMs,
+                false, "the run's modelled time"},
+    SysVarRange{3002, 3002, "clock 2, hours", readClockHours, writeClockHours,
+                false, "the run's modelled time"},
+    SysVarRange{3003, 3003, "single block and FIN wait control",
+                readField<&mbrt_ctx::singleBlockBits>,
                 writeBits<&mbrt_ctx::singleBlockBits, 3>},
-    SysVarRange{3004, 3004, readField<&mbrt_ctx::feedHoldBits>,
+    SysVarRange{3004, 3004, "feed hold, override and exact stop control",
+                readField<&mbrt_ctx::feedHoldBits>,
                 writeBits<&mbrt_ctx::feedHoldBits, 7>},
-    SysVarRange{3005, 3005, readField<&mbrt_ctx::settingBits>,
+    SysVarRange{3005, 3005, "setting data", readField<&mbrt_ctx::settingBits>,
                 writeField<&mbrt_ctx::settingBits>},
-    SysVarRange{3006, 3006, readZero, writeMessage},
-    SysVarRange{3007, 3007, readZero, nullptr}, // mirror image: none
-    SysVarRange{3011, 3011, readField<&mbrt_ctx::date>, nullptr},
-    SysVarRange{3012, 3012, readField<&mbrt_ctx::timeOfDay>, nullptr},
-    SysVarRange{3100, 3102, readConstant, nullptr},
-    SysVarRange{3901, 3901, readField<&mbrt_ctx::partsCount>,
+    SysVarRange{3006, 3006, "message stop #3006=1 (MESSAGE)", readZero,
+                writeMessage, false, "the run goes on"},
+    SysVarRange{3007, 3007, "mirror image state", readZero, nullptr, false,
+                "0: no external mirror image signals"},
+    SysVarRange{3008, 3008, "program restart in progress", readZero, nullptr,
+                false, "0: a run never restarts"},
+    SysVarRange{3011, 3011, "date YYYYMMDD", readField<&mbrt_ctx::date>,
+                nullptr},
+    SysVarRange{3012, 3012, "time HHMMSS", readField<&mbrt_ctx::timeOfDay>,
+                nullptr},
+    SysVarRange{3100, 3102, "system constants: vacant, pi, e", readConstant,
+                nullptr},
+    SysVarRange{3901, 3901, "machined parts", readField<&mbrt_ctx::partsCount>,
                 writeField<&mbrt_ctx::partsCount>},
-    SysVarRange{3902, 3902, readField<&mbrt_ctx::partsRequired>,
+    SysVarRange{3902, 3902, "required parts",
+                readField<&mbrt_ctx::partsRequired>,
                 writeField<&mbrt_ctx::partsRequired>},
-    SysVarRange{4000, 4000, readMainProgram, nullptr},
+    SysVarRange{4000, 4000, "main program number", readMainProgram, nullptr},
     // Execution is sequential (Part A), so the "executing block" variables
     // #4201.. and #4301.. read the same as #4001.. and #4101...
-    SysVarRange{4001, 4030, readModalGroup, nullptr},
-    SysVarRange{4101, 4130, readLastWord, nullptr},
-    SysVarRange{4201, 4230, readModalGroup, nullptr},
-    SysVarRange{4301, 4330, readLastWord, nullptr},
-    SysVarRange{5001, 5020, readPosition<blockEndPosition>, nullptr},
-    SysVarRange{5021, 5040, readToolPosition<machinePosition>, nullptr},
-    SysVarRange{5041, 5060, readToolPosition<currentPosition>, nullptr},
-    SysVarRange{5061, 5080, readPosition<skipPosition>, nullptr},
-    SysVarRange{5081, 5100, readPosition<toolLengthOffset>, nullptr},
-    SysVarRange{5101, 5120, readZero, nullptr}, // servo deviation
-    // The manual handle interruption amounts: no handle turns here.
-    SysVarRange{5121, 5140, readZero, nullptr},
-    SysVarRange{5201, 5340, readG54Offset, writeG54Offset},
-    SysVarRange{7001, 7960, readG541Offset<kOffsetStride>,
-                writeG541Offset<kOffsetStride>},
-    SysVarRange{10001, 10999, readToolOffset<0, false>,
-                writeToolOffset<0, false>},
-    SysVarRange{11001, 11999, readToolOffset<1, false>,
-                writeToolOffset<1, false>},
-    SysVarRange{12001, 12999, readToolOffset<2, false>,
-                writeToolOffset<2, false>},
-    SysVarRange{13001, 13999, readToolOffset<3, false>,
-                writeToolOffset<3, false>},
-    SysVarRange{14001, 19988, readG541Offset<MBRT_MAX_AXES>,
-                writeG541Offset<MBRT_MAX_AXES>},
-    SysVarRange{kFirstCommon98000, kLastCommon98000, readCommon98000,
-                writeCommon98000, true},
+    SysVarRange{4001, 4030, "modal G codes of groups 1-30, block read",
+                readModalGroup, nullptr},
+    SysVarRange{4101, 4130, "last B D E F H M N O S T P words, block read",
+                readLastWord, nullptr},
+    SysVarRange{4201, 4230, "modal G codes, block executing", readModalGroup,
+                nullptr, false, "as #4001+: blocks run one by one"},
+    SysVarRange{4301, 4330, "last words, block executing", readLastWord,
+                nullptr, false, "as #4101+: blocks run one by one"},
+    SysVarRange{4401, 4430, "modal G codes of the block an interrupt stopped",
+                nullptr, nullptr, false, kNoInterrupts},
+    SysVarRange{4501, 4530, "last words of the block an interrupt stopped",
+                nullptr, nullptr, false, kNoInterrupts},
+    SysVarRange{5001, 5020, "block end position, workpiece coordinates",
+                readPosition<blockEndPosition>, nullptr},
+    SysVarRange{5021, 5040, "current position, machine coordinates",
+                readToolPosition<machinePosition>, nullptr},
+    SysVarRange{5041, 5060, "current position, workpiece coordinates",
+                readToolPosition<currentPosition>, nullptr},
+    SysVarRange{5061, 5080, "skip signal position (G31)",
+                readPosition<skipPosition>, nullptr},
+    SysVarRange{5081, 5100, "tool length offset in force",
+                readPosition<toolLengthOffset>, nullptr},
+    SysVarRange{5101, 5120, "servo position deviation", readZero, nullptr,
+                false, "0: the modelled axes follow exactly"},
+    SysVarRange{5121, 5140, "manual handle interruption amount", readZero,
+                nullptr, false, "0: no handle turns in a run"},
+    SysVarRange{5201, 5340, "external and G54-G59 work offsets", readG54Offset,
+                writeG54Offset},
+    SysVarRange{7001, 7960, "G54.1 P1-P48 work offsets",
+                readG541Offset<kOffsetStride>, writeG541Offset<kOffsetStride>},
+    SysVarRange{8400, 8499, "tool life management data", nullptr, nullptr,
+                false, "mbc keeps no tool life data"},
+    SysVarRange{8550, 8579, "tool management data", nullptr, nullptr, false,
+                "mbc keeps no tool management data"},
+    SysVarRange{10001, 10999, "tool offsets 1-999, 1st set",
+                readToolOffset<0, false>, writeToolOffset<0, false>},
+    SysVarRange{11001, 11999, "tool offsets 1-999, 2nd set",
+                readToolOffset<1, false>, writeToolOffset<1, false>},
+    SysVarRange{12001, 12999, "tool offsets 1-999, 3rd set",
+                readToolOffset<2, false>, writeToolOffset<2, false>},
+    SysVarRange{13001, 13999, "tool offsets 1-999, 4th set",
+                readToolOffset<3, false>, writeToolOffset<3, false>},
+    SysVarRange{14001, 19988, "G54.1 P1-P300 work offsets",
+                readG541Offset<MBRT_MAX_AXES>, writeG541Offset<MBRT_MAX_AXES>},
+    SysVarRange{kFirstCommon98000, kLastCommon98000,
+                "additional common variables (option)", readCommon98000,
+                writeCommon98000, true, "\"common_98000\" in the profile"},
+    SysVarRange{100000, 199999, "extended system variable numbers (30i-B)",
+                nullptr, nullptr, false, kExtendedNumbers},
+    SysVarRange{500000, 999999, "extended system variable numbers (30i-B)",
+                nullptr, nullptr, false, kExtendedNumbers},
 };
+
+/// A variable of the control's map that mbc does not model: PS0115 with
+/// what it is and why.
+mbrt_status refuseAbsent(mbrt_ctx& ctx, const SysVarRange& range, long n) {
+  return raise(ctx, AlarmId::VariableOutOfRange,
+               fmt::format("#{} ({}): {}", n, range.meaning, range.note));
+}
 
 const SysVarRange* findSystemVariable(long n) {
   const auto it =
@@ -555,6 +619,16 @@ const SysVarRange* findSystemVariable(long n) {
 }
 
 } // namespace
+
+std::vector<SystemVariableRow> systemVariableRows() {
+  std::vector<SystemVariableRow> rows;
+  for (const SysVarRange& range : kSystemVariables) {
+    rows.push_back({range.first, range.last, range.meaning,
+                    range.read != nullptr, range.write != nullptr,
+                    range.byProfile, range.note});
+  }
+  return rows;
+}
 
 bool setInputSignal(mbrt_ctx& ctx, int number, double value) {
   if (number >= kFirstInputSignal && number < kFirstInputWord) {
@@ -592,10 +666,19 @@ VarAccess variableAccess(int n) {
     return VarAccess::Missing;
   }
   const rt::SysVarRange* range = rt::findSystemVariable(n);
-  if (range == nullptr || range->byProfile) {
+  if (range == nullptr || range->byProfile || range->read == nullptr) {
     return VarAccess::Missing;
   }
   return range->write ? VarAccess::ReadWrite : VarAccess::ReadOnly;
+}
+
+bool unmodelledVariable(int n, UnmodelledVariable* out) {
+  const rt::SysVarRange* range = rt::findSystemVariable(n);
+  if (range == nullptr || range->read != nullptr) {
+    return false;
+  }
+  *out = {range->meaning, range->note};
+  return true;
 }
 
 bool dependsOnProfile(int n) {
@@ -618,6 +701,9 @@ mbrt_status readSystemVariable(mbrt_ctx& ctx, long n, Num* out) {
   if (range == nullptr) {
     return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
   }
+  if (range->read == nullptr) {
+    return refuseAbsent(ctx, *range, n);
+  }
   return range->read(ctx, static_cast<int>(n - range->first), out);
 }
 
@@ -629,6 +715,9 @@ mbrt_status writeSystemVariable(mbrt_ctx& ctx, long n, Num value,
   const SysVarRange* range = findSystemVariable(n);
   if (range == nullptr) {
     return raise(ctx, AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  }
+  if (range->read == nullptr) {
+    return refuseAbsent(ctx, *range, n);
   }
   if (range->write == nullptr) {
     return raise(ctx, AlarmId::WriteProtectedVariable, fmt::format("#{}", n));

@@ -13,14 +13,7 @@ namespace mbc::rt {
 
 namespace {
 
-constexpr int kNone = -1; // the code does not exist in that system
-
-struct LatheGCode {
-  int a, b, c; // tenths in systems A, B and C
-  int code;    // latheCode: a mill's number or kLatheOwnCode + A's
-  bool modelled;
-  const char* name;
-};
+constexpr int kNone = kNoLatheCode;
 
 constexpr int own(int tenths) {
   return kLatheOwnCode + tenths;
@@ -174,6 +167,10 @@ const LatheGCode* findByCode(int code) {
 }
 
 } // namespace
+
+std::span<const LatheGCode> latheGCodeList() {
+  return kLatheGCodes;
+}
 
 int systemCode(char system, int code) {
   const LatheGCode* row = findByCode(code);

@@ -3,6 +3,8 @@
 // #4001+ reads it in, and whether mbc executes it.
 #pragma once
 
+#include <span>
+
 #include "context.h"
 
 namespace mbc::rt {
@@ -35,6 +37,20 @@ inline bool isSingleCycle(int motion) {
   return motion == kTurningCycleMotion || motion == kThreadCycleMotion ||
          motion == kFacingCycleMotion;
 }
+
+/// A code missing from one G code system.
+inline constexpr int kNoLatheCode = -1;
+
+/// One row of the lathe's G code list.
+struct LatheGCode {
+  int a, b, c; // tenths in systems A, B and C (kNoLatheCode: none)
+  int code;    // latheCode: a mill's number or kLatheOwnCode + A's
+  bool modelled;
+  const char* name;
+};
+
+/// Every row, in system A's order (docs/control-tables.md).
+std::span<const LatheGCode> latheGCodeList();
 
 /// What a G word (tenths) of a lathe's program does, in the numbering
 /// applyGCode executes: a mill's code where the function is the same

@@ -72,6 +72,10 @@ constexpr std::array kParameters = {
 
 } // namespace
 
+std::span<const ParameterSpec> parameterSpecs() {
+  return kParameters;
+}
+
 const ParameterSpec* findParameter(int number) {
   for (const ParameterSpec& spec : kParameters) {
     if (number >= spec.first && number <= spec.last) {

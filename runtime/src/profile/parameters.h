@@ -2,6 +2,8 @@
 // defaults (docs/machine-profile.md lists their meaning).
 #pragma once
 
+#include <span>
+
 namespace mbc::rt {
 
 struct ParameterSpec {
@@ -16,5 +18,8 @@ struct ParameterSpec {
 
 /// The spec of parameter `number`, or nullptr when profiles cannot set it.
 const ParameterSpec* findParameter(int number);
+
+/// Every spec (docs/machine-profile.md lists them, checked by a test).
+std::span<const ParameterSpec> parameterSpecs();
 
 } // namespace mbc::rt
