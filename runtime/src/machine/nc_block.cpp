@@ -538,6 +538,15 @@ std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
             : value;
     return 0;
   }
+  // G71-G73 read U and W as their own words (depth of cut, finishing
+  // allowances, relief); in G code systems B and C, where U and W are no
+  // axes, the cycle block is the only place they mean anything.
+  const bool shapeCycle = block.nonModal >= kLatheOwnCode + 710 &&
+                          block.nonModal <= kLatheOwnCode + 730;
+  if (shapeCycle && (letter == 'U' || letter == 'W') &&
+      ctx.profile.gCodeSystem != 'A') {
+    return 0;
+  }
   const bool seriesTenCycle = block.nonModal >= kLatheOwnCode + 710 &&
                               block.nonModal <= kLatheOwnCode + 760 &&
                               seriesTenFormat(ctx);
