@@ -112,6 +112,8 @@ struct Stmt {
   std::string calledName;       // MacroCall by name: G65 <BOLT>
   ExprPtr repeat;               // MacroCall L (may be null)
   std::vector<PrintItem> items; // Dprnt/Bprnt
+  // Nc between G10 L52 and G11: N is a parameter number, not a label.
+  bool parameterData = false;
 };
 
 struct Block {

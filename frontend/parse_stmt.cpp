@@ -377,6 +377,20 @@ void Parser::parseWords(Stmt& s) {
       s.words.push_back(parseCalledName(s));
     }
   }
+  const auto literal = [&](char letter, double value) {
+    return std::any_of(s.words.begin(), s.words.end(), [&](const Word& w) {
+      return w.letter == letter && w.value->kind == ExprKind::Number &&
+             w.value->number == value;
+    });
+  };
+  // G10 L52 ... G11: the blocks between are parameter data, N the number
+  // and R the value, which no length or sequence number rule reads.
+  if (parameterInput_) {
+    s.parameterData = true;
+    parameterInput_ = !literal('G', 11);
+    return;
+  }
+  parameterInput_ = literal('G', 10) && (literal('L', 52) || literal('L', 50));
   reportUnmodelledCodes(s.words);
   for (const Word& w : s.words) {
     if (w.letter == 'G' && w.value->kind == ExprKind::Number &&

@@ -131,8 +131,9 @@ private:
   Token previous_; // the token before tok_
   std::deque<Token> ahead_;
   std::vector<Token> blockComments_;
-  int program_ = -1;  // index in unit_.programs
-  bool inch_ = false; // G20 in force at this point of the text
+  int program_ = -1;            // index in unit_.programs
+  bool inch_ = false;           // G20 in force at this point of the text
+  bool parameterInput_ = false; // between G10 L52 and G11
   bool reportedDepth_ = false;
   bool macroStatement_ = false; // the block's statement starts with # or a
                                 // keyword

@@ -98,7 +98,7 @@ void checkSequences(const Program& p, DiagnosticEngine& diags) {
   std::map<int, int> first;
   for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
     int seq = p.blocks[i].seq;
-    if (seq < 0) {
+    if (seq < 0 || p.blocks[i].stmt.parameterData) {
       continue;
     }
     auto [it, inserted] = first.emplace(seq, i);

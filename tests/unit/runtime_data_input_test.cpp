@@ -39,8 +39,8 @@ TEST(RuntimeDataInput, Alarms) {
                         "G10 L2 P7: P must be 0 to 6\n");
   Machine tool;
   EXPECT_EQ(tool.block("G10 L10 P401 R1."), status(AlarmId::IllegalPInG10));
-  Machine parameter;
-  EXPECT_EQ(parameter.block("G10 L50"), status(AlarmId::Unsupported));
+  Machine toolLife; // tool life data: not modelled
+  EXPECT_EQ(toolLife.block("G10 L3"), status(AlarmId::Unsupported));
   Machine bare;
   EXPECT_EQ(bare.block("G10 P1 R1."), status(AlarmId::Unsupported));
 }

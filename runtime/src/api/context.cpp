@@ -120,6 +120,7 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
   ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
   ctx.entrySequence = 0.0;
+  ctx.parameterInput = false;
   ctx.calls.clear();
   ctx.modalCalls.clear();
   ctx.blockCalls.clear();
@@ -164,6 +165,8 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
 /// A new context's state from its profile: what mbrt_create makes, and
 /// mbrt_reset again.
 void powerOn(mbrt_ctx& ctx, Profile profile) {
+  ctx.profileParameters = profile.parameters;
+  ctx.profileAxisParameters = profile.axisParameters;
   ctx.profile = std::move(profile);
   loadProfile(ctx);
   resetMachineState(ctx);
@@ -318,7 +321,11 @@ void mbrt_reset(mbrt_ctx* ctx) {
   // that runs after it never see each other.
   mbrt_ctx fresh;
   keepHostSettings(*ctx, fresh);
-  powerOn(fresh, std::move(ctx->profile));
+  Profile profile = std::move(ctx->profile);
+  profile.parameters = std::move(ctx->profileParameters); // undo G10 L52
+  profile.axisParameters = std::move(ctx->profileAxisParameters);
+  deriveParameterFields(profile);
+  powerOn(fresh, std::move(profile));
   *ctx = std::move(fresh);
 }
 

@@ -429,6 +429,12 @@ struct mbrt_ctx {
   std::string mainProgram;
   int mainProgramNumber = 0;
   double entrySequence = 0.0; // mbrt_entry_sequence
+  // G10 L52 ... G11: each block sets a parameter (parameter_input.h).
+  bool parameterInput = false;
+  // The parameters as the profile gave them: a program may set others
+  // (G10 L52), and mbrt_reset brings these back.
+  std::map<int, double> profileParameters;
+  std::map<int, mbc::rt::AxisValues> profileAxisParameters;
   /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
   std::map<int, std::string> programNames;
 

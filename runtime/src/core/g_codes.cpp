@@ -39,7 +39,7 @@ constexpr std::array kGCodes = {
     GCodeInfo{100, true, "programmable data input"},
     GCodeInfo{106, false, "tool retract and recover"},
     GCodeInfo{109, false, "programmable diameter/radius switching"},
-    GCodeInfo{110, false, "programmable data input mode cancel"},
+    GCodeInfo{110, true, "programmable data input mode cancel"},
     GCodeInfo{121, false, "polar coordinate interpolation mode"},
     GCodeInfo{124, false, "groove cutting by continuous circles CW"},
     GCodeInfo{131, false, "polar coordinate interpolation cancel mode"},

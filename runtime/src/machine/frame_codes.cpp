@@ -15,6 +15,7 @@
 #include "g_codes.h"
 #include "lathe_codes.h"
 #include "lathe_tools.h"
+#include "parameter_input.h"
 
 namespace mbc::rt {
 
@@ -239,9 +240,12 @@ mbrt_status executeFrameCode(mbrt_ctx& ctx, const FrameWords& words) {
     case 680:
       return setRotation(ctx, words);
     case 100:
-      return programmableDataInput(ctx, words);
     case kLatheG10:
-      return writeLatheOffsets(ctx, words);
+      if (startsParameterInput(words)) {
+        return startParameterInput(ctx, words);
+      }
+      return words.code == 100 ? programmableDataInput(ctx, words)
+                               : writeLatheOffsets(ctx, words);
     default:
       return 0;
   }

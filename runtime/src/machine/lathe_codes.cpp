@@ -40,7 +40,7 @@ constexpr std::array kLatheGCodes = {
     LatheGCode{106, 106, 106, own(106), false, "tool retract and recover"},
     LatheGCode{109, 109, 109, own(109), false,
                "programmable diameter/radius switching"},
-    LatheGCode{110, 110, 110, 110, false, "programmable data input cancel"},
+    LatheGCode{110, 110, 110, 110, true, "programmable data input cancel"},
     LatheGCode{121, 121, 121, 121, false,
                "polar coordinate interpolation mode"},
     LatheGCode{131, 131, 131, 131, false,

@@ -24,6 +24,7 @@
 #include "lathe_tools.h"
 #include "look_ahead.h"
 #include "motion.h"
+#include "parameter_input.h"
 #include "polar.h"
 
 namespace mbc::rt {
@@ -318,6 +319,8 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
     case 980:
     case 990:
       next.returnToR = tenths == 990;
+      return 0;
+    case 110: // G11 outside the parameter input mode: nothing to end
       return 0;
     case 540:
       if (block.hasP) { // G54 Pn is another spelling of G54.1 Pn
@@ -1064,7 +1067,8 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   const mbrt_status status = ctx.profile.codeCalls || !ctx.modalCalls.empty()
                                  ? callAfterBlock(ctx, block.codes, flow)
                                  : 0;
-  if (ctx.gcodeSink.fn != nullptr) {
+  // A G10 L52 block is flattened with each parameter it lets a block set.
+  if (ctx.gcodeSink.fn != nullptr && !ctx.parameterInput) {
     const int code = block.nonModal;
     flattenBlock(ctx, words, count, *flow,
                  code >= kLatheOwnCode + 740   ? LatheCycleWords::Increments
@@ -1083,6 +1087,12 @@ using namespace mbc::rt;
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow) {
   *flow = mbrt_flow{};
+  if (ctx->parameterInput) {
+    if (ctx->traceSink.fn != nullptr && count > 0) {
+      mbrt_trace_words(ctx, "", words, count);
+    }
+    return parameterInputBlock(*ctx, words, count);
+  }
   // The N number comes first: it only sets #4114, and a block of nothing
   // else does nothing more (it is no block G66.1 calls for, nor traced).
   std::optional<double> sequence;

@@ -236,6 +236,14 @@ void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value) {
   sendData(ctx, data);
 }
 
+void flattenParameter(mbrt_ctx& ctx, int number, int axis, double value) {
+  if (ctx.gcodeSink.fn == nullptr) {
+    return;
+  }
+  send(ctx, fmt::format("G10 L52\nN{}{} R{}\nG11\n", number,
+                        axis > 0 ? fmt::format(" P{}", axis) : "", value));
+}
+
 void flattenLookAheadStop(mbrt_ctx& ctx, int blocks) {
   if (ctx.gcodeSink.fn == nullptr) {
     return;

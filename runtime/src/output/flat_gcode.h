@@ -37,4 +37,9 @@ void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value);
 /// in the plane, stop it for a control as well.
 void flattenLookAheadStop(mbrt_ctx& ctx, int blocks);
 
+/// A parameter a program set (G10 L52): the mode, the parameter (P the
+/// axis number of a per-axis one, 0 for none) and G11, so that the
+/// flattened program reads what follows as the run did.
+void flattenParameter(mbrt_ctx& ctx, int number, int axis, double value);
+
 } // namespace mbc::rt

@@ -52,9 +52,8 @@ void parseUnits(const json& value, Profile& profile) {
 }
 
 void checkRange(const ParameterSpec& spec, double x, const std::string& path) {
-  if ((spec.whole && x != std::floor(x)) || x < spec.low || x > spec.high) {
-    fail(path, fmt::format("must be a{} number from {} to {}",
-                           spec.whole ? " whole" : "", spec.low, spec.high));
+  if (const std::optional<std::string> error = parameterValueError(spec, x)) {
+    fail(path, *error);
   }
 }
 
@@ -89,21 +88,41 @@ void parseParameters(const json& value, Profile& profile) {
     }
     const double x = number(item, path);
     checkRange(*spec, x, path);
-    // The compiler keeps locals across the blocks that may call, by one
-    // rule (<mbc/calling_codes.h>); a code outside it must not call.
-    const bool gCodes = *n >= kCustomGCodes.firstParameter &&
-                        *n < kCustomGCodes.firstParameter + kCustomGCodes.size;
-    if (gCodes && x != 0 &&
-        !mayBeCustomGCode(static_cast<int>(std::fabs(x)) * 10)) {
-      fail(path, fmt::format("must not be a G code mbc executes (G{})",
-                             std::fabs(x)));
-    }
-    if (!gCodes && isCallingCodeParameter(*n) && x != 0 &&
-        !mayBeCustomMCode(x)) {
-      fail(path, fmt::format("must not be M{:02} (0 = no code)", x));
+    if (const std::optional<std::string> error = callingCodeError(*n, x)) {
+      fail(path, *error);
     }
     profile.parameters[*n] = x;
   }
+  deriveParameterFields(profile);
+}
+
+} // namespace
+
+std::optional<std::string> parameterValueError(const ParameterSpec& spec,
+                                               double x) {
+  if ((spec.whole && x != std::floor(x)) || x < spec.low || x > spec.high) {
+    return fmt::format("must be a{} number from {} to {}",
+                       spec.whole ? " whole" : "", spec.low, spec.high);
+  }
+  return std::nullopt;
+}
+
+// The compiler keeps locals across the blocks that may call, by one rule
+// (<mbc/calling_codes.h>); a code outside it must not call.
+std::optional<std::string> callingCodeError(int n, double x) {
+  const bool gCodes = n >= kCustomGCodes.firstParameter &&
+                      n < kCustomGCodes.firstParameter + kCustomGCodes.size;
+  if (gCodes && x != 0 &&
+      !mayBeCustomGCode(static_cast<int>(std::fabs(x)) * 10)) {
+    return fmt::format("must not be a G code mbc executes (G{})", std::fabs(x));
+  }
+  if (!gCodes && isCallingCodeParameter(n) && x != 0 && !mayBeCustomMCode(x)) {
+    return fmt::format("must not be M{:02} (0 = no code)", x);
+  }
+  return std::nullopt;
+}
+
+void deriveParameterFields(Profile& profile) {
   profile.decimalPointInput = profile.parameterBit(3401, 0);
   profile.prt = profile.parameterBit(6001, 1);
   profile.nat = profile.parameterBit(6004, 0);
@@ -118,6 +137,8 @@ void parseParameters(const json& value, Profile& profile) {
                     return isCallingCodeParameter(p.first) && p.second != 0.0;
                   });
 }
+
+namespace {
 
 /// The fields of the offset memory type (offset_keys.h).
 void parseToolOffset(const json& value, const std::string& path, char memory,

@@ -123,6 +123,22 @@ struct Profile {
   double axisParameter(int number, int axis) const;
 };
 
+struct ParameterSpec;
+
+/// What is wrong with `x` as the value of a parameter of `spec` ("must be
+/// a whole number from 0 to 255"), or nothing.
+std::optional<std::string> parameterValueError(const ParameterSpec& spec,
+                                               double x);
+
+/// What is wrong with `x` as parameter n when n makes a code call (6050-
+/// 6089), or nothing.
+std::optional<std::string> callingCodeError(int n, double x);
+
+/// The fields kept apart from the parameters (decimalPointInput, nat...),
+/// again from the parameters: after the profile is read, and after a
+/// program sets a parameter (G10 L52).
+void deriveParameterFields(Profile& profile);
+
 /// The built-in 3-axis metric vertical mill.
 Profile defaultProfile();
 
