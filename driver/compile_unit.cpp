@@ -99,6 +99,7 @@ bool parseInputs(const std::vector<SourceText>& texts,
   options.checkWarnings = load.checkWarnings;
   options.latheSystem = load.latheSystem;
   options.inch = load.inch;
+  options.decimalPointInput = load.decimalPointInput;
   options.stopAtErrorLimit = load.errors == ErrorMode::Refuse;
   for (const SourceText& input : texts) {
     const std::uint32_t id = out.sources.add(input.name, input.text);

@@ -26,6 +26,7 @@ struct LoadOptions {
   bool defaultMachine = true;
   char latheSystem = 0; // the profile's lathe G code system, 0: a mill
   bool inch = false;    // the profile's unit at power-on is the inch
+  bool decimalPointInput = false; // the profile's 3401#0 DPI
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
   DiagnosticOutput diagnostics;

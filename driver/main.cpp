@@ -50,6 +50,8 @@ int dispatch(int argc, char** argv) {
       mbrt_stats stats{};
       mbrt_get_stats(machine.get(), &stats);
       load.inch = std::string_view(stats.unit) == "inch";
+      load.decimalPointInput =
+          (static_cast<long>(mbrt_parameter(machine.get(), 3401)) & 1) != 0;
     }
     load.checkWarnings = true;
     return loadUnit(options->files, load, cu) ? 0 : 1;

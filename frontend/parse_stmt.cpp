@@ -548,7 +548,8 @@ void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
                           std::string_view::npos
                     : isLengthAddress(w.letter) || isCommaWord(w.letter);
   if (w.kind != WordKind::IntLiteral || w.value->number == 0 || !length ||
-      units.notLengths.find(w.letter) != std::string::npos) {
+      units.notLengths.find(w.letter) != std::string::npos ||
+      options_.decimalPointInput) {
     return;
   }
   double v = w.value->number;

@@ -27,6 +27,9 @@ struct ParseOptions {
   /// without decimal point in 0.0001 inch. G20/G21 change it from their
   /// block on, in the order of the text.
   bool inch = false;
+  /// Parameter 3401#0 DPI: a literal without decimal point is in whole mm
+  /// or inches, so none is worth a warning.
+  bool decimalPointInput = false;
 };
 
 /// Parses one file and appends its programs to unit.
