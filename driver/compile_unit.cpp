@@ -113,7 +113,9 @@ bool parseInputs(const std::vector<SourceText>& texts,
   if (!loadCalledPrograms(files, load, diags, options, out, failure)) {
     return false;
   }
-  checkUnit(out.unit, diags, SemaOptions{load.defaultMachine});
+  checkUnit(
+      out.unit, diags,
+      SemaOptions{load.defaultMachine, load.latheSystem, load.checkWarnings});
   return true;
 }
 

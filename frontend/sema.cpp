@@ -2,11 +2,15 @@
 #include "frontend/sema.h"
 
 #include <mbc/addresses.h>
+#include <mbc/g_codes.h>
 #include <mbc/sysvars.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
+#include <string_view>
 
 namespace mbc {
 
@@ -267,6 +271,60 @@ int findSequence(const Program& program, int seq, int from) {
   return -1;
 }
 
+/// The whole-number literal of `letter` in NC words, if any.
+std::optional<int> literalWord(const std::vector<Word>& words, char letter) {
+  for (const Word& w : words) {
+    if (w.letter == letter && w.value->kind == ExprKind::Number) {
+      return static_cast<int>(std::lround(w.value->number));
+    }
+  }
+  return std::nullopt;
+}
+
+bool hasLetter(const std::vector<Word>& words, std::string_view letters) {
+  return std::any_of(words.begin(), words.end(), [&](const Word& w) {
+    return letters.find(w.letter) != std::string_view::npos;
+  });
+}
+
+// A lathe's G71/G72 whose shape starts with a block that gives the cut
+// axis too (Z for G71, X for G72) cuts pockets (type II): mbc's path there
+// is reconstructed from sources that are not FANUC's, which a review of
+// the program should know.
+void noteTypeTwo(const Program& p, int index, char system,
+                 DiagnosticEngine& diags) {
+  const Block& b = p.blocks[index];
+  const std::vector<Word>& words = b.stmt.words;
+  int code = 0; // system A's number of the cycle
+  double written = 0.0;
+  for (const Word& w : words) {
+    if (w.letter == 'G' && w.value->kind == ExprKind::Number) {
+      const int a = latheFunction(
+          system, static_cast<int>(std::lround(w.value->number * 10.0)));
+      if (a == 710 || a == 720) {
+        code = a;
+        written = w.value->number;
+      }
+    }
+  }
+  const std::optional<int> ns = literalWord(words, 'P');
+  const std::optional<int> nf = literalWord(words, 'Q');
+  if (code == 0 || !ns || !nf) {
+    return;
+  }
+  const int first = findSequence(p, *ns, index);
+  if (first < 0 || p.blocks[first].stmt.kind != StmtKind::Nc) {
+    return;
+  }
+  const bool turning = code == 710;
+  const std::vector<Word>& shape = p.blocks[first].stmt.words;
+  if (hasLetter(shape, turning ? "ZW" : "XU") &&
+      hasLetter(shape, turning ? "XU" : "ZW")) {
+    diags.report(DiagKind::TypeTwoRoughing, b.range, written, *ns, *nf, *ns,
+                 turning ? 'Z' : 'X');
+  }
+}
+
 void checkUnit(Unit& unit, DiagnosticEngine& diags,
                const SemaOptions& options) {
   // The parser reported them; the control keeps the first program of a
@@ -284,6 +342,9 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
         resolveGoto(p, i, diags);
       } else if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
         checkWrite(s, diags);
+      } else if (s.kind == StmtKind::Nc && options.reviewNotes &&
+                 options.latheSystem != 0) {
+        noteTypeTwo(p, i, options.latheSystem, diags);
       }
     }
   }

@@ -12,6 +12,10 @@ struct SemaOptions {
   /// No machine profile: the variables only a profile adds (#200-#499)
   /// cannot exist, so reading or writing one is worth a warning.
   bool defaultMachine = true;
+  /// A lathe's G code system ('A', 'B', 'C'; 0 on a mill) and whether the
+  /// notes a review wants are given (mbc check).
+  char latheSystem = 0;
+  bool reviewNotes = false;
 };
 
 void checkUnit(Unit& unit, DiagnosticEngine& diags,

@@ -237,5 +237,26 @@ TEST(Sema, CallsByNameGetTheirProgramsNumbers) {
   EXPECT_EQ(p->diags.warningCount(), 2) << p->text;
 }
 
+// On a lathe, mbc check notes a G71/G72 whose shape's first block gives
+// the cut axis too (type II): its path is reconstructed (docs/language.md).
+TEST(Sema, NotesTypeTwoRoughing) {
+  const auto notes = [](const std::string& src) {
+    Parsed p;
+    const std::uint32_t id = p.sources.add("t.nc", src);
+    ParseOptions o;
+    o.latheSystem = 'A';
+    parseFile(p.sources, id, p.diags, o, p.unit);
+    checkUnit(p.unit, p.diags, SemaOptions{true, 'A', true});
+    int count = 0;
+    for (const Diagnostic& d : p.diags.diagnostics()) {
+      count += d.kind == DiagKind::TypeTwoRoughing ? 1 : 0;
+    }
+    return count;
+  };
+  EXPECT_EQ(notes("G71U1.R0.5\nG71P10Q20F0.2\nN10G00X20.W0\nN20G01Z-5.\n"), 1);
+  EXPECT_EQ(notes("G72W1.R0.5\nG72P10Q20F0.2\nN10G00X20.Z-5.\nN20X10.\n"), 1);
+  EXPECT_EQ(notes("G71U1.R0.5\nG71P10Q20F0.2\nN10G00X20.\nN20G01Z-5.\n"), 0);
+}
+
 } // namespace
 } // namespace mbc

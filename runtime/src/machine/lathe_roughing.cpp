@@ -8,6 +8,8 @@
 #include <numbers>
 #include <optional>
 
+#include "shape_geometry.h"
+
 namespace mbc::rt {
 
 namespace {
@@ -21,11 +23,7 @@ ShapePoint swapped(ShapePoint p) {
 ShapeMove swapped(ShapeMove move) {
   move.end = swapped(move.end);
   move.center = swapped(move.center);
-  if (move.motion == ShapeMotion::Clockwise) {
-    move.motion = ShapeMotion::CounterClockwise;
-  } else if (move.motion == ShapeMotion::CounterClockwise) {
-    move.motion = ShapeMotion::Clockwise;
-  }
+  move.motion = mirrored(move.motion);
   return move;
 }
 
@@ -35,54 +33,6 @@ Shape swapAxes(const Shape& shape) {
     out.moves.push_back(swapped(move));
   }
   return out;
-}
-
-ShapePoint shifted(ShapePoint p, ShapePoint by) {
-  return {p.x + by.x, p.z + by.z};
-}
-
-/// A straight move of a cycle's path, at the cycle's F.
-ShapeMove straightTo(ShapeMotion motion, ShapePoint end) {
-  ShapeMove move;
-  move.motion = motion;
-  move.end = end;
-  return move;
-}
-
-bool isArc(const ShapeMove& move) {
-  return move.motion == ShapeMotion::Clockwise ||
-         move.motion == ShapeMotion::CounterClockwise;
-}
-
-/// The angle of a point about a centre, in the ZX plane's own sense (z the
-/// first axis), and whether `angle` lies on the arc from `begin` turning
-/// `sweep` (signed, counter-clockwise positive).
-double angleOf(ShapePoint p, ShapePoint c) {
-  return std::atan2(p.x - c.x, p.z - c.z);
-}
-
-double sweepOf(const ShapeMove& move, ShapePoint from) {
-  constexpr double kTurn = 2.0 * std::numbers::pi;
-  const double begin = angleOf(from, move.center);
-  const double end = angleOf(move.end, move.center);
-  double sweep = end - begin;
-  if (move.motion == ShapeMotion::CounterClockwise) {
-    while (sweep <= 0.0) {
-      sweep += kTurn;
-    }
-  } else {
-    while (sweep >= 0.0) {
-      sweep -= kTurn;
-    }
-  }
-  return sweep;
-}
-
-bool onArc(double angle, double begin, double sweep) {
-  constexpr double kTurn = 2.0 * std::numbers::pi;
-  double travel = sweep > 0.0 ? angle - begin : begin - angle;
-  travel = std::fmod(std::fmod(travel, kTurn) + kTurn, kTurn);
-  return travel <= std::fabs(sweep) + 1e-12;
 }
 
 /// Where the contour first reaches the level x (along the contour), or
@@ -216,13 +166,14 @@ ShapeFault roughTurning(const Shape& shape, const Roughing& roughing,
 
 ShapeFault roughShape(const Shape& shape, const Roughing& roughing,
                       std::vector<ShapeMove>& out) {
+  const auto rough = roughing.pockets ? roughPockets : roughTurning;
   if (!roughing.facing) {
-    return roughTurning(shape, roughing, out);
+    return rough(shape, roughing, out);
   }
   Roughing swappedRoughing = roughing;
   swappedRoughing.allowance = swapped(roughing.allowance);
   std::vector<ShapeMove> path;
-  const ShapeFault fault = roughTurning(swapAxes(shape), swappedRoughing, path);
+  const ShapeFault fault = rough(swapAxes(shape), swappedRoughing, path);
   for (const ShapeMove& move : path) {
     out.push_back(swapped(move));
   }

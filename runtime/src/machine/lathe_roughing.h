@@ -13,14 +13,15 @@ namespace mbc::rt {
 /// The settings of a roughing cycle: depth of cut Δd and escape e (along
 /// X for G71, along Z for G72), finishing allowance (x a radius).
 struct Roughing {
-  bool facing = false; // G72: cuts along X, steps in Z
+  bool facing = false;  // G72: cuts along X, steps in Z
+  bool pockets = false; // type II: the shape may dip across the cuts
   double depth = 0.0;
   double escape = 0.0;
   ShapePoint allowance;
 };
 
 /// Why a shape cannot be roughed: none, or a shape that is not monotonic
-/// across the cuts (PS0064).
+/// across the cuts (type I, PS0064) or along them (type II, PS0064 too).
 enum class ShapeFault { None, NotMonotonic };
 
 /// G71/G72 type I: cuts Δd apart from A towards the shape, each from A's
@@ -32,6 +33,11 @@ enum class ShapeFault { None, NotMonotonic };
 /// type I (lathe_shapes.h judges by the words of its first block).
 ShapeFault roughShape(const Shape& shape, const Roughing& roughing,
                       std::vector<ShapeMove>& out);
+
+/// Type II in G71's frame (cuts along z), called by roughShape: the shape
+/// may dip across the cuts (pockets) but must not turn back along them.
+ShapeFault roughPockets(const Shape& shape, const Roughing& roughing,
+                        std::vector<ShapeMove>& out);
 
 /// G73: `divisions` passes along the shape shifted by the allowance plus
 /// a share of the relief that shrinks to 0, each from A and back to A.

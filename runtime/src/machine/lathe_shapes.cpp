@@ -252,7 +252,8 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
   if (code == kG70) {
     return finish(ctx, shape);
   }
-  const Roughing roughing{code == kG72, static_cast<double>(reading.depth),
+  const Roughing roughing{code == kG72, reading.typeTwo,
+                          static_cast<double>(reading.depth),
                           static_cast<double>(reading.escape), allowance};
   if (code != kG73) {
     if (roughing.depth <= 0.0) {
@@ -261,14 +262,12 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
                                writtenCode(ctx, code)));
     }
     if (reading.typeTwo) {
-      const char other = code == kG71 ? 'Z' : 'X';
-      return raise(ctx, AlarmId::Unsupported,
-                   fmt::format("G{} type II (the shape's first block N{} "
-                               "gives {} as well, which makes the control "
-                               "cut pockets; mbc cuts type I, whose first "
-                               "block gives {} alone)",
-                               writtenCode(ctx, code), reading.ns, other,
-                               code == kG71 ? 'X' : 'Z'));
+      sendMessage(ctx,
+                  fmt::format("G{} P{} Q{} type II: the pockets are cut "
+                              "nearest first, each to its bottom; the "
+                              "moves between cuts are reconstructed "
+                              "(docs/language.md)",
+                              writtenCode(ctx, code), reading.ns, reading.nf));
     }
   }
   Shape cut = shape;
@@ -282,9 +281,9 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
     repeatShape(cut, allowance, relief, divisions, path);
   } else if (roughShape(cut, roughing, path) == ShapeFault::NotMonotonic) {
     return raise(ctx, AlarmId::ShapeNotMonotonic,
-                 fmt::format("G{} P{} Q{}: the shape turns back across "
-                             "the cuts",
-                             writtenCode(ctx, code), reading.ns, reading.nf));
+                 fmt::format("G{} P{} Q{}: the shape turns back {} the cuts",
+                             writtenCode(ctx, code), reading.ns, reading.nf,
+                             roughing.pockets ? "along" : "across"));
   }
   return runMoves(ctx, path, code, ctx.modal.feed, 40);
 }
