@@ -55,6 +55,11 @@ bool chamferByC(const mbrt_ctx& ctx) {
          ctx.axisOf('C') < 0;
 }
 
+bool angleByA(const mbrt_ctx& ctx) {
+  return ctx.profile.lathe() && ctx.profile.parameterBit(3405, 4) &&
+         ctx.axisOf('A') < 0;
+}
+
 bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.compensation.codeInBlock) {
     return false; // G41/G42 I K: the direction of the start-up (mill)

@@ -21,6 +21,10 @@ mbrt_status missingPlaneAxis(mbrt_ctx& ctx);
 /// Whether C is the chamfer address: a lathe with 3405#4 CCR and no C axis.
 bool chamferByC(const mbrt_ctx& ctx);
 
+/// Whether A is the angle of direct drawing dimensions (,A): a lathe with
+/// 3405#4 CCR and no A axis.
+bool angleByA(const mbrt_ctx& ctx);
+
 /// Whether a lathe's G01 block's words ask for a chamfer or a corner R.
 bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words);
 

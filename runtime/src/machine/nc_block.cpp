@@ -601,6 +601,12 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     block.motion.hasC = true;
     return toLengthCounts(ctx, word, &block.motion.c);
   }
+  if (letter == 'A' && angleByA(ctx) && block.nonModal == 0) {
+    // 3405#4 CCR: the angle of direct drawing dimensions without comma.
+    mbrt_word angle = word;
+    angle.letter = commaWordLetter('A');
+    return readCommaWord(ctx, angle, block.motion);
+  }
   if (isArcCenterLetter(letter)) {
     const int index = letter - 'I';
     block.motion.centerMask |= std::uint32_t{1} << index;
