@@ -39,6 +39,7 @@ bool FunctionEmitter::isInlineValue(const ir::Inst& inst) const {
     case ir::Op::BitOr:
     case ir::Op::BitXor:
     case ir::Op::RoundAddr:
+    case ir::Op::Prm:
     case ir::Op::Phi:
     case ir::Op::BlockSkip:
     case ir::Op::StartSeq:

@@ -34,6 +34,13 @@ llvm::Value* FunctionEmitter::emitOp(const ir::Inst& inst) {
       return toNum(values_[inst.ops[0]]);
     case ir::Op::Fn:
       return emitFn(inst);
+    case ir::Op::Prm:
+      return callStatusOut(
+          Rt::mbrt_read_parameter,
+          {ctx_,
+           llvm::ConstantInt::get(
+               abi_.i32, static_cast<int>(inst.get<ir::Number>().value)),
+           numOperand(inst, 0), numOperand(inst, 1), numOperand(inst, 2)});
     case ir::Op::RoundAddr:
       return callStatusOut(Rt::mbrt_round_address,
                            {ctx_,

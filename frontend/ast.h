@@ -14,14 +14,15 @@
 namespace mbc {
 
 enum class ExprKind {
-  Number,   // literal
-  Var,      // #n
-  Indirect, // #[e]
-  Neg,      // -e
-  Binary,   // arithmetic or bitwise AND/OR/XOR on numbers
-  Compare,  // EQ NE GT GE LT LE: a condition
-  Logical,  // AND/OR/XOR of two conditions
-  Call,     // function
+  Number,    // literal
+  Var,       // #n
+  Indirect,  // #[e]
+  Neg,       // -e
+  Binary,    // arithmetic or bitwise AND/OR/XOR on numbers
+  Compare,   // EQ NE GT GE LT LE: a condition
+  Logical,   // AND/OR/XOR of two conditions
+  Call,      // function
+  Parameter, // PRM[n], PRM[n, bit], with /[axis]: args n, then bit, axis
 };
 
 struct Expr {
@@ -34,6 +35,7 @@ struct Expr {
   BinOp binOp = BinOp::Add;
   RelOp relOp = RelOp::Eq;
   Builtin builtin = Builtin::Sin;
+  int parameterForm = 0; // Parameter: mbrt_parameter_form bits
   std::vector<std::unique_ptr<Expr>> args;
 
   bool isCondition() const {

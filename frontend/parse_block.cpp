@@ -290,7 +290,6 @@ void Parser::refuseUnsupportedFunction(const Token& letter) {
   };
 
   static constexpr Form kForms[] = {
-      {"PRM", "reading a parameter", true},
       {"AXNUM", "the number of an axis address", true},
       {"AX", "an axis address by its number", true},
       {"SETVN", "names for common variables", false},

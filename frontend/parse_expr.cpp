@@ -3,8 +3,10 @@
 // bitwise on numbers and logical on conditions.
 #include "frontend/parser.h"
 #include <mbc/addresses.h>
+#include <mbc/engine.h>
 #include <mbc/limits.h>
 
+#include <cctype>
 #include <cmath>
 
 namespace mbc::detail {
@@ -246,6 +248,9 @@ ExprPtr Parser::parsePrimary(int depth) {
     case Tok::Function:
       return parseCall(depth);
     case Tok::Letter:
+      if (startsParameterRead(tok_)) {
+        return parseParameterRead(depth);
+      }
       addressInExpression(tok_);
     default:
       unexpected(DiagKind::ExpectedExpression);
@@ -311,27 +316,16 @@ ExprPtr Parser::parseVariable(int depth) {
   unexpected(DiagKind::ExpectedExpression);
 }
 
-// function := NAME '[' expr {',' expr} ']' | 'ATAN' '[' expr ']' '/' '[' expr
-// ']'
-ExprPtr Parser::parseCall(int depth) {
-  Token name = tok_;
-  advance();
-  if (tok_.kind != Tok::LBracket) {
-    diags_.report(DiagKind::FunctionNeedsBracket, name.range, name.text,
-                  name.text);
-    noteParenthesis(name);
-    fail();
-  }
-  Token open = tok_;
+// '[' expr {',' expr} ']' after a function's name, into e.args; returns
+// the offset just past the ']'.
+std::uint32_t Parser::parseArguments(int depth, Expr& e) {
+  const Token open = tok_;
   enterBracket(depth, open);
   advance();
-  auto e = std::make_unique<Expr>();
-  e->kind = ExprKind::Call;
-  e->builtin = name.builtin;
   for (;;) {
     ExprPtr arg = parseExpr(depth + 1);
     requireNumber(*arg);
-    e->args.push_back(std::move(arg));
+    e.args.push_back(std::move(arg));
     if (tok_.kind != Tok::Comma) {
       break;
     }
@@ -344,8 +338,26 @@ ExprPtr Parser::parseCall(int depth) {
     diags_.note(DiagKind::BracketOpenedHere, open.range);
     fail();
   }
-  std::uint32_t end = tok_.range.begin.offset + 1;
+  const std::uint32_t end = tok_.range.begin.offset + 1;
   advance();
+  return end;
+}
+
+// function := NAME '[' expr {',' expr} ']' | 'ATAN' '[' expr ']' '/' '[' expr
+// ']'
+ExprPtr Parser::parseCall(int depth) {
+  Token name = tok_;
+  advance();
+  if (tok_.kind != Tok::LBracket) {
+    diags_.report(DiagKind::FunctionNeedsBracket, name.range, name.text,
+                  name.text);
+    noteParenthesis(name);
+    fail();
+  }
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Call;
+  e->builtin = name.builtin;
+  std::uint32_t end = parseArguments(depth, *e);
   // ATAN[a]/[b] is the two-sided arctangent, not a division (spec §3.3).
   if (name.builtin == Builtin::Atan && e->args.size() == 1 &&
       tok_.kind == Tok::Slash && peek().kind == Tok::LBracket) {
@@ -363,6 +375,48 @@ ExprPtr Parser::parseCall(int depth) {
     diags_.report(DiagKind::FunctionArity, name.range, name.text, arity,
                   e->args.size());
     fail();
+  }
+  e->range = {name.range.begin, end - name.range.begin.offset};
+  return e;
+}
+
+// The letters of PRM (three address letters to the lexer) before '['.
+bool Parser::startsParameterRead(const Token& letter) const {
+  const std::string_view text = sources_.text(letter.range.begin.file);
+  const std::size_t at = letter.range.begin.offset;
+  if (at + 4 > text.size() || text[at + 3] != '[') {
+    return false;
+  }
+  std::string word(text.substr(at, 3));
+  for (char& ch : word) {
+    ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  }
+  return word == "PRM";
+}
+
+// PRM[n], PRM[n, bit], PRM[n]/[axis], PRM[n, bit]/[axis]: like ATAN[a]/[b],
+// a bracket after '/' is the axis, not a divisor.
+ExprPtr Parser::parseParameterRead(int depth) {
+  const Token name = tok_;
+  advance(); // P
+  advance(); // R
+  advance(); // M
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Parameter;
+  std::uint32_t end = parseArguments(depth, *e);
+  if (e->args.size() > 2) {
+    diags_.report(DiagKind::FunctionArity, name.range, "PRM", 2,
+                  e->args.size());
+    fail();
+  }
+  e->parameterForm = e->args.size() == 2 ? MBRT_PARAMETER_BIT : 0;
+  if (tok_.kind == Tok::Slash && peek().kind == Tok::LBracket) {
+    advance();
+    ExprPtr axis = parseBracketed(depth);
+    end = axis->range.begin.offset + axis->range.length;
+    axis->bracketed = false;
+    e->args.push_back(std::move(axis));
+    e->parameterForm |= MBRT_PARAMETER_AXIS;
   }
   e->range = {name.range.begin, end - name.range.begin.offset};
   return e;

@@ -95,6 +95,9 @@ private:
   /// word alone before a comment; none for a plain missing value.
   std::optional<SourceRange> strayText(const Token& letter) const;
   void refuseUnsupportedFunction(const Token& letter);
+  bool startsParameterRead(const Token& letter) const;
+  ExprPtr parseParameterRead(int depth);
+  std::uint32_t parseArguments(int depth, Expr& e);
   const Token* messageAfter(std::uint32_t offset) const;
   void checkMessageLength(const Stmt& s, const Token& comment);
   Program& currentProgram(SourceLoc at);

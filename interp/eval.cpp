@@ -46,6 +46,23 @@ mbrt_status Interpreter::eval(const Expr& e, Num& out, char roundLetter) {
     }
     case ExprKind::Call:
       return evalCall(e, out, roundLetter);
+    case ExprKind::Parameter: {
+      // n, then the bit and the axis that are written, as vacant-is-0
+      // numbers.
+      double values[3] = {0.0, 0.0, 0.0};
+      for (std::size_t i = 0; i < e.args.size() && i < 3; ++i) {
+        Num v;
+        if (mbrt_status st = eval(*e.args[i], v)) {
+          return st;
+        }
+        values[i] = numeric(v);
+      }
+      const bool bit = (e.parameterForm & MBRT_PARAMETER_BIT) != 0;
+      const bool axis = (e.parameterForm & MBRT_PARAMETER_AXIS) != 0;
+      return mbrt_read_parameter(ctx_, e.parameterForm, values[0],
+                                 bit ? values[1] : 0.0,
+                                 axis ? values[bit ? 2 : 1] : 0.0, &out);
+    }
     case ExprKind::Compare:
     case ExprKind::Logical:
       break;

@@ -56,6 +56,10 @@ mbrt_status Evaluator::exec(const Function& fn, Frame& frame, int depth,
       return 0;
     case Op::Fn:
       return execFn(inst, frame, v[id]);
+    case Op::Prm:
+      return mbrt_read_parameter(
+          ctx_, static_cast<int>(inst.get<Number>().value), v[inst.ops[0]],
+          v[inst.ops[1]], v[inst.ops[2]], &v[id]);
     case Op::RoundAddr:
       return mbrt_round_address(ctx_, inst.get<AddressLetter>().letter,
                                 v[inst.ops[0]], &v[id]);

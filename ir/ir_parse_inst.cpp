@@ -196,6 +196,13 @@ void OperandParser::parse() {
       c_.expect(',');
       inst_.ops.push_back(c_.value());
       return;
+    case Format::Parameter:
+      data<Number>().value = c_.number();
+      for (int i = 0; i < 3; ++i) {
+        c_.expect(',');
+        inst_.ops.push_back(c_.value());
+      }
+      return;
     case Format::Skip:
       data<SkipSwitch>().number =
           static_cast<int>(c_.integer("a skip switch", INT32_MIN, INT32_MAX));

@@ -6,6 +6,7 @@
 
 #include "frontend/sema.h"
 #include "frontend/trace_text.h"
+#include <mbc/engine.h>
 
 #include <algorithm>
 #include <map>
@@ -426,6 +427,16 @@ ValueId FunctionLowering::lowerExpr(const Expr& e, char roundLetter) {
     }
     case ExprKind::Call:
       return lowerCall(e, roundLetter);
+    case ExprKind::Parameter: {
+      const bool bit = (e.parameterForm & MBRT_PARAMETER_BIT) != 0;
+      const bool axis = (e.parameterForm & MBRT_PARAMETER_AXIS) != 0;
+      const ValueId n = lowerNum(*e.args[0]);
+      const ValueId b = bit ? lowerNum(*e.args[1]) : constant(0);
+      const ValueId a = axis ? lowerNum(*e.args.back()) : constant(0);
+      const ValueId v = emit(Op::Prm, {n, b, a});
+      fn_.insts[v].get<Number>().value = e.parameterForm;
+      return v;
+    }
   }
   return constant(0);
 }

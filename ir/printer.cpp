@@ -196,6 +196,14 @@ void OperandPrinter::print() {
       operand(0);
       return;
     }
+    case Format::Parameter:
+      put(" {}, ", inst_.get<Number>().value);
+      operand(0);
+      put(", ");
+      operand(1);
+      put(", ");
+      operand(2);
+      return;
     case Format::Skip:
       put(" {}", inst_.get<SkipSwitch>().number);
       return;

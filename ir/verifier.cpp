@@ -80,6 +80,7 @@ Shape expectedShape(const Module& m, const Inst& inst) {
     case Format::Plain:
     case Format::Constant:
     case Format::RoundAddress:
+    case Format::Parameter:
     case Format::Skip:
     case Format::Line:
     case Format::Load:

@@ -31,6 +31,8 @@ json functions() {
 #define BUILTIN(Id, Name, Arity)                                               \
   rows.push_back({{"name", Name}, {"arity", Arity}});
 #include <mbc/builtins.def>
+  // Read by the parser itself, with its bit and axis forms.
+  rows.push_back({{"name", "PRM"}, {"arity", 1}});
   return rows;
 }
 

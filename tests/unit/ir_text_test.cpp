@@ -116,6 +116,7 @@ b1:
   %16 = fn ATAN2, %15, %5
   %17 = fn POW, %16, %4
   %18 = round.addr X, %17
+  %60 = prm 3, %4, %5, %5
   %19 = const 1
   %20 = const -2.5
   %21 = nc G:int %19, X:dec %20, Y:var %2, Z:nvar %3, F:val %18, r:dec %20

@@ -75,5 +75,51 @@ TEST(RuntimeParameterInput, ResetBringsTheProfilesParametersBack) {
   EXPECT_EQ(m.read(5001), 0.01);
 }
 
+// PRM (mbrt_read_parameter): the values a profile may set, with their
+// defaults; what a machine cannot tell is an alarm, never a guess.
+TEST(RuntimeParameterRead, ValuesBitsAxesAndAlarms) {
+  Machine m(R"({"axes": ["X", "Y", "Z", "C"], "parameters": {"5400": 129,
+      "1241": [10, 20, 30, 40]}})");
+  double v = -1.0;
+  ASSERT_EQ(mbrt_read_parameter(m.ctx(), 0, 3410, 0, 0, &v), 0);
+  EXPECT_EQ(v, 0.02); // the default
+  ASSERT_EQ(mbrt_read_parameter(m.ctx(), MBRT_PARAMETER_BIT, 5400, 7, 0, &v),
+            0);
+  EXPECT_EQ(v, 1.0);
+  ASSERT_EQ(mbrt_read_parameter(m.ctx(), MBRT_PARAMETER_BIT, 5400, 6, 0, &v),
+            0);
+  EXPECT_EQ(v, 0.0);
+  ASSERT_EQ(mbrt_read_parameter(m.ctx(), MBRT_PARAMETER_AXIS, 1241, 0, 3, &v),
+            0);
+  EXPECT_EQ(v, 30.0);
+  // 1006 as the profile derived it: C is rotary (#0 ROT).
+  ASSERT_EQ(mbrt_read_parameter(m.ctx(),
+                                MBRT_PARAMETER_BIT | MBRT_PARAMETER_AXIS, 1006,
+                                0, 4, &v),
+            0);
+  EXPECT_EQ(v, 1.0);
+
+  struct Case {
+    int form;
+    double n, bit, axis;
+    AlarmId alarm;
+  };
+
+  const Case cases[] = {
+      {0, 1320, 0, 0, AlarmId::Unsupported},        // not modelled
+      {0, 1241, 0, 0, AlarmId::ArgumentOutOfRange}, // needs an axis
+      {MBRT_PARAMETER_AXIS, 3410, 0, 1, AlarmId::ArgumentOutOfRange},
+      {MBRT_PARAMETER_AXIS, 1241, 0, 5, AlarmId::ArgumentOutOfRange},
+      {MBRT_PARAMETER_BIT, 3410, 0, 0, AlarmId::ArgumentOutOfRange},
+      {MBRT_PARAMETER_BIT, 5400, 8, 0, AlarmId::ArgumentOutOfRange},
+  };
+  for (const Case& c : cases) {
+    Machine fresh;
+    EXPECT_EQ(mbrt_read_parameter(fresh.ctx(), c.form, c.n, c.bit, c.axis, &v),
+              status(c.alarm))
+        << c.n;
+  }
+}
+
 } // namespace
 } // namespace mbc::test

@@ -80,6 +80,20 @@ mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out);
 /* ---- NC blocks and calls ----------------------------------------------
  */
 
+/* Which of PRM's optional operands are given (a mask). */
+enum mbrt_parameter_form {
+  MBRT_PARAMETER_BIT = 1, /* PRM[n, bit] */
+  MBRT_PARAMETER_AXIS = 2 /* PRM[n]/[axis] */
+};
+
+/* PRM: the value of parameter `number` (with MBRT_PARAMETER_BIT only bit
+ * `bit` of it, 0 or 1; with MBRT_PARAMETER_AXIS of axis number `axis`,
+ * 1 up), for the parameters a
+ * machine profile may set; MBC0001 for another, PS0119 for a bit or axis
+ * the parameter does not have. */
+mbrt_status mbrt_read_parameter(mbrt_ctx* ctx, int form, double number,
+                                double bit, double axis, double* out);
+
 /* The least input increment of an address (0.001 for metric axes, 1 for
  * integer addresses): ROUND written directly in an address rounds to it. */
 double mbrt_address_increment(const mbrt_ctx* ctx, char letter);
