@@ -462,6 +462,29 @@ void Parser::reportUnmodelledCodes(const std::vector<Word>& words) {
                                         : nullptr) {
       diags_.report(DiagKind::UnsupportedGCode, w.range, gCodeText(code), name);
     }
+    if (code == 100 && options_.latheSystem == 0) {
+      reportUnsupportedDataInput(w, words);
+    }
+  }
+}
+
+// A mill's G10 with an L the runtime does not execute (dataInputKind).
+void Parser::reportUnsupportedDataInput(const Word& g10,
+                                        const std::vector<Word>& words) {
+  const auto l = std::find_if(words.begin(), words.end(),
+                              [](const Word& w) { return w.letter == 'L'; });
+  if (l == words.end()) {
+    diags_.report(DiagKind::UnsupportedDataInput, g10.range, "without L");
+    return;
+  }
+  if (l->value->kind != ExprKind::Number) {
+    return; // computed: the run decides
+  }
+  const double value = l->value->number;
+  if (value < 0 || value > 99 || value != std::floor(value) ||
+      dataInputKind(static_cast<int>(value)) == nullptr) {
+    diags_.report(DiagKind::UnsupportedDataInput, l->range,
+                  fmt::format("L{}", value));
   }
 }
 

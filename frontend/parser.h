@@ -97,6 +97,8 @@ private:
   void refuseUnsupportedFunction(const Token& letter);
   bool startsParameterRead(const Token& letter) const;
   ExprPtr parseParameterRead(int depth);
+  void reportUnsupportedDataInput(const Word& g10,
+                                  const std::vector<Word>& words);
   std::uint32_t parseArguments(int depth, Expr& e);
   const Token* messageAfter(std::uint32_t offset) const;
   void checkMessageLength(const Stmt& s, const Token& comment);

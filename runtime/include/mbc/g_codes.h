@@ -17,6 +17,11 @@ std::string gCodeText(int tenths);
 /// does not have.
 const char* unmodelledGCode(int tenths);
 
+/// What a mill's G10 L<l> sets ("a work offset", "a tool offset", "the
+/// parameters that follow"), or nullptr for an L mbc does not execute (the
+/// run stops with MBC0001 at it).
+const char* dataInputKind(int l);
+
 /// On a lathe in G code system `system` ('A', 'B', 'C'): the code (tenths)
 /// system A writes the same function with (G77 of system B is 900, G90's
 /// turning cycle), -1 when system A has no such code (G90/G91 of systems B

@@ -3,6 +3,7 @@
 #include "data_input.h"
 
 #include <mbc/arith.h>
+#include <mbc/g_codes.h>
 
 #include <fmt/format.h>
 
@@ -75,15 +76,33 @@ mbrt_status setToolOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
 mbrt_status programmableDataInput(mbrt_ctx& ctx, const FrameWords& words) {
   const mbrt_word* lWord = words.word('L');
   const double l = lWord != nullptr ? roundHalfAway(numeric(lWord->value)) : 0;
+  if (l < 0.0 || l > 99.0 || dataInputKind(static_cast<int>(l)) == nullptr) {
+    return raise(ctx, AlarmId::Unsupported,
+                 lWord != nullptr ? fmt::format("G10 L{}", l)
+                                  : std::string("G10 without L"));
+  }
   if (l == 2.0 || l == 20.0) {
     return setWorkOffset(ctx, words, static_cast<int>(l));
   }
-  if (l >= 10.0 && l <= 13.0) {
-    return setToolOffset(ctx, words, static_cast<int>(l));
-  }
-  return raise(ctx, AlarmId::Unsupported,
-               lWord != nullptr ? fmt::format("G10 L{}", l)
-                                : std::string("G10 without L"));
+  return setToolOffset(ctx, words, static_cast<int>(l)); // L10-L13
 }
 
 } // namespace mbc::rt
+
+const char* mbc::dataInputKind(int l) {
+  switch (l) {
+    case 2:  // external, G54-G59
+    case 20: // G54.1
+      return "a work offset";
+    case 10: // H geometry
+    case 11: // H wear
+    case 12: // D geometry
+    case 13: // D wear
+      return "a tool offset";
+    case 50: // parameter_input.h
+    case 52:
+      return "the parameters that follow";
+    default:
+      return nullptr;
+  }
+}
