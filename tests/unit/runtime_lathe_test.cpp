@@ -208,6 +208,23 @@ TEST(RuntimeLathe, SystemBAndC) {
   EXPECT_EQ(c.read(4006), 70.0);
 }
 
+// H is the incremental C of G code system A: it moves a C axis, and where
+// there is none (or in systems B and C, which write G91 C) it is no address,
+// never a mill's H offset.
+TEST(RuntimeLathe, HIsTheIncrementalC) {
+  Machine c(R"({"series": "T", "axes": ["X", "Z", "C"]})");
+  ASSERT_EQ(c.block("G98 G00 X50. Z2. C10."), 0);
+  ASSERT_EQ(c.block("G01 H90. F100."), 0);
+  EXPECT_EQ(c.motions().back().end[2], 100.0);
+  Machine none(kLathe);
+  EXPECT_EQ(none.block("G01 H90. F100."), status(AlarmId::ImproperNcAddress));
+  EXPECT_TRUE(reports(none, "the profile has no C axis"));
+  Machine b(R"({"series": "T", "axes": ["X", "Z", "C"],
+      "parameters": {"3401": 64}})");
+  EXPECT_EQ(b.block("G01 H90. F100."), status(AlarmId::ImproperNcAddress));
+  EXPECT_TRUE(reports(b, "in system B write G91 C"));
+}
+
 TEST(RuntimeLathe, CodesNotModelledYetStopTheRun) {
   const std::pair<const char*, const char*> cases[] = {
       {"G07.1 C20.", "G7.1 (cylindrical interpolation)"},

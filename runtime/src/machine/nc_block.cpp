@@ -593,6 +593,18 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
     return toCounts(ctx, word, addressCountsPerUnit(ctx, letter),
                     ctx.axisCountsPerIncrement(axis), &block.motion.axis[axis]);
   }
+  if (letter == 'H' && ctx.profile.lathe()) {
+    // A lathe has no H offset: H is only ever the incremental C.
+    return raise(ctx, AlarmId::ImproperNcAddress,
+                 ctx.profile.gCodeSystem != 'A'
+                     ? fmt::format("H is not an address of this machine (the "
+                                   "incremental C of G code system A; in "
+                                   "system {} write G91 C)",
+                                   ctx.profile.gCodeSystem)
+                     : std::string("H is not an address of this machine (the "
+                                   "incremental C of G code system A, and the "
+                                   "profile has no C axis)"));
+  }
   if (letter == 'R') {
     block.motion.hasR = true;
     return toLengthCounts(ctx, word, &block.motion.r);
