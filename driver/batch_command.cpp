@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <thread>
 
 namespace mbc::driver {
@@ -55,7 +56,11 @@ int batchCommand(const Options& o) {
     return 2;
   }
   if (!readBatchTable(o.paramsPath, o.columnMap, all, error)) {
-    std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
+    // One line per problem: a header may have several.
+    std::istringstream problems(error);
+    for (std::string line; std::getline(problems, line);) {
+      std::fprintf(stderr, "mbc: error: %s\n", line.c_str());
+    }
     return 2;
   }
   std::vector<BatchRow> rows;

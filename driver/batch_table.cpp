@@ -9,6 +9,7 @@
 #include <mbc/read_file.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -156,14 +157,20 @@ bool sameName(std::string_view a, std::string_view b) {
          });
 }
 
-// The header's columns, through the --column map.
+/// A header cell mbc cannot read: where it starts, and why.
+struct HeaderProblem {
+  int column;
+  std::string why;
+};
+
+// The header's columns, through the --column map. Every cell that cannot
+// be read is a problem, so that one run of mbc batch names them all.
 bool readHeader(const std::vector<Cell>& cells, const ColumnMap& columnMap,
-                std::vector<Column>& columns, int& badColumn,
-                std::string& why) {
+                std::vector<Column>& columns,
+                std::vector<HeaderProblem>& problems) {
   std::set<std::string> seen;
   std::vector<bool> mapped(columnMap.size());
   for (const Cell& cell : cells) {
-    badColumn = cell.column;
     std::string name = cell.text;
     bool ignored = false;
     for (std::size_t m = 0; m < columnMap.size(); ++m) {
@@ -174,29 +181,31 @@ bool readHeader(const std::vector<Cell>& cells, const ColumnMap& columnMap,
       }
     }
     Column column;
+    std::string why;
     if (ignored) {
       column.kind = ColumnKind::Ignored;
     } else if (!parseColumn(name, column, why)) {
-      return false;
+      problems.push_back({cell.column, why});
+      column.kind = ColumnKind::Ignored;
+      ignored = true;
     }
     const std::string key = column.kind == ColumnKind::Argument
                                 ? std::string(1, column.letter)
                                 : name;
     if (!ignored && !seen.insert(key).second) {
-      why = fmt::format("column '{}' appears twice", cell.text);
-      return false;
+      problems.push_back(
+          {cell.column, fmt::format("column '{}' appears twice", cell.text)});
     }
     columns.push_back(column);
   }
   for (std::size_t m = 0; m < columnMap.size(); ++m) {
     if (!mapped[m]) {
-      badColumn = 1;
-      why = fmt::format("--column {}: the header has no column '{}'",
-                        columnMap[m].first, columnMap[m].first);
-      return false;
+      problems.push_back(
+          {1, fmt::format("--column {}: the header has no column '{}'",
+                          columnMap[m].first, columnMap[m].first)});
     }
   }
-  return true;
+  return problems.empty();
 }
 
 bool isIdCharacter(char c) {
@@ -245,9 +254,15 @@ bool readBatchTable(const std::string& path, const ColumnMap& columnMap,
       return fail(lineNumber, badColumn, "unterminated quoted cell");
     }
     if (header) {
-      std::string why;
-      if (!readHeader(cells, columnMap, columns, badColumn, why)) {
-        return fail(lineNumber, badColumn, why);
+      std::vector<HeaderProblem> problems;
+      if (!readHeader(cells, columnMap, columns, problems)) {
+        std::vector<std::string> lines;
+        for (const HeaderProblem& problem : problems) {
+          lines.push_back(fmt::format("{}:{}:{}: {}", path, lineNumber,
+                                      problem.column, problem.why));
+        }
+        error = fmt::format("{}", fmt::join(lines, "\n"));
+        return false;
       }
       hasId = std::any_of(columns.begin(), columns.end(), [](const Column& c) {
         return c.kind == ColumnKind::Id;

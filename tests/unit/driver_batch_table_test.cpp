@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -88,6 +89,20 @@ TEST_F(BatchTableTest, ColumnsMappedAndIgnored) {
   EXPECT_FALSE(read("depth,Z\n1,2\n", {{"depth", "Z"}}));
   EXPECT_NE(error_.find("column 'Z' appears twice"), std::string::npos)
       << error_;
+}
+
+// Every column the header cannot have is named at once, each at its place,
+// a line each: a table from elsewhere is fixed in one round.
+TEST_F(BatchTableTest, EveryUnknownColumnIsReported) {
+  EXPECT_FALSE(read("id,depth,R,speed,L,R\n1,2,3,4,5,6\n", {{"width", "W"}}));
+  const std::string expected[] = {
+      ":1:4: unknown column 'depth'", ":1:12: unknown column 'speed'",
+      ":1:18: 'L' is not a G65 argument", ":1:20: column 'R' appears twice",
+      ":1:1: --column width: the header has no column 'width'"};
+  for (const std::string& line : expected) {
+    EXPECT_NE(error_.find(line), std::string::npos) << line << "\n" << error_;
+  }
+  EXPECT_EQ(std::count(error_.begin(), error_.end(), '\n'), 4) << error_;
 }
 
 TEST_F(BatchTableTest, NumberedIdsArePaddedToTheLargest) {
