@@ -6,7 +6,8 @@
 # between its programs are direct) and a C header declaring an entry point
 # mbc_O<number> per program and the program table (mbc_programs_<target>,
 # or TABLE). <target> is a static library of that object, linked with
-# mbc::runtime; its users include "<target>.h" (or HEADER).
+# mbc::runtime (mbc::runtime_shared in a project without C++); its users
+# include "<target>.h" (or HEADER).
 #
 # mbc runs in the current source directory with the sources as written, so
 # alarm reports name them the way the CMakeLists.txt does. OPTIONS go to
@@ -46,7 +47,17 @@ function(mbc_add_macro_library target)
     VERBATIM)
   set_source_files_properties(${object} PROPERTIES EXTERNAL_OBJECT TRUE GENERATED TRUE)
   add_library(${target} STATIC ${object} ${header})
-  set_target_properties(${target} PROPERTIES LINKER_LANGUAGE CXX)
   target_include_directories(${target} PUBLIC ${dir})
-  target_link_libraries(${target} PUBLIC mbc::runtime)
+  # An object alone says no language. A C++ project links the static
+  # runtime; a C project (no C++ linker, no C++ library) the shared one,
+  # which brings its C++ library along and exports the C ABI alone.
+  get_property(languages GLOBAL PROPERTY ENABLED_LANGUAGES)
+  if("CXX" IN_LIST languages)
+    set_target_properties(${target} PROPERTIES LINKER_LANGUAGE CXX)
+    target_link_libraries(${target} PUBLIC mbc::runtime)
+  else()
+    set_target_properties(${target} PROPERTIES LINKER_LANGUAGE C)
+    # Compiled code calls libm (round), which a C link does not add.
+    target_link_libraries(${target} PUBLIC mbc::runtime_shared m)
+  endif()
 endfunction()

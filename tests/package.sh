@@ -37,6 +37,13 @@ done
   diff -u "$source/examples/sim-loop/expected_output.txt" - ||
   fail "sim_loop built against the package"
 
+# A C project (no C++ at all) uses mbc_add_macro_library too.
+cmake -S "$source/tests/c_project" -B c-build -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_BUILD_TYPE=Release $flags >c-project.log 2>&1 &&
+  cmake --build c-build >>c-project.log 2>&1 ||
+  { cat c-project.log; fail "tests/c_project, a C project with mbc_add_macro_library"; }
+[ "$(./c-build/sim)" = 7 ] || fail "the C project's program"
+
 printf '%%\nO1\n#100 = 7\nG01 X#100 F100\nM30\n%%\n' >p.nc
 "$prefix/bin/mbc" build p.nc -o p -v 2>link.txt || { cat link.txt; fail "installed mbc build"; }
 grep -q "$prefix/lib/libmbc_runtime.a" link.txt ||
@@ -51,26 +58,12 @@ version=$(cc -E -P -I"$prefix/include" version.c | tr -d '" ')
   fail "pkg-config --modversion mbc is not the installed version.h's ($version)"
 sanitize_flag=""
 [ -n "$sanitize" ] && sanitize_flag="-fsanitize=$sanitize"
-cat >call.c <<'EOF'
-#include "p.h"
-#include <stdio.h>
-int main(void) {
-  char err[256];
-  mbrt_num value = 0;
-  mbrt_ctx* ctx = mbrt_create(NULL, err, sizeof err);
-  if (ctx == NULL || mbc_O1(ctx, NULL, 0) != MBRT_OK ||
-      mbrt_read_var(ctx, 100, &value) != MBRT_OK) {
-    return 1;
-  }
-  printf("%g\n", value);
-  mbrt_destroy(ctx);
-  return 0;
-}
-EOF
-"$prefix/bin/mbc" compile -c p.nc -o p.o --header p.h || fail "installed mbc compile"
+# The C project's program, its cycle compiled by hand.
+"$prefix/bin/mbc" compile -c "$source/tests/c_project/cycle.nc" -o p.o \
+  --header cycle.h || fail "installed mbc compile"
 # shellcheck disable=SC2046 # pkg-config's words are separate arguments
 cc -std=c99 -Wall -Wextra -Wpedantic -Werror $sanitize_flag $(pkg-config --cflags mbc) \
-  -I. call.c p.o $(pkg-config --libs mbc) -o call >cc.log 2>&1 ||
+  -I. "$source/tests/c_project/main.c" p.o $(pkg-config --libs mbc) -o call >cc.log 2>&1 ||
   { cat cc.log; fail "a C program with a compiled cycle, linked by pkg-config"; }
 [ "$(LD_LIBRARY_PATH="$prefix/lib" ./call)" = 7 ] || fail "the pkg-config-linked program"
 # shellcheck disable=SC2046
