@@ -38,8 +38,8 @@ extern "C" {
 
 typedef struct mbrt_ctx mbrt_ctx;
 
-/* A variable's value: an IEEE double, or vacant (a reserved NaN, see
- * mbc/value.h). */
+/* A variable's value: an IEEE double, or vacant (a reserved NaN:
+ * mbrt_vacant, mbrt_is_vacant). */
 typedef double mbrt_num;
 
 /* MBRT_OK (0) = success; otherwise an alarm id, one of mbrt_alarm_id. */
@@ -170,6 +170,12 @@ void mbrt_set_block_skip(mbrt_ctx* ctx, unsigned mask);
 
 /* ---- Variables -----------------------------------------------------------
  */
+
+/* Vacant, the value of #0 and of an unset variable: writing it unsets a
+ * variable. */
+mbrt_num mbrt_vacant(void);
+/* 1 when v is vacant (every NaN is: arithmetic never gives one), else 0. */
+int mbrt_is_vacant(mbrt_num v);
 
 /* #[number]: the number is rounded half away from zero, then range-checked
  * (PS0115). Reads give vacant for unset variables. */

@@ -42,6 +42,14 @@ mbrt_status outOfRange(mbrt_ctx& ctx, long n) {
 
 } // namespace
 
+mbrt_num mbrt_vacant(void) {
+  return mbc::vacant();
+}
+
+int mbrt_is_vacant(mbrt_num v) {
+  return mbc::isVacant(v) ? 1 : 0;
+}
+
 mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out) {
   const long n = variableNumber(number);
   if (isLocal(n)) {
