@@ -61,6 +61,20 @@ TEST(RuntimeEmbedding, OutOfMemoryStopsTheNextBlockOfThisRunOnly) {
   EXPECT_EQ(m.block("G00 X2.", 2), 0);
 }
 
+// A host's call after a run is the host's: its alarm is not blamed on the
+// run's last block.
+TEST(RuntimeEmbedding, AHostsCallAfterARunIsReportedAsTheHosts) {
+  Machine m;
+  const mbrt_program face{"O1", 1,
+                          [](mbrt_ctx* ctx, void*, mbrt_flow*) -> mbrt_status {
+                            return mbrt_begin_block(ctx, "face.nc", 24);
+                          }};
+  ASSERT_EQ(mbrt_run_main(m.ctx(), &face, nullptr, 0), 0);
+  EXPECT_EQ(m.write(5001, 1.0), MBRT_ALARM_WriteProtectedVariable);
+  EXPECT_EQ(m.report(), "alarm PS0116: WRITE PROTECTED VARIABLE: #5001 "
+                        "(called by the host, outside any block)\n");
+}
+
 /// A motion sink that calls back into its context as a careless host would.
 struct Reentry {
   mbrt_ctx* ctx;

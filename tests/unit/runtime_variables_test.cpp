@@ -27,8 +27,9 @@ TEST(RuntimeVariables, NullVariableIsVacantAndReadOnly) {
   Machine m;
   EXPECT_TRUE(isVacant(m.read(0)));
   EXPECT_EQ(m.write(0, 1.0), status(AlarmId::WriteProtectedVariable));
-  // No block has begun, so the report has no location.
-  EXPECT_EQ(m.report(), "alarm PS0116: WRITE PROTECTED VARIABLE: #0\n");
+  // No block has begun: the write is the host's, and the report says so.
+  EXPECT_EQ(m.report(), "alarm PS0116: WRITE PROTECTED VARIABLE: #0 (called "
+                        "by the host, outside any block)\n");
 }
 
 TEST(RuntimeVariables, GapsBetweenClassesAreOutOfRange) {

@@ -47,6 +47,15 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   alarm.id = id;
   alarm.macroNumber = macroNumber;
   alarm.detail = detail;
+  // Outside any block (before a run's first, or after mbrt_run_main
+  // returned) the call came from the host: say so, where a block would
+  // have its file and line.
+  if (ctx.block.file == nullptr && id != AlarmId::MacroAlarm) {
+    alarm.detail += alarm.detail.empty()
+                        ? "called by the host, outside any block"
+                        : " (called by the host, outside any "
+                          "block)";
+  }
   alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
   alarm.line = ctx.block.line;
   alarm.stack.clear();

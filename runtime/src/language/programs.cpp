@@ -78,7 +78,11 @@ mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
       return st;
     }
   }
-  return mbrt_run_body(ctx, program);
+  const mbrt_status st = mbrt_run_body(ctx, program);
+  // The run is over: what the host calls next is no block's doing.
+  ctx->block.file = nullptr;
+  ctx->block.line = 0;
+  return st;
 }
 
 namespace mbc::rt {
