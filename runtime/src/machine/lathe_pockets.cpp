@@ -156,6 +156,7 @@ private:
   void emit(ShapeMotion motion, ShapePoint to);
   void follow(const Crossing& from, const Crossing& to);
   Crossing climb(const Crossing& from, double limit);
+  void backToA(double e);
   void cutBelow(const Span& span, double level, double aboveLevel);
   void enterFirst(const Span& outer, double outerLevel, const Span& span,
                   double level);
@@ -395,16 +396,26 @@ ShapeFault PocketRoughing::run() {
   if (cut) {
     // Out of the last pocket along the shape, then back to A above it.
     follow(last_, end());
-    const ShapePoint out = end().at;
-    emit(ShapeMotion::Rapid, {std::max(a_.x, out.x + e), out.z});
-    emit(ShapeMotion::Rapid, {std::max(a_.x, out.x + e), a_.z});
-    emit(ShapeMotion::Rapid, a_);
+    backToA(e);
   }
   // Along the shape with the allowance left on it, then back to A.
   emit(approach_, start_);
   follow({0, start_}, end());
-  emit(ShapeMotion::Rapid, a_);
+  backToA(e);
   return ShapeFault::None;
+}
+
+/// From the shape's end back to A at rapid: first away from the shape to
+/// A's level (or e above the end, if higher), then along it, since a
+/// straight line to A could cross a rise of the shape before its end.
+void PocketRoughing::backToA(double e) {
+  const ShapePoint out = end().at;
+  const double clear = std::max(a_.x, out.x + e);
+  emit(ShapeMotion::Rapid, {clear, out.z});
+  emit(ShapeMotion::Rapid, {clear, a_.z});
+  if (clear != a_.x) {
+    emit(ShapeMotion::Rapid, a_);
+  }
 }
 
 } // namespace
