@@ -80,7 +80,7 @@ mbrt_status mbrt_read_parameter(mbrt_ctx* ctx, int form, double number,
   }
   if ((form & MBRT_PARAMETER_BIT) != 0) {
     const double b = roundHalfAway(bit);
-    const bool bitParameter = spec->whole && spec->high == 255.0;
+    const bool bitParameter = spec->bits();
     if (!bitParameter || b < 0.0 || b > 7.0) {
       return outOfRange(*ctx, n,
                         bitParameter ? fmt::format("bit {} (0 to 7)", bit)

@@ -119,7 +119,7 @@ mbrt_status parameterInputBlock(mbrt_ctx& ctx, const mbrt_word* words,
   double newValue = value;
   if (q != nullptr) {
     const double bit = roundHalfAway(numeric(q->value));
-    const bool bitParameter = spec->whole && spec->high == 255.0;
+    const bool bitParameter = spec->bits();
     if (!bitParameter || bit < 0.0 || bit > 7.0 || (value != 0 && value != 1)) {
       return badData(ctx, number,
                      "Q is the bit (0-7) of a bit parameter, R its value 0 "

@@ -14,6 +14,9 @@ struct ParameterSpec {
   double fallback;      // the value of a parameter the profile does not set
   bool whole;           // bit parameters and codes take whole numbers
   bool perAxis = false; // one value per axis: a JSON array in the profile
+
+  /// A bit parameter: its value is the byte of bits 0-7.
+  bool bits() const { return whole && high == 255.0; }
 };
 
 /// The spec of parameter `number`, or nullptr when profiles cannot set it.
