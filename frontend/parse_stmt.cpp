@@ -402,7 +402,6 @@ void Parser::parseWords(Stmt& s) {
   // Letters whose literal is no length in this block: G04's X (ms), a
   // cycle's K (repeats), G51's I J K (scale factors), the switches of
   // G05.1 and G05.4 (Q1, R level); G68's R is an angle.
-  bool dwell = false;
   WordUnits units;
   for (const Word& w : s.words) {
     if (w.letter != 'G' || w.value->kind != ExprKind::Number) {
@@ -414,17 +413,18 @@ void Parser::parseWords(Stmt& s) {
       // its G10 Q is a tip direction.
       const int a = latheFunction(options_.latheSystem,
                                   static_cast<int>(std::round(g * 10.0)));
-      dwell = dwell || a == 40;
+      units.dwell = units.dwell || a == 40;
       inch_ = a == 200 || (inch_ && a != 210); // G20/G21 (C: G70/G71)
       units.notLengths += a >= 700 && a <= 760 ? "PQR" : a == 100 ? "Q" : "";
       continue;
     }
-    dwell = dwell || g == 4;
+    units.dwell = units.dwell || g == 4;
     inch_ = g == 20 || (inch_ && g != 21);
     if (g == 73 || g == 74 || g == 76 || (g >= 81 && g <= 89)) {
       units.notLengths += 'K';
     } else if (g == 51) {
       units.notLengths += "IJK";
+      units.counts = "L"; // P is the magnification
     } else if (g == 5.1 || g == 5.4) {
       units.notLengths += "QR";
     } else if (g == 68) {
@@ -432,9 +432,7 @@ void Parser::parseWords(Stmt& s) {
     }
   }
   for (const Word& w : s.words) {
-    if (!dwell) {
-      checkDecimalPoint(w, false, units);
-    }
+    checkDecimalPoint(w, false, units);
   }
 }
 
@@ -532,9 +530,11 @@ void Parser::finishMacroCall(Stmt& s) {
     } else if (w.letter == 'G' && !seenG65) {
       s.leadCodes.push_back(std::move(w));
     } else if (w.letter == 'P') {
+      refuseCallNumberPoint(w);
       s.program = std::move(w.value);
       s.calledName = std::move(w.calledName);
     } else if (w.letter == 'L') {
+      refuseCallNumberPoint(w);
       s.repeat = std::move(w.value);
     } else if (w.letter == 'G') {
       diags_.report(DiagKind::BadMacroArgument, w.range, "G",
@@ -543,7 +543,7 @@ void Parser::finishMacroCall(Stmt& s) {
       diags_.report(DiagKind::CommaMacroArgument, w.range,
                     addressText(w.letter));
     } else {
-      checkDecimalPoint(w, true);
+      checkDecimalPoint(w, true, WordUnits{});
       args.push_back(std::move(w));
     }
   }
@@ -553,16 +553,45 @@ void Parser::finishMacroCall(Stmt& s) {
   }
 }
 
+namespace {
+
+/// "P2" for P2.: the fix-it of a whole number written with a point, when
+/// the point is all that is wrong.
+void addWholeNumberFix(Diagnostic& d, const Word& w) {
+  const double value = w.value->number;
+  if (value == std::trunc(value)) {
+    d.fixIts.push_back({w.range, fmt::format("{}{}", w.letter,
+                                             static_cast<long long>(value))});
+  }
+}
+
+} // namespace
+
+// G65 P is a program number and L a count: with a decimal point the block
+// is PS0007 when it runs.
+void Parser::refuseCallNumberPoint(const Word& w) {
+  if (w.kind == WordKind::DecLiteral) {
+    addWholeNumberFix(diags_.report(DiagKind::CallNumberDecimal, w.range,
+                                    std::string(1, w.letter)),
+                      w);
+  }
+}
+
 void Parser::checkDecimalPoint(const Word& w, bool macroArgument,
                                const WordUnits& units) {
   if (!options_.checkWarnings) {
     return;
   }
   if (!macroArgument && w.kind == WordKind::DecLiteral &&
-      isWholeNumberAddress(w.letter)) {
-    diags_.report(DiagKind::IntegerAddressDecimal, w.range,
-                  std::string(1, w.letter));
+      (isWholeNumberAddress(w.letter) ||
+       units.counts.find(w.letter) != std::string::npos)) {
+    addWholeNumberFix(diags_.report(DiagKind::IntegerAddressDecimal, w.range,
+                                    std::string(1, w.letter)),
+                      w);
     return;
+  }
+  if (units.dwell) {
+    return; // G04 X1000 is a second
   }
   // A U V W B C are axes only on machines that have them; as macro
   // arguments on the default machine they are plain numbers.

@@ -72,10 +72,14 @@ private:
   struct WordUnits {
     std::string notLengths; // no length: no warning
     std::string angles;     // degrees
+    // Numbers and counts: a decimal point is PS0007 (G51's P is none).
+    std::string counts = "PL";
+    bool dwell = false; // G04: X and U count milliseconds
   };
 
+  void refuseCallNumberPoint(const Word& w);
   void checkDecimalPoint(const Word& w, bool macroArgument,
-                         const WordUnits& units = {});
+                         const WordUnits& units);
   void parsePrint(Stmt& s);
   PrintItem parsePrintVariable(const std::string& statement);
   void expectEndOfBlock(const Stmt& s);

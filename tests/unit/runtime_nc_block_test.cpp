@@ -238,6 +238,30 @@ TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
   ASSERT_EQ(d.block("G04 X1.5"), 0);
 }
 
+// P and L are numbers and counts: a decimal point is PS0007 wherever they
+// are (the manual's addresses with decimal point are the coordinates, F and
+// G51's P); a value from a variable is rounded. K is among those addresses:
+// a cycle's K2. repeats twice.
+TEST(RuntimeNcBlock, NumbersAndCountsTakeNoDecimalPoint) {
+  for (const char* block : {"M98 P2. L2", "M98 P2 L2.", "G10 L2. P1 X0",
+                            "G10 L2 P1. X0", "G54.1 P1.", "M99 P10."}) {
+    Machine m;
+    EXPECT_EQ(m.block(block), status(AlarmId::IllegalDecimalPoint)) << block;
+  }
+  Machine m;
+  EXPECT_EQ(m.block("G04 P1000.", 3), status(AlarmId::IllegalDecimalPoint));
+  EXPECT_EQ(m.report(), "test.nc:3: alarm PS0007: ILLEGAL USE OF DECIMAL "
+                        "POINT: P1000.: P takes a whole number (G04 P counts "
+                        "milliseconds; G04 X1.5 is seconds)\n");
+  Machine values;
+  ASSERT_EQ(values.block("G54.1 P=2.6"), 0);
+  EXPECT_EQ(values.read(4130), 3.0);
+  ASSERT_EQ(values.block("G51 X0 Y0 P1.5"), 0); // a magnification
+  ASSERT_EQ(values.block("G50"), 0);
+  ASSERT_EQ(values.block("G91 G81 X10. R1. Z-1. K2. F100."), 0);
+  EXPECT_EQ(values.read(5041), 20.0);
+}
+
 // Rollover (1008#0 ROA): positions within one turn, G90 the shorter way;
 // with 1008#1 RAB the command's sign gives the way. Pure rotary rapids take
 // degrees / rapid rate: the clock tells the way taken.

@@ -76,7 +76,9 @@ struct Block {
   int oneFieldCount = 0;
   MotionWords motion;
   bool hasP = false;
-  bool pDecimal = false; // P written with a decimal point
+  // The first of P and L written with a decimal point (PS0007 but in
+  // G51), or nullptr.
+  const mbrt_word* countWithPoint = nullptr;
   bool hasL = false;
   double p = 0.0;
   double l = 0.0;
@@ -97,6 +99,12 @@ struct Block {
   BlockCodes codes;
   FrameWords frames;
 };
+
+/// "M3." or "P2.5": a word written with a decimal point, as written.
+std::string pointedWordText(char letter, double value) {
+  return fmt::format("{}{}{}", letter, value,
+                     value == std::trunc(value) ? "." : "");
+}
 
 bool isCycleCode(int tenths) {
   return tenths == 730 || tenths == 740 || tenths == 760 ||
@@ -561,11 +569,11 @@ std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
   if (seriesTenCycle && letter == 'D') {
     if (word.kind == MBRT_WORD_DEC_LITERAL) {
       return raise(ctx, AlarmId::IllegalDecimalPoint,
-                   fmt::format("D{}{}: D takes a whole number in G{}", value,
-                               value == std::trunc(value) ? "." : "",
+                   fmt::format("{}: D takes a whole number in G{}",
+                               pointedWordText('D', value),
                                writtenLatheCode(ctx, block.nonModal)));
     }
-    block.tenFormatD = value;
+    block.tenFormatD = roundHalfAway(value);
     return 0;
   }
   return std::nullopt;
@@ -669,10 +677,10 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   }
   if (word.kind == MBRT_WORD_DEC_LITERAL && isWholeNumberAddress(letter)) {
     // M3.0 is no M code (spec §1.5); a value, M[3.0] or M#1, is rounded.
-    const double v = numeric(word.value);
     return raise(ctx, AlarmId::IllegalDecimalPoint,
-                 fmt::format("{}{}{}: {} takes a whole number", letter, v,
-                             v == std::trunc(v) ? "." : "", letter));
+                 fmt::format("{}: {} takes a whole number",
+                             pointedWordText(letter, numeric(word.value)),
+                             letter));
   }
   const double value = roundHalfAway(numeric(word.value));
   if (value > kMaxCodeValue) {
@@ -881,11 +889,6 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
          block.qWritten});
   }
   if (block.nonModal == 40) {
-    if (block.pDecimal) {
-      return raise(ctx, AlarmId::IllegalDecimalPoint,
-                   "G04 P counts milliseconds and takes no decimal point "
-                   "(G04 X1.5 is seconds)");
-    }
     const double seconds = block.hasP ? block.p / 1000.0 : block.dwellSeconds;
     if (seconds < 0.0) {
       return raise(ctx, AlarmId::IllegalMinusSign,
@@ -968,9 +971,10 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       const double value = roundHalfAway(numeric(words[i].value));
       (letter == 'P' ? block.hasP : block.hasL) = true;
       (letter == 'P' ? block.p : block.l) = value;
-      block.pDecimal =
-          block.pDecimal ||
-          (letter == 'P' && words[i].kind == MBRT_WORD_DEC_LITERAL);
+      if (words[i].kind == MBRT_WORD_DEC_LITERAL &&
+          block.countWithPoint == nullptr) {
+        block.countWithPoint = &words[i];
+      }
     } else if (letter == 'Q') {
       block.qWritten = numeric(words[i].value);
       block.incrementQ = static_cast<Counts>(
@@ -989,6 +993,25 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       block.oneField[block.oneFieldCount++] = static_cast<int>(tenths);
     }
   }
+}
+
+/// P and L are numbers (programs, offsets, sequence numbers), counts and
+/// milliseconds: written with a decimal point they are PS0007, as the
+/// manual lists the addresses that take one (docs/language.md). G51's P is
+/// a magnification and takes one; a value from a variable is rounded.
+mbrt_status refuseCountWithPoint(mbrt_ctx& ctx, const Block& block) {
+  const mbrt_word& word = *block.countWithPoint;
+  if (word.letter == 'P' && block.frames.code == 510) {
+    return 0;
+  }
+  return raise(
+      ctx, AlarmId::IllegalDecimalPoint,
+      fmt::format("{}: {} takes a whole number{}",
+                  pointedWordText(word.letter, numeric(word.value)),
+                  word.letter,
+                  block.nonModal == 40 && word.letter == 'P'
+                      ? " (G04 P counts milliseconds; G04 X1.5 is seconds)"
+                      : ""));
 }
 
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
@@ -1013,6 +1036,11 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   if (const mbrt_status status = applyGCodes(ctx, words, count, block)) {
     return status;
+  }
+  if (block.countWithPoint != nullptr) {
+    if (const mbrt_status status = refuseCountWithPoint(ctx, block)) {
+      return status;
+    }
   }
   // A lathe's G10 reads its own words (U adds, C is the nose radius).
   for (size_t i = 0; i < count && block.frames.code != kLatheG10; ++i) {
