@@ -98,7 +98,16 @@ void matchLoops(Program& p, DiagnosticEngine& diags) {
   }
 }
 
+/// A sequence number used twice matters where a GOTO searches for it: the
+/// flattened program (--gcode) keeps every N a loop ran, and has no GOTO.
 void checkSequences(const Program& p, DiagnosticEngine& diags) {
+  const bool searched =
+      std::any_of(p.blocks.begin(), p.blocks.end(), [](const Block& b) {
+        return b.stmt.kind == StmtKind::Goto || b.stmt.kind == StmtKind::IfGoto;
+      });
+  if (!searched) {
+    return;
+  }
   std::map<int, int> first;
   for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
     int seq = p.blocks[i].seq;

@@ -37,6 +37,37 @@ TEST(RuntimeFlatGcode, WordsReadBackTheSame) {
                     "S1200 M3 T3\n");
 }
 
+// A value with a fraction where the block reads a whole number was rounded:
+// the flattened program writes the number the run used, as a literal with
+// a fraction would be PS0007 there.
+TEST(RuntimeFlatGcode, NumbersAndCountsAsTheBlockUsedThem) {
+  Flat f;
+  ASSERT_EQ(f.m.block("G04 P=1500.6"), 0);
+  ASSERT_EQ(f.m.block("G10 L=10.4 P=1.6 R5."), 0);
+  ASSERT_EQ(f.m.block("G54.1 P=2.6"), 0);
+  ASSERT_EQ(f.m.block("G81 X1. Z-1. R1. K=2.5 F100."), 0);
+  ASSERT_EQ(f.m.block("G80 G=1.04 X5."), 0);
+  ASSERT_EQ(f.m.block("G=54.1 P1"), 0);
+  EXPECT_EQ(f.text, "G4 P1501\n"
+                    "G10 L10 P2 R5.\n"
+                    "G54.1 P3\n"
+                    "G81 X1. Z-1. R1. K3 F100.\n"
+                    "G80 G1 X5.\n"
+                    "G54.1 P1\n");
+}
+
+// The flattened program is the control's program again: the main program's
+// O number and the N of every block that has one.
+TEST(RuntimeFlatGcode, KeepsTheProgramNumberAndSequenceNumbers) {
+  Flat f;
+  mbrt_start(f.m.ctx(), "O12");
+  ASSERT_EQ(f.m.block("N10 G00 X1."), 0);
+  ASSERT_EQ(f.m.block("G01 X2. F100."), 0);
+  mbrt_start(f.m.ctx(), "MAIN"); // no O number: none written
+  ASSERT_EQ(f.m.block("N20 X3."), 0);
+  EXPECT_EQ(f.text, "O0012\nN10 G0 X1.\nG1 X2. F100.\nN20 X3.\n");
+}
+
 TEST(RuntimeFlatGcode, KIsARepeatCountInACycle) {
   Flat f;
   ASSERT_EQ(f.m.block("G81 X1. Z-1. R1. K2 F100."), 0);

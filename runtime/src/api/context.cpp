@@ -15,6 +15,7 @@
 #include <new>
 
 #include "cutter_comp.h"
+#include "flat_gcode.h"
 #include "frames.h"
 #include "lathe_corners.h"
 #include "motion.h"
@@ -302,6 +303,7 @@ int mbrt_skip_switch(const mbrt_ctx* ctx, int n) {
 void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
   if (!refuseInSink(*ctx, "mbrt_start")) {
     startRun(*ctx, main_program);
+    flattenProgramStart(*ctx);
   }
 }
 

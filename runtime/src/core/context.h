@@ -466,8 +466,8 @@ struct mbrt_ctx {
   // The shapes read so far by (ns, nf), for G70.
   std::map<std::pair<double, double>, mbc::rt::Shape> shapes;
   int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
-  // The N of the block running, -1 for none: a lathe's flattened program
-  // keeps it, for the P and Q of its shape cycles.
+  // The N of the block running, -1 for none: the flattened program keeps
+  // it, for a lathe's shape cycles and a reader's bearings.
   double blockSequence = -1.0;
 
   // The run: the block being executed and the count of blocks.

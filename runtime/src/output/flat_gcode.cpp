@@ -1,10 +1,14 @@
-// Words print so that they read back the same. Coordinates (axes, I J K
-// R Q) print rounded to the least increment, as the block used them, with
-// a decimal point; other words print a literal without decimal point as an
-// integer and any other value with a decimal point and as many digits as
-// it takes to round-trip (never in exponent form). In G04, G51 and G68
-// blocks the coordinate letters mean time, factors and angles, and in
-// G05.1 a switch and the axes it names: they print the second way.
+// Words print so that they read back to the same run. Coordinates (axes,
+// I J K R Q) print rounded to the least increment, as the block used them,
+// with a decimal point. Numbers and counts (M S T H D, P and L but G51's
+// P, a canned cycle's K, the sequence numbers of a lathe's shape cycle)
+// print as the whole number the block used, rounded from a variable's
+// value; G codes as the code that ran (G1.04 ran as G01). Other words
+// print a literal without decimal point as an integer and any other value
+// with a decimal point and as many digits as it takes to round-trip (never
+// in exponent form). In G04, G51 and G68 blocks the coordinate letters
+// mean time, factors and angles, and in G05.1 a switch and the axes it
+// names: they print the second way.
 #include "flat_gcode.h"
 
 #include <mbc/arith.h>
@@ -73,13 +77,24 @@ void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
   appendUnitsText(out, counts / scale, axisDecimals(ctx, axis));
 }
 
+/// Whether the block has the G code of `tenths`.
+bool hasCode(const mbrt_word* words, size_t count, double tenths) {
+  for (size_t i = 0; i < count; ++i) {
+    if (words[i].letter == 'G' &&
+        roundHalfAway(numeric(words[i].value) * 10.0) == tenths) {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// G04, G51, G68, the look-ahead switches and a lathe's G10: blocks whose
 /// coordinate letters are no coordinates.
 bool hasOtherMeanings(const mbrt_ctx& ctx, const mbrt_word* words,
                       size_t count) {
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter == 'G') {
-      const double tenths = std::round(numeric(words[i].value) * 10.0);
+      const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
       if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0 ||
           isLookAheadCode(static_cast<int>(tenths)) ||
           (tenths == 100.0 && ctx.profile.lathe())) {
@@ -90,23 +105,36 @@ bool hasOtherMeanings(const mbrt_ctx& ctx, const mbrt_word* words,
   return false;
 }
 
-void appendWordText(std::string& out, const mbrt_word& word) {
+/// Whether the block read `letter` as a whole number: a value with a
+/// fraction was rounded, and a decimal point would be PS0007.
+bool readsWholeNumber(const mbrt_ctx& ctx, char letter, bool scaling,
+                      LatheCycleWords cycle) {
+  return isWholeNumberAddress(letter) || letter == 'L' ||
+         (letter == 'P' && !scaling) ||
+         (letter == 'K' && ctx.modal.cycle != 0) ||
+         (letter == 'Q' && cycle == LatheCycleWords::AsWritten);
+}
+
+void appendWordText(std::string& out, const mbrt_word& word, bool whole) {
   const double value = numeric(word.value);
   out += word.letter;
-  if (isWholeNumberAddress(word.letter)) {
-    // The whole number the block used: M3. would be PS0007.
+  if (whole) {
     appendInteger(out, static_cast<long long>(roundHalfAway(value)));
     return;
   }
-  // G54.1 keeps its point; other G codes are whole.
-  const bool code = word.letter == 'G';
-  if (code && std::floor(value) == value) {
-    appendInteger(out, static_cast<long long>(value));
+  if (word.letter == 'G') {
+    // The code that ran, in tenths: G54.1 keeps its point.
+    const long long tenths = static_cast<long long>(roundHalfAway(value * 10));
+    appendInteger(out, tenths / 10);
+    if (tenths % 10 != 0) {
+      out += '.';
+      appendInteger(out, tenths % 10);
+    }
     return;
   }
   const std::size_t start = out.size();
   appendFixedText(out, value);
-  if (word.kind != MBRT_WORD_INT_LITERAL && !code &&
+  if (word.kind != MBRT_WORD_INT_LITERAL &&
       out.find('.', start) == std::string::npos) {
     out += '.';
   }
@@ -155,12 +183,13 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   const bool exact = cycle == LatheCycleWords::AsWritten ||
                      hasOtherMeanings(ctx, words, count);
   const bool increments = cycle == LatheCycleWords::Increments;
+  const bool scaling = hasCode(words, count, 510.0);
   const auto [callLetter, callValue] = ctx.callingCode;
   const bool codeCall =
       flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
   std::string& line = ctx.gcodeLine;
   line.clear();
-  if (ctx.profile.lathe() && ctx.blockSequence >= 0.0) {
+  if (ctx.blockSequence >= 0.0) {
     line += 'N';
     appendInteger(line, static_cast<long long>(ctx.blockSequence));
   }
@@ -186,13 +215,21 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     } else if (!exact && isCoordinateLetter(ctx, word.letter)) {
       appendCoordinateText(line, ctx, word);
     } else {
-      appendWordText(line, word);
+      appendWordText(line, word,
+                     readsWholeNumber(ctx, word.letter, scaling, cycle));
     }
   }
   if (!line.empty()) {
     line += '\n';
     send(ctx, line);
   }
+}
+
+void flattenProgramStart(mbrt_ctx& ctx) {
+  if (ctx.gcodeSink.fn == nullptr || ctx.mainProgramNumber <= 0) {
+    return;
+  }
+  send(ctx, fmt::format("O{:04}\n", ctx.mainProgramNumber));
 }
 
 void flattenWorkOffset(mbrt_ctx& ctx, int offset) {

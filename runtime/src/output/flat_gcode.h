@@ -21,6 +21,10 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                   const mbrt_flow& flow,
                   LatheCycleWords cycle = LatheCycleWords::None);
 
+/// A run began: the flattened program is the main program, under its O
+/// number (none for a main program without one).
+void flattenProgramStart(mbrt_ctx& ctx);
+
 /// A macro statement wrote a work offset (index into workOffsets).
 void flattenWorkOffset(mbrt_ctx& ctx, int offset);
 
