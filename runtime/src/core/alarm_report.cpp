@@ -59,6 +59,12 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
   alarm.line = ctx.block.line;
   alarm.stack.clear();
+  const BlockPlace& cycle = ctx.cycleBlock;
+  if (cycle.line != 0 && alarm.line != cycle.line) {
+    alarm.stack.push_back(CallSite{fmt::format("G{}", ctx.cycleLabel),
+                                   cycle.file != nullptr ? cycle.file : "",
+                                   cycle.line});
+  }
   for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
     alarm.stack.push_back(CallSite{
         call->program, call->file != nullptr ? call->file : "", call->line});

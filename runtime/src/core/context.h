@@ -167,6 +167,12 @@ struct Placement {
   AxisCounts external{};
 };
 
+/// A block's place in the program text.
+struct BlockPlace {
+  const char* file = nullptr;
+  int line = 0;
+};
+
 /// Where a move was programmed and how fast it goes: the block's data, kept
 /// with a move that cutter compensation holds while later blocks run.
 struct MoveOrigin {
@@ -385,6 +391,7 @@ struct ShapeReading {
   ShapePoint relief;
   int divisions = 1;
   MachineSnapshot before; // the state the shape's blocks run over
+  BlockPlace cycleBlock;  // the block of the cycle
 };
 
 } // namespace mbc::rt
@@ -466,6 +473,9 @@ struct mbrt_ctx {
   // The shapes read so far by (ns, nf), for G70.
   std::map<std::pair<double, double>, mbc::rt::Shape> shapes;
   int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
+  // While a shape cycle runs the moves of its shape's blocks, each at its
+  // block's line, the cycle's block: an alarm names it as the caller.
+  mbc::rt::BlockPlace cycleBlock;
   // The N of the block running, -1 for none: the flattened program keeps
   // it, for a lathe's shape cycles and a reader's bearings.
   double blockSequence = -1.0;

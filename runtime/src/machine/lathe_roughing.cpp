@@ -28,7 +28,7 @@ ShapeMove swapped(ShapeMove move) {
 }
 
 Shape swapAxes(const Shape& shape) {
-  Shape out{swapped(shape.start), {}};
+  Shape out{swapped(shape.start), {}, shape.file};
   for (const ShapeMove& move : shape.moves) {
     out.moves.push_back(swapped(move));
   }

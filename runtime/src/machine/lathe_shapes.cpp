@@ -119,23 +119,35 @@ void recordMove(void* user, const mbrt_motion* motion) {
   const int compensation = ctx.modal.compensation;
   move.compensation =
       compensation != reading.before.modal.compensation ? compensation : 0;
+  move.line = ctx.block.line;
+  if (reading.shape.moves.empty() && ctx.block.file != nullptr) {
+    reading.shape.file = ctx.block.file;
+  }
   reading.shape.moves.push_back(move);
 }
 
 /// Runs a cycle's path from the current position, its moves marked with
 /// the cycle; a move without a feed of its own takes `feed`, one without a
-/// G40/G41/G42 of its own `compensation`.
+/// G40/G41/G42 of its own `compensation`. A move of a block of the shape
+/// in `file` runs at that block's line, as the control runs blocks ns to
+/// nf in G70: an alarm points at the block, called from the cycle's.
 mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
-                     int code, double feed, int compensation) {
+                     int code, double feed, int compensation,
+                     const std::string* file) {
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   const ModalState modal = ctx.modal;
   const bool codeInBlock = ctx.compensation.codeInBlock;
   ctx.compensation.codeInBlock = false;
   ctx.cycleLabel = writtenCode(ctx, code);
+  const BlockPlace cycle{ctx.block.file, ctx.block.line};
+  ctx.cycleBlock = cycle;
   ctx.modal.incremental = false;
   mbrt_status status = 0;
   for (const ShapeMove& move : moves) {
+    const bool ofShape = file != nullptr && move.line != 0;
+    ctx.block.file = ofShape ? file->c_str() : cycle.file;
+    ctx.block.line = ofShape ? move.line : cycle.line;
     ctx.modal.feed = move.feed > 0.0 ? move.feed : feed;
     ctx.modal.compensation =
         move.compensation != 0 ? move.compensation : compensation;
@@ -155,6 +167,9 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
       break;
     }
   }
+  ctx.block.file = cycle.file;
+  ctx.block.line = cycle.line;
+  ctx.cycleBlock = BlockPlace{};
   ctx.cycleLabel = 0;
   ctx.compensation.codeInBlock = codeInBlock;
   const double lastFeed = ctx.modal.feed;
@@ -175,7 +190,8 @@ mbrt_status finish(mbrt_ctx& ctx, const Shape& shape) {
               static_cast<double>(ctx.program[z])};
   back.compensation = 40;
   moves.push_back(back);
-  return runMoves(ctx, moves, kG70, ctx.modal.feed, ctx.modal.compensation);
+  return runMoves(ctx, moves, kG70, ctx.modal.feed, ctx.modal.compensation,
+                  &shape.file);
 }
 
 MachineSnapshot takeSnapshot(const mbrt_ctx& ctx) {
@@ -225,11 +241,11 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
                             Shape& path) {
   const MachineSnapshot before = takeSnapshot(ctx);
   const CompensationState compensation = ctx.compensation;
-  path = Shape{shape.start, {}};
+  path = Shape{shape.start, {}, {}};
   PathCollector collector{&ctx, &path.moves};
   ctx.motionSink = {collectMove, &collector};
-  mbrt_status status =
-      runMoves(ctx, shape.moves, code, ctx.modal.feed, ctx.modal.compensation);
+  mbrt_status status = runMoves(ctx, shape.moves, code, ctx.modal.feed,
+                                ctx.modal.compensation, &shape.file);
   if (status == 0) {
     status = releaseHeldMoves(ctx);
   }
@@ -248,9 +264,10 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
   const int divisions = reading.divisions;
   restoreSnapshot(ctx, reading.before);
   ctx.shapeReading.code = 0;
-  ctx.shapes[{reading.ns, reading.nf}] = shape;
+  // G70 runs the kept shape: its moves' file lives as long as it.
+  const Shape& kept = ctx.shapes[{reading.ns, reading.nf}] = shape;
   if (code == kG70) {
-    return finish(ctx, shape);
+    return finish(ctx, kept);
   }
   const Roughing roughing{code == kG72, reading.typeTwo,
                           static_cast<double>(reading.depth),
@@ -285,7 +302,7 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
                              writtenCode(ctx, code), reading.ns, reading.nf,
                              roughing.pockets ? "along" : "across"));
   }
-  return runMoves(ctx, path, code, ctx.modal.feed, 40);
+  return runMoves(ctx, path, code, ctx.modal.feed, 40, nullptr);
 }
 
 /// Reading starts: the state the shape's blocks will run over is kept.
@@ -300,6 +317,7 @@ void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
   reading.shape.start = {static_cast<double>(ctx.program[x]),
                          static_cast<double>(ctx.program[z])};
   reading.before = takeSnapshot(ctx);
+  reading.cycleBlock = {ctx.block.file, ctx.block.line};
 }
 
 } // namespace
@@ -432,7 +450,18 @@ mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
                              "with G00 or G01",
                              reading.ns));
   }
-  return n == reading.nf ? runCycle(ctx) : 0;
+  if (n != reading.nf) {
+    return 0;
+  }
+  // The cycle's moves are its block's, as the blocks of the shape were
+  // read on the way.
+  const BlockPlace nf{ctx.block.file, ctx.block.line};
+  ctx.block.file = reading.cycleBlock.file;
+  ctx.block.line = reading.cycleBlock.line;
+  const mbrt_status cycleStatus = runCycle(ctx);
+  ctx.block.file = nf.file;
+  ctx.block.line = nf.line;
+  return cycleStatus;
 }
 
 } // namespace mbc::rt

@@ -98,6 +98,7 @@ struct Block {
   std::optional<double> tenFormatD;
   BlockCodes codes;
   FrameWords frames;
+  bool flattened = false; // in the flattened program already
 };
 
 /// "M3." or "P2.5": a word written with a decimal point, as written.
@@ -1014,9 +1015,19 @@ mbrt_status refuseCountWithPoint(mbrt_ctx& ctx, const Block& block) {
                       : ""));
 }
 
-mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                         mbrt_flow* flow) {
-  Block block;
+/// The executed block in the flattened program, its cycle words read as
+/// its cycle reads them.
+void flattenExecuted(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                     const mbrt_flow& flow, const Block& block) {
+  const int code = block.nonModal;
+  flattenBlock(ctx, words, count, flow,
+               code >= kLatheOwnCode + 740   ? LatheCycleWords::Increments
+               : code >= kLatheOwnCode + 700 ? LatheCycleWords::AsWritten
+                                             : LatheCycleWords::None);
+}
+
+mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                         mbrt_flow* flow, Block& block) {
   scanWords(ctx, words, count, block);
   ctx.feedInBlock = false;
   ctx.compensation.codeInBlock = false;
@@ -1115,11 +1126,23 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                                  : 0;
   // A G10 L52 block is flattened with each parameter it lets a block set.
   if (ctx.gcodeSink.fn != nullptr && !ctx.parameterInput) {
-    const int code = block.nonModal;
-    flattenBlock(ctx, words, count, *flow,
-                 code >= kLatheOwnCode + 740   ? LatheCycleWords::Increments
-                 : code >= kLatheOwnCode + 700 ? LatheCycleWords::AsWritten
-                                               : LatheCycleWords::None);
+    flattenExecuted(ctx, words, count, *flow, block);
+    block.flattened = true;
+  }
+  return status;
+}
+
+mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
+                         mbrt_flow* flow) {
+  Block block;
+  const std::uint64_t movesBefore = ctx.moves;
+  const mbrt_status status = executeWords(ctx, words, count, flow, block);
+  // A block that moved before its alarm (a G70 along a shape the tool
+  // cannot follow) is in the flattened program too: read back, it moves
+  // and alarms alike.
+  if (status != 0 && ctx.moves != movesBefore && !block.flattened &&
+      ctx.gcodeSink.fn != nullptr) {
+    flattenExecuted(ctx, words, count, *flow, block);
   }
   return status;
 }
