@@ -309,6 +309,24 @@ def embedded_calls(build, runs):
     return {name: statistics.median(s) for name, s in samples.items()}
 
 
+def python_batch(build, runs):
+    """bench/python_batch.py's medians: mbc.batch without and with the
+    motions DataFrame."""
+    print("bench: Python batch", file=sys.stderr)
+    out = subprocess.run(
+        ["/usr/bin/python3", str(HERE / "python_batch.py"), "--runs",
+         str(runs)], check=True, capture_output=True, text=True,
+        env={**os.environ, "PYTHONPATH": str(build / "python")}).stdout
+    return json.loads(out)
+
+
+def python_batch_table(medians):
+    return ["| mbc.batch | s | per the batch alone |", "|---|---|---|",
+            f"| results only | {medians['batch']:.3f} | 1.00 |",
+            f"| with motions=True | {medians['motions']:.3f} | "
+            f"{medians['motions'] / medians['batch']:.2f} |"]
+
+
 def embedded_table(rates):
     lines = ["| loop | calls/s | C++ calls/s per these |", "|---|---|---|"]
     cpp = next(iter(rates.values()))
@@ -494,6 +512,7 @@ def main():
                            work) if has_rs274 else {}
         batch = batch_throughput(mbc, args.runs, work)
         embedded = embedded_calls(Path(mbc).parent, args.runs)
+        python = python_batch(Path(mbc).parent, args.runs)
         operations = micro(args.micro, args.runs) if args.micro else {}
     report = "\n".join([
         "# mbc benchmarks", "",
@@ -555,6 +574,13 @@ def main():
         " the Python package (keyword arguments in, a Result with a numpy"
         " motions array out, lengths computed with numpy).", "",
         *embedded_table(embedded), "",
+        "## Python batch", "",
+        f"`mbc.batch` of a {python['rows']}-row table of examples/sim-loop/"
+        f"pocket.nc ({python['moves']} motions in all) in one process on"
+        " every core, without and with `motions=True` (the motions of all"
+        f" rows as one DataFrame), median of {args.runs}"
+        " (bench/python_batch.py).", "",
+        *python_batch_table(python), "",
         "## Writers alone", "",
         "What writing one move costs beyond making it (bench/micro, the"
         " differences below): the run phase's share of the output modes"

@@ -103,17 +103,55 @@ def run_table(program, table, threads: Optional[int] = None,
     }, columns=list(RESULT_COLUMNS), index=table.index)
     if not motions:
         return results
-    frames = []
-    for row_id, run in zip(ids, runs):
-        frame = run.motions_frame()
-        frame.insert(0, "id", row_id)
-        frames.append(frame)
-    moves = pandas.concat(frames, ignore_index=True) if frames else \
-        pandas.DataFrame({"id": []})
-    for column in ("prog", "file", "motion"):
-        if column in moves:
-            moves[column] = moves[column].astype("category")
-    return results, moves
+    return results, motions_table(runs, ids, motion_dtype(profile))
+
+
+def motion_dtype(profile: Optional[str]) -> numpy.dtype:
+    """The motions' row type on a machine of this profile (JSON text)."""
+    return _mbc.motion_dtype(_mbc.Context(profile).axes)
+
+
+def _shared_codes(codes: numpy.ndarray, names: list, counts: numpy.ndarray):
+    """One run's program (or file) numbers as numbers into one list of the
+    names of all runs: each row's machine numbers them as it meets them."""
+    first = names[0] if names else ()
+    if all(n == first for n in names):
+        return codes, list(first)
+    index: dict = {}
+    shared = numpy.empty_like(codes)
+    start = 0
+    for own, count in zip(names, counts):
+        table = numpy.array([index.setdefault(n, len(index)) for n in own],
+                            dtype=codes.dtype)
+        shared[start:start + count] = table[codes[start:start + count]]
+        start += count
+    return shared, list(index)
+
+
+def motions_table(runs, ids, dtype: numpy.dtype):
+    """The motions of every run as one DataFrame, the run's id first: one
+    copy of the rows, then a column each (a DataFrame per row and
+    pandas.concat cost 40 times the runs). `dtype`: the rows' type, for a
+    table of no runs."""
+    import pandas
+    from . import MOTION_NAMES
+    arrays = [run.motions for run in runs]
+    counts = numpy.fromiter((len(a) for a in arrays), dtype=numpy.intp,
+                            count=len(arrays))
+    rows = _mbc.concatenate(arrays) if arrays else numpy.empty(0, dtype)
+    prog, programs = _shared_codes(rows["prog"],
+                                   [run.programs for run in runs], counts)
+    file, files = _shared_codes(rows["file"], [run.files for run in runs],
+                                counts)
+    columns = {"id": pandas.Categorical.from_codes(
+        numpy.repeat(numpy.arange(len(ids)), counts), ids)}
+    for name in rows.dtype.names:
+        columns[name] = rows[name]
+    columns["motion"] = pandas.Categorical.from_codes(rows["motion"],
+                                                      MOTION_NAMES)
+    columns["prog"] = pandas.Categorical.from_codes(prog, programs)
+    columns["file"] = pandas.Categorical.from_codes(file, files)
+    return pandas.DataFrame(columns, copy=False)
 
 
 def batch(program, table, *, threads: Optional[int] = None,

@@ -320,6 +320,7 @@ PYBIND11_MODULE(_mbc, m) {
       .def("reset_state", [](Context& c) { mbrt_reset_state(c.get()); })
       .def_property_readonly("axes", &Context::axes);
 
+  m.def("motion_dtype", &MotionTable::rowType, py::arg("axes"));
   m.def(
       "concatenate",
       [](const std::vector<py::array>& arrays) {

@@ -68,11 +68,11 @@ void MotionTable::append(void* user, const mbrt_motion* m) {
 
 /// The row type of a machine with these axes, made once per axis set: a
 /// dtype costs more to build than a short run takes.
-const py::dtype& MotionTable::dtype() const {
+const py::dtype& MotionTable::rowType(const std::string& axes) {
   // Never freed: Python objects must not be destroyed after the
   // interpreter has ended.
   static auto* made = new std::map<std::string, py::dtype>;
-  if (const auto found = made->find(axes_); found != made->end()) {
+  if (const auto found = made->find(axes); found != made->end()) {
     return found->second;
   }
   py::list names, formats, offsets;
@@ -89,7 +89,7 @@ const py::dtype& MotionTable::dtype() const {
   }
   field("f", "<f8", offsetof(Header, f));
   std::size_t offset = sizeof(Header);
-  for (const char letter : axes_) {
+  for (const char letter : axes) {
     const std::string axis(1, lower(letter));
     for (const char* prefix : {"", "m", "s", "p", "c"}) {
       field(prefix + axis, "<f8", offset);
@@ -97,8 +97,9 @@ const py::dtype& MotionTable::dtype() const {
     }
   }
   return made
-      ->emplace(axes_, py::dtype(names, formats, offsets,
-                                 static_cast<py::ssize_t>(rowBytes())))
+      ->emplace(axes,
+                py::dtype(names, formats, offsets,
+                          static_cast<py::ssize_t>(rowBytes(axes.size()))))
       .first->second;
 }
 
@@ -109,8 +110,8 @@ py::array MotionTable::take() {
   const auto count = static_cast<py::ssize_t>(count_);
   rows_.clear();
   count_ = 0;
-  return py::array(dtype(), {count}, {static_cast<py::ssize_t>(rowBytes())},
-                   rows->data(), owner);
+  return py::array(rowType(axes_), {count},
+                   {static_cast<py::ssize_t>(rowBytes())}, rows->data(), owner);
 }
 
 } // namespace mbc::python

@@ -62,6 +62,9 @@ public:
   /// px (programmed end) and cx (arc centre, NaN off the arc plane).
   pybind11::array take();
 
+  /// The row type of a machine with these axes.
+  static const pybind11::dtype& rowType(const std::string& axes);
+
 private:
   struct Header {
     std::int32_t motion, line, prog, file, cycle, plane;
@@ -70,11 +73,11 @@ private:
 
   static constexpr int kPerAxis = 5; // end, machine, start, programmed, centre
 
-  const pybind11::dtype& dtype() const;
-
-  std::size_t rowBytes() const {
-    return sizeof(Header) + sizeof(double) * kPerAxis * axes_.size();
+  static std::size_t rowBytes(std::size_t axisCount) {
+    return sizeof(Header) + sizeof(double) * kPerAxis * axisCount;
   }
+
+  std::size_t rowBytes() const { return rowBytes(axes_.size()); }
 
   std::string axes_;
   std::vector<double> rows_; // whole rows of doubles (the header is 4 doubles)

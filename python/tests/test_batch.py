@@ -55,6 +55,53 @@ def test_batch_matches_mbc_batch(tmp_path, table, pocket):
     assert list(first["motion"])[:2] == ["rapid", "rapid"]
 
 
+# Rows that call different programs: each row's machine numbers its
+# programs as it meets them, so the motions' program codes differ by row.
+BRANCHES = """%
+O4620(FACE OR FACE AND SPOT - BY ROW)
+G90G00X0Y0Z5.
+IF[#1EQ0]GOTO10
+M98P4621
+N10G01X[#2]F300.
+M30
+O4621(SPOT)
+G00Z1.
+G01Z-1.F100.
+G00Z5.
+M99
+%
+"""
+
+
+def per_row_motions(results_ids, runs):
+    """The motions as DataFrames row by row: the oracle of one pass."""
+    frames = []
+    for row_id, run in zip(results_ids, runs):
+        frame = run.motions_frame()
+        frame.insert(0, "id", row_id)
+        frames.append(frame)
+    return pandas.concat(frames, ignore_index=True)
+
+
+def test_motions_of_all_rows_in_one_pass():
+    program = mbc.compile(BRANCHES)
+    table = pandas.DataFrame({"id": ["a", "b", "c", "d"],
+                              "A": [0.0, 1.0, 0.0, 1.0],
+                              "B": [10.0, 20.0, 30.0, 40.0]})
+    results, motions = mbc.batch(program, table, motions=True)
+    runs = [program(mbc.Machine(), A=a, B=b)
+            for a, b in zip(table["A"], table["B"])]
+    want = per_row_motions(table["id"], runs)
+    names = {c: object for c in ("id", "motion", "prog", "file")}
+    pandas.testing.assert_frame_equal(motions.astype(names),
+                                      want.astype(names))
+    assert set(motions["prog"]) == {"O4620", "O4621"}
+    assert list(results["moves"]) == [2, 5, 2, 5]
+    # No rows: no motions, in the same columns.
+    empty = mbc.batch(program, table.iloc[[]], motions=True)[1]
+    assert list(empty.columns) == list(motions.columns) and len(empty) == 0
+
+
 def test_batch_rows_do_not_see_each_other(table, pocket):
     one = mbc.batch(pocket, table, threads=1)
     two = mbc.batch(pocket, table, threads=2)
@@ -76,8 +123,9 @@ def test_numbered_rows_and_bad_columns(pocket):
 
 def test_dask_on_two_worker_processes(table, pocket):
     distributed = pytest.importorskip("dask.distributed")
+    import dask
     import mbc.dask
-    local = mbc.batch(pocket, table)
+    local, local_motions = mbc.batch(pocket, table, motions=True)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1,
                                   processes=True, dashboard_address=None) \
             as cluster, distributed.Client(cluster):
@@ -86,8 +134,18 @@ def test_dask_on_two_worker_processes(table, pocket):
         # A Machine given for its profile: the profile travels.
         on_machine = mbc.dask.batch(pocket, table, npartitions=3,
                                     machine=mbc.Machine()).compute()
+        # The motions, partitioned as the rows: each partition runs once.
+        both, moves = mbc.dask.batch(pocket, table, npartitions=4,
+                                     motions=True)
+        assert moves.npartitions == 4
+        with_motions, remote_motions = dask.compute(both, moves)
     pandas.testing.assert_frame_equal(remote, local)
     pandas.testing.assert_frame_equal(on_machine, local)
+    pandas.testing.assert_frame_equal(with_motions, local)
+    names = {c: object for c in ("id", "motion", "prog", "file")}
+    pandas.testing.assert_frame_equal(
+        remote_motions.reset_index(drop=True).astype(names),
+        local_motions.astype(names))
 
 
 MACHINE_DATA = SOURCE / "tests" / "batch" / "machine_data.nc"
