@@ -113,7 +113,7 @@ int batchCommand(const Options& o) {
     return 2;
   }
   const std::string header =
-      "row,line,status,blocks,moves,feed_length,rapid_length,cycle_time,"
+      "id,line,status,blocks,moves,feed_length,rapid_length,cycle_time,"
       "alarm\n" +
       finished.results;
   OutputFile::writeText(&results, header.data(), header.size());

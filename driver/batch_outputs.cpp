@@ -36,7 +36,7 @@ std::vector<std::string> wholeLines(const std::string& path) {
   return lines;
 }
 
-// results.csv: "row,line,status,...", a header first.
+// results.csv: "id,line,status,...", a header first.
 std::vector<Listed> listedInCsv(const std::string& path) {
   std::vector<Listed> out;
   const std::vector<std::string> lines = wholeLines(path);
@@ -54,15 +54,21 @@ std::vector<Listed> listedInCsv(const std::string& path) {
   return out;
 }
 
-// batch.jsonl: an object per row with "row", "line" and "status".
+// batch.jsonl: an object per row with "id", "line" and "status" (earlier
+// versions named the id "row": a batch one of them began resumes too).
 std::vector<Listed> listedInJsonl(const std::string& path) {
   std::vector<Listed> out;
   for (const std::string& text : wholeLines(path)) {
     const nlohmann::json row = nlohmann::json::parse(text, nullptr, false);
-    if (row.is_object() && row.value("row", nlohmann::json()).is_string() &&
+    if (!row.is_object()) {
+      continue;
+    }
+    const nlohmann::json id =
+        row.value("id", row.value("row", nlohmann::json()));
+    if (id.is_string() &&
         row.value("line", nlohmann::json()).is_number_integer() &&
         row.value("status", nlohmann::json()).is_string()) {
-      out.push_back({row["row"].get<std::string>(), row["line"].get<int>(),
+      out.push_back({id.get<std::string>(), row["line"].get<int>(),
                      row["status"].get<std::string>(), text});
     }
   }

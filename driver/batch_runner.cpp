@@ -59,9 +59,9 @@ std::string combinedLine(const BatchRow& row, const RowResult& r,
     toolpath.pop_back();
   }
   return fmt::format(
-      "{{\"row\":{},\"line\":{},\"status\":\"{}\",\"alarm\":{},"
+      "{{\"id\":{},\"line\":{},\"status\":\"{}\",\"alarm\":{},"
       "\"blocks\":{},\"moves\":{},\"feed_length\":{:.3f},"
-      "\"rapid_length\":{:.3f},\"cycle_time\":{:.1f},\"vars\":{},"
+      "\"rapid_length\":{:.3f},\"cycle_time\":{:.1f},\"variables\":{},"
       "\"dprnt\":{},\"log\":{},\"toolpath\":[{}]}}\n",
       text(row.id), row.line, statusName(r),
       r.alarm.empty() ? "null" : text(r.alarm), r.stats.blocks, r.stats.moves,

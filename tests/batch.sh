@@ -18,7 +18,7 @@ grep -q '^mbc: batch: row no-h (small.csv:6): holes.nc:21: alarm 3001: HOLES H M
 grep -q '6 rows .*: 4 ended, 2 alarms; small/results.csv$' small.err ||
   { cat small.err; fail "summary"; }
 [ "$(cut -d, -f1,3 small/results.csv | tr '\n' ' ')" = \
-  "row,status a1,ended a2,ended a3,ended no-h,alarm neg-h,alarm a7,ended " ] ||
+  "id,status a1,ended a2,ended a3,ended no-h,alarm neg-h,alarm a7,ended " ] ||
   { cat small/results.csv; fail "results.csv rows"; }
 run_row() { # ID ARGS...: the row as mbc run runs it
   local id=$1; shift
@@ -47,7 +47,7 @@ done
 # --arg and --set apply to every row; the row's own cells win.
 "$mbc" batch holes.nc --params small.csv --out defaults --arg H=5 --set '#500=9' 2>/dev/null
 [ "$(cut -d, -f1,3,5 defaults/results.csv | tr '\n' ' ')" = \
-  "row,status,moves a1,ended,12 a2,ended,18 a3,ended,9 no-h,ended,15 neg-h,alarm,0 a7,ended,24 " ] ||
+  "id,status,moves a1,ended,12 a2,ended,18 a3,ended,9 no-h,ended,15 neg-h,alarm,0 a7,ended,24 " ] ||
   { cat defaults/results.csv; fail "--arg defaults"; }
 
 # 10 000 rows, one combined JSONL; rows 2500, 5000, ... have no holes.
@@ -64,7 +64,7 @@ grep -q '10000 rows .*: 9996 ended, 4 alarms; big/batch.jsonl$' big.err || { cat
 python3 - <<'PY' || fail "the 10 000 rows' results"
 import json, math
 rows = [json.loads(line) for line in open("big/batch.jsonl")]
-assert [r["row"] for r in rows] == [f"{i:05}" for i in range(1, 10001)], "row ids"
+assert [r["id"] for r in rows] == [f"{i:05}" for i in range(1, 10001)], "row ids"
 for i, r in enumerate(rows, 1):
     holes = 0 if i % 2500 == 0 else 1 + i % 12
     if holes == 0:
@@ -72,7 +72,7 @@ for i, r in enumerate(rows, 1):
         continue
     radius, depth = 10 + i % 17, -1 - i % 5 - 0.5
     assert r["status"] == "ended" and r["alarm"] is None, r
-    assert r["vars"] == {"100": holes, "101": i * 1000 + holes, "500": i}, r["vars"]
+    assert r["variables"] == {"100": holes, "101": i * 1000 + holes, "500": i}, r["variables"]
     assert r["dprnt"] == f"PART{i:6} HOLES{holes:5}\n", r["dprnt"]
     assert r["moves"] == 3 * holes and len(r["toolpath"]) == 3 * holes, r
     for k in range(holes):
@@ -170,6 +170,15 @@ grep -q '6 rows, 6 kept from the earlier batch in .*: 4 ended, 2 alarms;' resume
   { cat resume.err; fail "a finished batch resumed"; }
 "$mbc" batch holes.nc --params small.csv --out fresh --resume 2>/dev/null
 cmp -s small/results.csv fresh/results.csv || fail "--resume of nothing"
+# A combined batch that an earlier mbc began named the id "row".
+"$mbc" batch holes.nc --params small.csv --out combined --combined 2>/dev/null
+mkdir old && head -2 combined/batch.jsonl | sed 's/^{"id":/{"row":/' >old/batch.jsonl
+head -3 combined/results.csv | sed '1s/^id,/row,/' >old/results.csv
+"$mbc" batch holes.nc --params small.csv --out old --combined --resume 2>resume.err
+grep -q '6 rows, 2 kept from the earlier batch' resume.err ||
+  { cat resume.err; fail "a batch.jsonl with row ids resumed"; }
+cmp -s <(tail -n +3 combined/batch.jsonl) <(tail -n +3 old/batch.jsonl) ||
+  fail "the rows after the kept ones"
 
 # The files of an earlier batch's rows that this one has not never mix in;
 # files that no batch listed stay.

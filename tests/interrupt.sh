@@ -113,7 +113,7 @@ wait "$pid"
 status=$?
 [ "$status" = 130 ] || fail "batch: status $status: $(cat rows.err)"
 [ "$(cut -d, -f1,3 rows/results.csv | tr '\n' ' ')" = \
-  "row,status 1,ended 2,ended 3,interrupted 4,interrupted " ] ||
+  "id,status 1,ended 2,ended 3,interrupted 4,interrupted " ] ||
   fail "batch: $(cat rows/results.csv)"
 grep -q "2 ended, 0 alarms, 2 interrupted;" rows.err &&
   grep -q "interrupted; 2 of the rows did not run" rows.err || fail "batch: $(cat rows.err)"

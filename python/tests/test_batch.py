@@ -38,7 +38,7 @@ def test_batch_matches_mbc_batch(tmp_path, table, pocket):
     assert done.returncode == 3, done.stderr  # rows 7 and 9 alarm
     lines = [json.loads(l) for l in
              (tmp_path / "out" / "batch.jsonl").read_text().splitlines()]
-    assert list(results["id"]) == [l["row"] for l in lines]
+    assert list(results["id"]) == [l["id"] for l in lines]
     for (_, got), want in zip(results.iterrows(), lines):
         assert got["status"] == want["status"]
         assert got["alarm"] == want["alarm"]
@@ -47,9 +47,9 @@ def test_batch_matches_mbc_batch(tmp_path, table, pocket):
         assert f'{got["rapid_length"]:.3f}' == f'{want["rapid_length"]:.3f}'
         assert f'{got["cycle_time"]:.1f}' == f'{want["cycle_time"]:.1f}'
         assert got["dprnt"] == want["dprnt"]
-        assert {str(k): v for k, v in got["variables"].items()} == want["vars"]
+        assert {str(k): v for k, v in got["variables"].items()} == want["variables"]
     assert list(results.loc[[7, 9], "alarm_number"]) == [3002, 3004]
-    assert set(motions["id"]) == {l["row"] for l in lines if l["moves"]}
+    assert set(motions["id"]) == {l["id"] for l in lines if l["moves"]}
     first = motions[motions["id"] == "p000"]
     assert len(first) == lines[0]["moves"]
     assert list(first["motion"])[:2] == ["rapid", "rapid"]
