@@ -233,6 +233,9 @@ def _profile_text(profile) -> Optional[str]:
         return profile.profile
     if isinstance(profile, Mapping):
         return json.dumps(profile)
+    if not isinstance(profile, (str, os.PathLike)):
+        raise TypeError("machine: a profile is None, a path, a dict or a "
+                        f"Machine, not {type(profile).__name__}")
     with open(os.fspath(profile), encoding="utf-8") as f:
         return f.read()
 
@@ -284,27 +287,61 @@ class Machine:
         result = Result._from(self._ctx.run(
             program._compiled, *_arguments(letters),
             _presets(presets) if presets else [], max_blocks))
-        if result.alarm is not None:
-            raise result.alarm
+        alarm = result.alarm
+        if alarm is not None and alarm.file == "" and alarm.line == 0:
+            # Before any block: what the caller asked for (a preset of a
+            # read-only variable), no alarm of the program's.
+            raise ValueError(alarm.report.split("\n", 1)[0])
+        if alarm is not None:
+            raise alarm
         return result
+
+
+# What the caller gives is checked before anything runs, the same way for
+# keyword arguments, presets and batch tables: a wrong type is TypeError,
+# a wrong value ValueError; mbc.Alarm is only ever the program's (docs/
+# python.md, "Errors").
+
+
+def argument_letter(name: str, what: str = "argument") -> str:
+    """The G65 argument letter `name` names, in upper case (x passes X, as
+    the control reads lower-case letters; the C API does the same)."""
+    if not isinstance(name, str):
+        raise TypeError(f"{what} {name!r}: a G65 argument is a letter")
+    letter = name.upper()
+    if len(letter) != 1 or not "A" <= letter <= "Z":
+        raise ValueError(f"{what} {name!r}: a G65 argument is one letter")
+    if letter in "GLNOP":
+        raise ValueError(f"{what} {name}: G, L, N, O and P are not G65 "
+                         "arguments")
+    return letter
+
+
+def number_value(value, what: str) -> float:
+    """A value the caller gives: a real number (int, float, numpy's)."""
+    if isinstance(value, (str, bytes)) or not isinstance(
+            value, (int, float, numpy.number)):
+        raise TypeError(f"{what}: a value is a number, not "
+                        f"{type(value).__name__} {value!r}")
+    return float(value)
 
 
 def _arguments(args: Mapping[str, float]) -> tuple:
     """G65 arguments as the extension takes them: the letters and values."""
     letters, values = [], []
-    for letter, value in args.items():
+    for name, value in args.items():
+        letter = argument_letter(name)
         if value is None:
             continue
-        if type(letter) is not str or len(letter) != 1 or not letter.isalpha():
-            raise TypeError(f"argument {letter!r}: a G65 argument is one letter")
         letters.append(letter)
-        values.append(float(value))
-    return "".join(letters).upper(), values
+        values.append(number_value(value, f"argument {name}"))
+    return "".join(letters), values
 
 
 def _presets(presets: Optional[Mapping[int, float]]) -> list:
-    return [(float(n), float(v)) for n, v in (presets or {}).items()
-            if v is not None]
+    return [(number_value(n, "preset variable number"),
+             number_value(v, f"preset #{n}"))
+            for n, v in (presets or {}).items() if v is not None]
 
 
 class Program:

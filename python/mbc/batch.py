@@ -18,20 +18,25 @@ RESULT_COLUMNS = ("id", "status", "blocks", "moves", "feed_length",
 _PRESET = re.compile(r"#(\d+)$")
 
 
-def _rows(table) -> tuple:
+def _rows(table, profile: Optional[str]) -> tuple:
     """The table's rows as (argument letters, their values, presets) and
-    their ids."""
+    their ids; a column no row can use is refused before any row runs."""
+    from . import argument_letter, number_value
     letters, presets = [], []
+    probe = None
     for column in table.columns:
         name = str(column)
         if name == "id":
             continue
-        if len(name) == 1 and name.isalpha():
-            if name.upper() in "GLNOP":
-                raise ValueError(f"column {name}: G, L, N, O and P are not "
-                                 "G65 arguments")
-            letters.append((column, name.upper()))
+        if len(name) == 1:
+            letters.append((column, argument_letter(name, "column")))
         elif _PRESET.match(name):
+            # The machine says which variables a host may preset.
+            probe = probe or _mbc.Context(profile)
+            try:
+                probe.write(float(name[1:]), 0.0)
+            except (KeyError, ValueError) as e:
+                raise ValueError(f"column {name}: {e}") from None
             presets.append((column, float(name[1:])))
         else:
             raise ValueError(f"column {name!r}: neither an argument letter, "
@@ -39,10 +44,10 @@ def _rows(table) -> tuple:
     rows = []
     for record in table.itertuples(index=False, name=None):
         values = dict(zip(table.columns, record))
-        given = [(letter, float(values[c])) for c, letter in letters
-                 if _present(values[c])]
-        sets = [(number, float(values[c])) for c, number in presets
-                if _present(values[c])]
+        given = [(letter, number_value(values[c], f"column {c}"))
+                 for c, letter in letters if _present(values[c])]
+        sets = [(number, number_value(values[c], f"column {c}"))
+                for c, number in presets if _present(values[c])]
         rows.append(("".join(l for l, _ in given), [v for _, v in given],
                      sets))
     if "id" in table.columns:
@@ -78,9 +83,9 @@ def run_table(program, table, threads: Optional[int] = None,
     results DataFrame, and with motions=True the motions DataFrame too."""
     import pandas
     from . import Result, _profile_text
-    rows, ids = _rows(table)
     profile = _profile_text(machine) if machine is not None \
         else program.machine_profile
+    rows, ids = _rows(table, profile)
     runs = [Result._from(raw) for raw in
             _mbc.run_rows(program._compiled, profile, rows,
                           threads or os.cpu_count() or 1, max_blocks)]

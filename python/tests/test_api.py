@@ -3,6 +3,7 @@ the source, alarms as exceptions, arguments, a machine that keeps its state."""
 import pickle
 
 import numpy
+import pandas
 import pytest
 
 import mbc
@@ -124,8 +125,41 @@ def test_machine_profiles_from_a_dict():
 def test_presets_and_bad_arguments():
     program = mbc.compile("%\nO4\n#101=#100*2\nM30\n%\n")
     assert program(presets={100: 4}).variables == {100: 4.0, 101: 8.0}
-    with pytest.raises(TypeError):
+    with pytest.raises(ValueError, match="one letter"):
         program(XY=1)
+
+
+# The caller's mistakes are ValueError or TypeError before anything runs;
+# mbc.Alarm is the program's alone.
+def test_callers_errors_are_value_and_type_errors():
+    program = mbc.compile("%\nO5\n#100=#24\n#101=#7\nM30\n%\n")
+    machine = mbc.Machine()
+    # x is X, as the control and the C API read a lower-case letter.
+    assert program(machine, x=1.5, d=numpy.float32(2)).variables == \
+        {100: 1.5, 101: 2.0}
+    with pytest.raises(ValueError, match="G, L, N, O and P"):
+        program(machine, P=5)
+    with pytest.raises(TypeError, match="a value is a number, not str"):
+        program(machine, D="16")
+    with pytest.raises(TypeError, match="a G65 argument is a letter"):
+        machine.run(program, {24: 1.0})
+    with pytest.raises(ValueError, match="PS0116: WRITE PROTECTED"):
+        program(machine, presets={5001: 1.0})
+    with pytest.raises(TypeError):
+        program(machine, presets={"#100": 1.0})
+    with pytest.raises(TypeError, match="machine: a profile is"):
+        mbc.Machine(5)
+    with pytest.raises(TypeError, match="machine: a profile is"):
+        mbc.batch(program, pandas.DataFrame({"X": [1.0]}), machine=5)
+    for column, error in (("p", ValueError), ("#5001", ValueError),
+                          ("#100000", ValueError)):
+        with pytest.raises(error, match=f"column {column}"):
+            mbc.batch(program, pandas.DataFrame({column: [1.0]}))
+    with pytest.raises(TypeError, match="column X"):
+        mbc.batch(program, pandas.DataFrame({"X": ["16"]}))
+    # The program's own alarm stays an Alarm.
+    with pytest.raises(mbc.Alarm):
+        mbc.compile("%\nO6\n#3000=1(STOP)\nM30\n%\n")(machine)
 
 
 def test_a_program_pickles_as_its_source():

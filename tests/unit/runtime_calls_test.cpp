@@ -174,6 +174,17 @@ TEST(RuntimeCalls, MainProgramArguments) {
   EXPECT_EQ(mbrt_set_main_args(m.ctx(), bad.data(), bad.size()),
             status(AlarmId::MacroStatementFormat));
   EXPECT_EQ(m.read(24), 0.01);
+  // A host's lower-case letter is the argument's, as Python's x= is.
+  Machine lower;
+  std::vector<mbrt_word> host = parseWords("X1. D4.");
+  host[0].letter = 'x';
+  host[1].letter = 'd';
+  ASSERT_EQ(mbrt_set_main_args(lower.ctx(), host.data(), host.size()), 0);
+  EXPECT_EQ(lower.read(24), 1.0);
+  EXPECT_EQ(lower.read(7), 4.0);
+  host[0].letter = 'p';
+  EXPECT_EQ(mbrt_set_main_args(lower.ctx(), host.data(), host.size()),
+            status(AlarmId::MacroStatementFormat));
 }
 
 TEST(RuntimeCalls, ReturnInMainProgramIsHarmless) {

@@ -277,9 +277,10 @@ const mbrt_program* mbrt_find_program(const mbrt_program_table* table,
  * Entry points and `mbc` call it before a run; the names are copied. */
 void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table);
 
-/* mbrt_start, the arguments into #1..#33 as G65 would pass them, then
- * mbrt_run_body (mbc/engine.h): one call of a compiled cycle, from the
- * machine state the last run left. */
+/* mbrt_start, the arguments into #1..#33 as G65 would pass them (a letter
+ * in either case: 'x' is X), then mbrt_run_body (mbc/engine.h): one call
+ * of a compiled cycle, from the machine state the last run left. A letter
+ * that is no argument (G L N O P) is alarm PS0125, called by the host. */
 mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
                           const mbrt_word* args, size_t count);
 /* The machine back to power-on: modal codes, the tool at the machine

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <vector>
+
 #include "context.h"
 
 namespace mbc::rt {
@@ -232,9 +234,18 @@ int mbrt_call_depth(const mbrt_ctx* ctx) {
 
 mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
                                size_t count) {
+  // A host's 'x' is X, as the control reads a lower-case letter and the
+  // Python package and batch tables take one (no comma word is an
+  // argument).
+  std::vector<mbrt_word> upper(args, args + count);
+  for (mbrt_word& word : upper) {
+    if (word.letter >= 'a' && word.letter <= 'z') {
+      word.letter = static_cast<char>(word.letter - 'a' + 'A');
+    }
+  }
   LocalLevel level;
   if (const mbrt_status status =
-          mapArguments(*ctx, args, count, false, level)) {
+          mapArguments(*ctx, upper.data(), count, false, level)) {
     return status;
   }
   ctx->levels.front() = level;
