@@ -438,8 +438,8 @@ def compile(sources: Union[Source, Sequence[Source]], main: Optional[str] = None
                    tuple(os.fspath(d) for d in include_dirs))
 
 
-from .batch import batch  # noqa: E402  (it uses the names above)
+from .batch import BatchInterrupted, batch  # noqa: E402  (uses the above)
 
-__all__ = ["Alarm", "CompileError", "Diagnostic", "Error", "FixIt", "Machine",
-           "MOTION_NAMES", "Program", "Result", "batch", "compile",
-           "concatenate"]
+__all__ = ["Alarm", "BatchInterrupted", "CompileError", "Diagnostic", "Error",
+           "FixIt", "Machine", "MOTION_NAMES", "Program", "Result", "batch",
+           "compile", "concatenate"]

@@ -71,14 +71,65 @@ def _present(value) -> bool:
 
 
 def _status(result) -> str:
+    if result is None:
+        return "not run"
     if result.alarm is None:
         return "ended"
     return "interrupted" if result.alarm.code == "MBC0004" else "alarm"
 
 
+#: The statuses of rows a resumed batch keeps, as `mbc batch --resume` does.
+_DONE = ("ended", "alarm")
+
+
+class BatchInterrupted(KeyboardInterrupt):
+    """Ctrl-C stopped mbc.batch: the rows it finished are kept.
+
+    results: the results DataFrame of every row, those the signal cut
+    short "interrupted", those it never started "not run"; motions: the
+    motions DataFrame with motions=True (else None). mbc.batch(...,
+    resume=the exception) runs the rest."""
+
+    def __init__(self, results, motions=None):
+        super().__init__("mbc.batch was interrupted: the finished rows are "
+                         "in .results; resume=this exception runs the rest")
+        self.results = results
+        self.motions = motions
+
+
+def _record(run) -> tuple:
+    """A row of the results, in RESULT_COLUMNS order after the id."""
+    if run is None:
+        return ("not run", 0, 0, 0.0, 0.0, 0.0, None, 0, None, "", {})
+    alarm = run.alarm
+    return (_status(run), run.blocks, run.moves, run.feed_length,
+            run.rapid_length, run.cycle_time,
+            None if alarm is None else alarm.report.split("\n", 1)[0],
+            0 if alarm is None else alarm.number,
+            None if alarm is None else alarm.code, run.dprnt, run.variables)
+
+
+def _resumed(resume, motions: bool) -> tuple:
+    """The earlier batch a resume keeps: its results by id and its motions
+    (or None)."""
+    if isinstance(resume, BatchInterrupted):
+        resume = resume.results if resume.motions is None else \
+            (resume.results, resume.motions)
+    earlier, earlier_motions = resume if isinstance(resume, tuple) else \
+        (resume, None)
+    if motions and earlier_motions is None:
+        raise ValueError("resume: motions=True needs the earlier batch's "
+                         "motions too (its BatchInterrupted, or (results, "
+                         "motions))")
+    done = earlier[earlier["status"].isin(_DONE)]
+    return ({row_id: record for row_id, *record in
+             done[list(RESULT_COLUMNS)].itertuples(index=False, name=None)},
+            earlier_motions)
+
+
 def run_table(program, table, threads: Optional[int] = None,
               motions: bool = False, max_blocks: int = 0,
-              machine=None):
+              machine=None, resume=None):
     """The batch of one table (a pandas DataFrame), in this process: the
     results DataFrame, and with motions=True the motions DataFrame too."""
     import pandas
@@ -86,29 +137,46 @@ def run_table(program, table, threads: Optional[int] = None,
     profile = _profile_text(machine) if machine is not None \
         else program.machine_profile
     rows, ids = _rows(table, profile)
-    runs = [Result._from(raw) for raw in
-            _mbc.run_rows(program._compiled, profile, rows,
-                          threads or os.cpu_count() or 1, max_blocks)]
-    results = pandas.DataFrame({
-        "id": ids,
-        "status": [_status(r) for r in runs],
-        "blocks": [r.blocks for r in runs],
-        "moves": [r.moves for r in runs],
-        "feed_length": [r.feed_length for r in runs],
-        "rapid_length": [r.rapid_length for r in runs],
-        "cycle_time": [r.cycle_time for r in runs],
-        "alarm": [None if r.alarm is None
-                  else r.alarm.report.split("\n", 1)[0] for r in runs],
-        "alarm_number": [0 if r.alarm is None else r.alarm.number
-                         for r in runs],
-        "alarm_code": [None if r.alarm is None else r.alarm.code
-                       for r in runs],
-        "dprnt": [r.dprnt for r in runs],
-        "variables": [r.variables for r in runs],
-    }, columns=list(RESULT_COLUMNS), index=table.index)
-    if not motions:
-        return results
-    return results, motions_table(runs, ids, motion_dtype(profile))
+    kept, kept_motions = _resumed(resume, motions) if resume is not None \
+        else ({}, None)
+    todo = [i for i, row_id in enumerate(ids) if row_id not in kept]
+    raw, interrupt = _mbc.run_rows(program._compiled, profile,
+                                   [rows[i] for i in todo],
+                                   threads or os.cpu_count() or 1, max_blocks)
+    runs = [None if r is None else Result._from(r) for r in raw]
+    records = [kept.get(row_id) for row_id in ids]
+    for i, run in zip(todo, runs):
+        records[i] = _record(run)
+    results = pandas.DataFrame(
+        [(row_id, *record) for row_id, record in zip(ids, records)],
+        columns=list(RESULT_COLUMNS), index=table.index)
+    moves = None
+    if motions:
+        ran = [(ids[i], run) for i, run in zip(todo, runs) if run is not None]
+        moves = motions_table([run for _, run in ran],
+                              [row_id for row_id, _ in ran],
+                              motion_dtype(profile))
+        if kept:
+            moves = _in_table_order(kept_motions, moves, kept, ids)
+    if interrupt is not None:
+        raise BatchInterrupted(results, moves) from interrupt
+    return results if moves is None else (results, moves)
+
+
+def _in_table_order(earlier, now, kept, ids):
+    """The kept rows' motions from the earlier batch and the others' from
+    this one, in table order."""
+    import pandas
+    earlier = earlier[earlier["id"].isin(kept)]
+    moves = pandas.concat([earlier, now], ignore_index=True)
+    for column in ("id", "prog", "file"):
+        moves[column] = moves[column].astype(object).astype("category")
+    position = {row_id: i for i, row_id in enumerate(ids)}
+    order = numpy.argsort(moves["id"].map(position).to_numpy(),
+                          kind="stable")
+    moves = moves.iloc[order].reset_index(drop=True)
+    moves["id"] = moves["id"].cat.set_categories(ids)
+    return moves
 
 
 def motion_dtype(profile: Optional[str]) -> numpy.dtype:
@@ -161,7 +229,8 @@ def motions_table(runs, ids, dtype: numpy.dtype):
 
 def batch(program, table, *, threads: Optional[int] = None,
           motions: bool = False, max_blocks: int = 0,
-          machine: Union[None, str, Mapping[str, Any]] = None):
+          machine: Union[None, str, Mapping[str, Any]] = None,
+          resume=None):
     """Runs the program once per row of `table` (a pandas DataFrame) on every
     core, as `mbc batch` runs a CSV table: letter columns are G65 arguments
     (R sets #18), `#N` columns preset variables, an `id` column names the
@@ -174,5 +243,13 @@ def batch(program, table, *, threads: Optional[int] = None,
     blocks, moves, feed_length, rapid_length, cycle_time, alarm (the
     report's first line), alarm_number, alarm_code, dprnt, variables. With
     motions=True returns (results, motions): every row's motions in one
-    DataFrame with the row's id in the first column."""
-    return run_table(program, table, threads, motions, max_blocks, machine)
+    DataFrame with the row's id in the first column.
+
+    Ctrl-C stops the rows going on and starts no more, and raises
+    BatchInterrupted (a KeyboardInterrupt) with the results of every row
+    so far (.results, .motions). resume= that exception (or an earlier
+    results DataFrame, or (results, motions)) keeps the rows it finished
+    ("ended" or "alarm", by id) and runs the others, as `mbc batch
+    --resume` does."""
+    return run_table(program, table, threads, motions, max_blocks, machine,
+                     resume)

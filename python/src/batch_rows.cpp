@@ -25,7 +25,6 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
   out.resize(rows.size());
   const std::string axes = axisNames(contexts.front().get());
   std::atomic<std::size_t> next{0};
-  std::atomic<bool> interrupted{false};
   // A worker's rows number program and file names in its own tables.
   std::vector<NameTable> programs(threads), files(threads);
   const auto work = [&](unsigned worker) {
@@ -37,7 +36,6 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
       const driver::InterruptibleRun interruptible(ctx);
       runProgram(program, ctx, rows[i], *out[i]);
       if (out[i]->status == MBRT_ALARM_Interrupted) {
-        interrupted = true;
         next = rows.size(); // Ctrl-C: no more rows
       }
     }
@@ -49,9 +47,6 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
   work(0);
   for (std::thread& worker : workers) {
     worker.join();
-  }
-  if (interrupted) {
-    out.clear();
   }
   return true;
 }

@@ -377,15 +377,23 @@ PYBIND11_MODULE(_mbc, m) {
         if (!ok) {
           throw py::value_error(error);
         }
-        if (outputs.size() != rows.size()) {
-          raisePendingSignal();
-          throw std::runtime_error("mbc: the batch was interrupted");
-        }
-        std::vector<RunResult> results;
+        // The rows a signal let finish stay: the caller gets them with the
+        // KeyboardInterrupt Python's handler asked for (None if it asked
+        // for none), and None for each row never started.
+        py::list results;
+        bool interrupted = false;
         for (auto& out : outputs) {
-          results.emplace_back(std::move(out));
+          interrupted = interrupted || out == nullptr ||
+                        out->status == MBRT_ALARM_Interrupted;
+          results.append(out != nullptr ? py::cast(RunResult(std::move(out)))
+                                        : py::none());
         }
-        return results;
+        py::object signal = py::none();
+        if (interrupted && PyErr_CheckSignals() != 0) {
+          const py::error_already_set raised;
+          signal = raised.value();
+        }
+        return py::make_tuple(results, signal);
       },
       py::arg("program"), py::arg("profile"), py::arg("rows"),
       py::arg("threads"), py::arg("max_blocks"));

@@ -198,3 +198,56 @@ def test_a_machine_after_reset_runs_as_a_new_one(machine_data):
     for field in new.motions.dtype.names:
         numpy.testing.assert_array_equal(again.motions[field],
                                          new.motions[field])
+
+
+# A row that loops until Ctrl-C: A=0 ends at once, A=1 never does.
+LOOPING = """%
+O4630(COUNT - A1 LOOPS FOREVER)
+G90G00X#24Y0
+WHILE[#1EQ1]DO1
+#100=#100+1
+END1
+G01X[#24+1.]F100.
+M30
+%
+"""
+
+
+def test_ctrl_c_keeps_the_finished_rows_and_resume_runs_the_rest():
+    import os
+    import signal
+    import threading
+    program = mbc.compile(LOOPING)
+    table = pandas.DataFrame({"id": [f"r{i}" for i in range(6)],
+                              "A": [0.0, 0.0, 0.0, 1.0, 0.0, 0.0],
+                              "X": [float(i) for i in range(6)]})
+    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(mbc.BatchInterrupted) as stopped:
+        mbc.batch(program, table, threads=1, motions=True,
+                  max_blocks=10**15)
+    assert isinstance(stopped.value, KeyboardInterrupt)
+    partial = stopped.value.results
+    assert list(partial["status"]) == ["ended"] * 3 + ["interrupted"] + \
+        ["not run"] * 2
+    assert list(partial.index) == list(table.index)
+    assert set(stopped.value.motions["id"]) == {"r0", "r1", "r2", "r3"}
+    # The looping row is fixed; the rows done are kept, the others run.
+    fixed = table.assign(A=0.0)
+    whole, whole_motions = mbc.batch(program, fixed, motions=True)
+    results, motions = mbc.batch(program, fixed, motions=True,
+                                 resume=stopped.value)
+    pandas.testing.assert_frame_equal(results, whole)
+    names = {c: object for c in ("id", "motion", "prog", "file")}
+    pandas.testing.assert_frame_equal(motions.astype(names),
+                                      whole_motions.astype(names))
+    # A results DataFrame resumes too; motions=True then needs motions. A
+    # kept row is not run again, whatever its cells say now.
+    again = mbc.batch(program, fixed, resume=partial)
+    pandas.testing.assert_frame_equal(again, whole)
+    moved = mbc.batch(program, fixed.assign(X=50.0), resume=partial)
+    assert list(moved["feed_length"])[:3] == list(whole["feed_length"])[:3]
+    assert list(moved["rapid_length"])[:3] == list(whole["rapid_length"])[:3]
+    assert list(moved["rapid_length"])[3:] != list(whole["rapid_length"])[3:]
+    with pytest.raises(ValueError, match="motions"):
+        mbc.batch(program, fixed, motions=True, resume=partial)
