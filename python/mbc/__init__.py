@@ -261,6 +261,26 @@ class Machine:
         """The axis letters in profile order, e.g. "XYZ"."""
         return self._ctx.axes
 
+    @property
+    def position(self) -> dict:
+        """Where the tool stands, {"X": ...} in machine coordinates and the
+        machine's unit (a lathe's X a diameter): what #5021+ read."""
+        return {axis: self._ctx.get_position(i)
+                for i, axis in enumerate(self.axes)}
+
+    @position.setter
+    def position(self, where: Mapping[str, float]) -> None:
+        """Puts the tool elsewhere between runs, as jogging does: the axes
+        given ({"Z": 50}); the next run starts there."""
+        axes = self.axes
+        for name, value in where.items():
+            axis = axes.find(name.upper()) if isinstance(name, str) else -1
+            if axis < 0:
+                raise ValueError(f"position {name!r}: the machine's axes are "
+                                 f"{', '.join(axes)}")
+            self._ctx.set_position(axis, number_value(value,
+                                                      f"position {name}"))
+
     def __getitem__(self, number: float) -> Optional[float]:
         return self._ctx.read(number)
 

@@ -316,6 +316,20 @@ PYBIND11_MODULE(_mbc, m) {
                throw py::value_error(report);
              }
            })
+      .def("get_position",
+           [](Context& c, int axis) {
+             double value = 0.0;
+             mbrt_get_machine_position(c.get(), axis, &value);
+             return value;
+           })
+      .def("set_position",
+           [](Context& c, int axis, double value) {
+             if (mbrt_set_machine_position(c.get(), axis, value) == 0) {
+               throw py::value_error(
+                   "position " + std::to_string(value) +
+                   ": more than nine digits, or not a number");
+             }
+           })
       .def("reset", [](Context& c) { mbrt_reset(c.get()); })
       .def("reset_state", [](Context& c) { mbrt_reset_state(c.get()); })
       .def_property_readonly("axes", &Context::axes);

@@ -230,3 +230,22 @@ def test_ctrl_c_stops_a_runaway_run_with_keyboard_interrupt():
     assert time.perf_counter() - began < 30
     assert machine[100] > 0  # the machine is still there, and usable
     assert mbc.compile("%\nO8\n#101=1\nM30\n%\n")(machine).variables[101] == 1
+
+
+# A simulation puts the tool where its own model left it before a call.
+def test_the_machine_position_between_runs():
+    machine = mbc.Machine()
+    assert machine.position == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    machine.position = {"x": -50, "Z": 10.5}
+    assert machine.position == {"X": -50.0, "Y": 0.0, "Z": 10.5}
+    assert machine[5021] == -50.0
+    step = mbc.compile("%\nO9\nG91G01X5.F100.\nM30\n%\n")
+    moves = step(machine).motions
+    assert (moves["sx"][0], moves["x"][0]) == (-50.0, -45.0)
+    assert machine.position["X"] == -45.0
+    with pytest.raises(ValueError, match="axes are X, Y, Z"):
+        machine.position = {"A": 1.0}
+    with pytest.raises(ValueError, match="nine digits"):
+        machine.position = {"X": 1e12}
+    with pytest.raises(TypeError):
+        machine.position = {"X": "1"}

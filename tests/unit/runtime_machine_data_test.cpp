@@ -1,6 +1,7 @@
 // The offset memory by the profile's names, in the machine's unit
 // (runtime.h): what a state file saves and loads. Work offsets are kept in
 // the machine's unit, so G20 and back loses nothing.
+#include <cmath>
 #include <string>
 
 #include "runtime_test_support.h"
@@ -61,6 +62,40 @@ TEST(RuntimeMachineData, ALathesOffsets) {
   Machine wearOnly(R"({"series": "T", "tool_offsets": {
     "geometry_wear": false}})");
   EXPECT_EQ(mbrt_get_tool_offset(wearOnly.ctx(), 1, "x_geometry", &value), 0);
+}
+
+} // namespace mbc::test
+
+namespace mbc::test {
+
+// A host puts the tool where its own model left it: the next run starts
+// there, and the work coordinates follow the offsets in force.
+TEST(RuntimeMachineData, TheMachinePositionBetweenRuns) {
+  Machine m;
+  ASSERT_EQ(m.write(5221, -100.0), 0); // G54 X
+  ASSERT_EQ(mbrt_set_machine_position(m.ctx(), 0, -60.0), 1);
+  ASSERT_EQ(mbrt_set_machine_position(m.ctx(), 2, -12.3456), 1);
+  double value = 0.0;
+  ASSERT_EQ(mbrt_get_machine_position(m.ctx(), 2, &value), 1);
+  EXPECT_EQ(value, -12.346); // to the least increment
+  EXPECT_EQ(m.read(5021), -60.0);
+  EXPECT_EQ(m.read(5041), 40.0); // in G54
+  ASSERT_EQ(m.block("G91 G01 X5. F100."), 0);
+  EXPECT_EQ(m.read(5021), -55.0);
+  EXPECT_EQ(mbrt_set_machine_position(m.ctx(), 3, 1.0), 0); // no 4th axis
+  EXPECT_EQ(mbrt_set_machine_position(m.ctx(), 0, 1e12), 0);
+  EXPECT_EQ(mbrt_set_machine_position(m.ctx(), 0, std::nan("")), 0);
+  EXPECT_EQ(mbrt_get_machine_position(m.ctx(), -1, &value), 0);
+  // In inches a profile's position is in inches; a lathe's X a diameter.
+  Machine inch(R"({"units": "inch"})");
+  ASSERT_EQ(mbrt_set_machine_position(inch.ctx(), 0, 1.5), 1);
+  EXPECT_EQ(inch.read(5021), 1.5);
+  Machine lathe(R"({"series": "T"})");
+  ASSERT_EQ(mbrt_set_machine_position(lathe.ctx(), 0, 80.0), 1);
+  EXPECT_EQ(lathe.read(5021), 80.0);
+  ASSERT_EQ(lathe.block("G00 U-20."), 0);
+  ASSERT_EQ(mbrt_get_machine_position(lathe.ctx(), 0, &value), 1);
+  EXPECT_EQ(value, 60.0);
 }
 
 } // namespace mbc::test

@@ -228,6 +228,18 @@ int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
 const char* mbrt_work_offset_set(int i);
 const char* mbrt_tool_offset_field(const mbrt_ctx* ctx, int i);
 
+/* ---- The machine position -------------------------------------------------
+ * Where the tool stands, per axis in profile order, in machine coordinates
+ * and the machine's unit (as work offsets above: the profile's "units",
+ * degrees on a rotary axis, a diameter on a lathe's X), what #5021+ read.
+ * A run starts where the last left the tool; mbrt_set_machine_position
+ * puts it elsewhere between runs, as jogging the machine does (the work
+ * coordinates #5041+ follow; nothing moves, nothing is drawn). Each
+ * returns 1, or 0 for an axis the machine does not have, a value it cannot
+ * hold (more than nine digits, not finite) or a call from inside a sink. */
+int mbrt_get_machine_position(const mbrt_ctx* ctx, int axis, double* value);
+int mbrt_set_machine_position(mbrt_ctx* ctx, int axis, double value);
+
 /* ---- Programs and their arguments ----------------------------------------
  */
 
