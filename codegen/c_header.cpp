@@ -1,10 +1,72 @@
 #include "codegen/c_header.h"
 
 #include "codegen/entry_points.h"
+#include "ir/arguments_read.h"
+#include <mbc/addresses.h>
 
 #include <fmt/format.h>
 
 namespace mbc::codegen {
+
+namespace {
+
+/// Joins the words of a name that a comment line must not break.
+constexpr char kUnbroken = '\x01';
+
+/// "X (#24)": the argument that sets local n, by G65's argument
+/// specification I, or II's I, J, K sets where I has no letter for it.
+std::string argumentName(int n) {
+  for (char letter = 'A'; letter <= 'Z'; ++letter) {
+    if (argumentLocal(letter) == n) {
+      return fmt::format("{}{}(#{})", letter, kUnbroken, n);
+    }
+  }
+  return fmt::format("{}{}{}(#{})", "IJK"[(n - 4) % 3], (n - 4) / 3 + 1,
+                     kUnbroken, n);
+}
+
+/// The comment's sentence on the arguments a program reads.
+std::string argumentsText(const ir::Module& module, const ir::Function& f) {
+  const ir::ArgumentsRead read = ir::argumentsRead(module, f);
+  std::string names;
+  for (int n = 1; n <= 33; ++n) {
+    if (read.locals.test(static_cast<std::size_t>(n - 1))) {
+      names += (names.empty() ? "" : ", ") + argumentName(n);
+    }
+  }
+  std::string text = names.empty() ? "It reads no argument"
+                                   : "The arguments it reads: " + names;
+  if (read.computed) {
+    text += names.empty() ? " by number, but may read some by a computed one"
+                          : ", and maybe others by a computed number";
+  }
+  return text + ".";
+}
+
+/// `text` as the lines of a C comment, broken before 78 columns.
+std::string commentLines(const std::string& text) {
+  std::string out = "/*";
+  std::size_t column = 2;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find(' ', at);
+    end = end == std::string::npos ? text.size() : end;
+    const std::string word = text.substr(at, end - at);
+    if (column + 1 + word.size() > 77) {
+      out += "\n *";
+      column = 2;
+    }
+    out += ' ';
+    for (const char c : word) {
+      out += c == kUnbroken ? ' ' : c;
+    }
+    column += 1 + word.size();
+    at = end + 1;
+  }
+  return out + " */\n";
+}
+
+} // namespace
 
 std::string cHeader(const ir::Module& module, const std::string& tableName,
                     const std::string& guard) {
@@ -20,11 +82,14 @@ std::string cHeader(const ir::Module& module, const std::string& tableName,
     if (!hasEntryPoint(f)) {
       continue;
     }
-    h += fmt::format(
-        "\n/* {} ({}): runs it as the main program, the arguments set as G65\n"
-        " * passes them; 0 or the alarm that stopped it. */\n"
-        "mbrt_status {}(mbrt_ctx* ctx, const mbrt_word* args, size_t count);\n",
-        f.name, f.file, entryPointName(f.number));
+    h += "\n" +
+         commentLines(fmt::format(
+             "{} ({}): runs it as the main program, the arguments set as "
+             "G65 passes them; 0 or the alarm that stopped it. {}",
+             f.name, f.file, argumentsText(module, f))) +
+         fmt::format("mbrt_status {}(mbrt_ctx* ctx, const mbrt_word* args, "
+                     "size_t count);\n",
+                     entryPointName(f.number));
   }
   h += fmt::format("\n#ifdef __cplusplus\n}}\n#endif\n\n#endif /* {} */\n",
                    guard);

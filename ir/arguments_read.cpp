@@ -1,0 +1,96 @@
+#include "ir/arguments_read.h"
+
+#include <mbc/calling_codes.h>
+
+#include <optional>
+#include <set>
+
+namespace mbc::ir {
+
+namespace {
+
+constexpr std::int64_t kLocals = 33;
+
+/// The constant an operand is, if it is one.
+std::optional<double> constant(const Function& f, ValueId v) {
+  const Inst& inst = f.insts[v];
+  return inst.op == Op::Const ? std::optional(inst.get<Number>().value)
+                              : std::nullopt;
+}
+
+const Function* numbered(const Module& module, int number) {
+  for (const Function& f : module.functions) {
+    if (f.number == number) {
+      return &f;
+    }
+  }
+  return nullptr;
+}
+
+/// The subprogram an nc block calls with M98 or M198 P, nullptr for none;
+/// `computed` when its P is no constant or names no program of the module.
+const Function* subprogramCalled(const Module& module, const Function& f,
+                                 const Inst& nc, bool& computed) {
+  const auto& words = nc.get<Words>().words;
+  bool calls = false;
+  std::optional<double> p;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::optional<double> value = constant(f, nc.ops[i]);
+    if (words[i].letter == 'M' && value && isSubprogramCall('M', *value)) {
+      calls = true;
+    } else if (words[i].letter == 'P') {
+      p = value;
+    }
+  }
+  if (!calls) {
+    return nullptr;
+  }
+  const Function* callee = p ? numbered(module, static_cast<int>(*p)) : nullptr;
+  computed = computed || callee == nullptr;
+  return callee;
+}
+
+void collect(const Module& module, const Function& f, ArgumentsRead& read,
+             std::set<const Function*>& seen) {
+  if (!seen.insert(&f).second) {
+    return;
+  }
+  for (const Inst& inst : f.insts) {
+    switch (inst.op) {
+      case Op::LdVar: {
+        const std::int64_t n = inst.get<VarNumber>().number;
+        if (n >= 1 && n <= kLocals) {
+          read.locals.set(static_cast<std::size_t>(n - 1));
+        }
+        break;
+      }
+      case Op::LdInd:
+      case Op::Adp:
+        read.computed = read.computed || !constant(f, inst.ops[0]);
+        if (const std::optional<double> n = constant(f, inst.ops[0]);
+            n && *n >= 1 && *n <= kLocals) {
+          read.locals.set(static_cast<std::size_t>(*n - 1));
+        }
+        break;
+      case Op::Nc:
+        if (const Function* callee =
+                subprogramCalled(module, f, inst, read.computed)) {
+          collect(module, *callee, read, seen);
+        }
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+} // namespace
+
+ArgumentsRead argumentsRead(const Module& module, const Function& f) {
+  ArgumentsRead read;
+  std::set<const Function*> seen;
+  collect(module, f, read, seen);
+  return read;
+}
+
+} // namespace mbc::ir
