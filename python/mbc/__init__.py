@@ -252,9 +252,18 @@ class Machine:
     machine[100] = 2.5 sets one (None makes it vacant).  One thread at a
     time (runs release the GIL; use one Machine per thread)."""
 
-    def __init__(self, profile: Union[None, Source, Mapping[str, Any]] = None):
+    def __init__(self, profile: Union[None, Source, Mapping[str, Any]] = None,
+                 *, on_motion=None, on_print=None, on_alarm=None):
         self.profile = _profile_text(profile)
         self._ctx = _mbc.Context(self.profile)
+        #: Called as a run goes, like the C API's sinks: on_motion(dict of
+        #: the motion's fields, as a row of Result.motions with motion,
+        #: prog and file by name), on_print(DPRNT text), on_alarm(report).
+        #: An exception one raises stops the run before its next block and
+        #: the call raises it.
+        self.on_motion = on_motion
+        self.on_print = on_print
+        self.on_alarm = on_alarm
 
     @property
     def axes(self) -> str:
@@ -306,7 +315,8 @@ class Machine:
             letters = {**args, **letters}
         result = Result._from(self._ctx.run(
             program._compiled, *_arguments(letters),
-            _presets(presets) if presets else [], max_blocks))
+            _presets(presets) if presets else [], max_blocks,
+            self.on_motion, self.on_print, self.on_alarm, MOTION_NAMES))
         alarm = result.alarm
         if alarm is not None and alarm.file == "" and alarm.line == 0:
             # Before any block: what the caller asked for (a preset of a

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstring>
 #include <dlfcn.h>
+#include <optional>
 #include <pybind11/stl.h>
 #include <thread>
 
@@ -120,6 +121,63 @@ struct Running {
   Running(const Running&) = delete;
   Running& operator=(const Running&) = delete;
   Context& context;
+};
+
+/// A Machine's callbacks during one run, called under the GIL as the run
+/// goes. The first exception one raises stops the run before its next
+/// block (as Ctrl-C does), and the call raises it.
+struct PythonWatchers {
+  py::object motion, print, alarm, motionNames;
+  const RunOutput* out = nullptr;
+  mbrt_ctx* ctx = nullptr;
+  std::optional<py::error_already_set> error;
+
+  template <class Call> void call(Call&& c) {
+    if (error) {
+      return;
+    }
+    const py::gil_scoped_acquire gil;
+    try {
+      c();
+    } catch (py::error_already_set& e) {
+      error.emplace(std::move(e));
+      mbrt_interrupt(ctx);
+    } catch (const std::exception& e) {
+      // Nothing may unwind through the runtime's frames.
+      PyErr_SetString(PyExc_RuntimeError, e.what());
+      error.emplace();
+      mbrt_interrupt(ctx);
+    }
+  }
+
+  static PythonWatchers& of(void* user) {
+    return *static_cast<PythonWatchers*>(user);
+  }
+
+  static void onMotion(void* user) {
+    PythonWatchers& w = of(user);
+    w.call([&] { w.motion(w.out->motions.lastRow(w.motionNames)); });
+  }
+
+  static void onPrint(void* user, const char* data, std::size_t size) {
+    PythonWatchers& w = of(user);
+    w.call([&] { w.print(py::str(data, size)); });
+  }
+
+  static void onAlarm(void* user, const char* data, std::size_t size) {
+    PythonWatchers& w = of(user);
+    w.call([&] { w.alarm(py::str(data, size)); });
+  }
+
+  /// The watchers a request gets: none when no callback is set.
+  RunWatchers watchers() {
+    if (motion.is_none() && print.is_none() && alarm.is_none()) {
+      return {};
+    }
+    return {motion.is_none() ? nullptr : &onMotion,
+            print.is_none() ? nullptr : &onPrint,
+            alarm.is_none() ? nullptr : &onAlarm, this};
+  }
 };
 
 RunRequest request(const std::string& letters,
@@ -275,17 +333,26 @@ PYBIND11_MODULE(_mbc, m) {
           [](Context& c, const CompiledProgram& program,
              const std::string& letters, const std::vector<double>& values,
              const std::vector<std::pair<double, double>>& presets,
-             std::uint64_t maxBlocks) {
+             std::uint64_t maxBlocks, const py::object& onMotion,
+             const py::object& onPrint, const py::object& onAlarm,
+             const py::object& motionNames) {
             auto out =
                 std::make_unique<RunOutput>(c.axes(), c.programs(), c.files());
             out->motions.reserve(c.lastMotions);
-            const RunRequest r = request(letters, values, presets, maxBlocks);
+            RunRequest r = request(letters, values, presets, maxBlocks);
             mbrt_ctx* ctx = c.get();
+            PythonWatchers watchers{onMotion,    onPrint,   onAlarm,
+                                    motionNames, out.get(), ctx,
+                                    std::nullopt};
+            r.watch = watchers.watchers();
             {
               const Running busy(c);
               py::gil_scoped_release unlocked;
               const mbc::driver::InterruptibleRun interruptible(ctx);
               runProgram(program, ctx, r, *out);
+            }
+            if (watchers.error) {
+              throw std::move(*watchers.error);
             }
             if (out->status == MBRT_ALARM_Interrupted) {
               raisePendingSignal();
@@ -294,7 +361,10 @@ PYBIND11_MODULE(_mbc, m) {
             return RunResult(std::move(out));
           },
           py::arg("program"), py::arg("letters"), py::arg("values"),
-          py::arg("presets"), py::arg("max_blocks"))
+          py::arg("presets"), py::arg("max_blocks"),
+          py::arg("on_motion") = py::none(), py::arg("on_print") = py::none(),
+          py::arg("on_alarm") = py::none(),
+          py::arg("motion_names") = py::none())
       .def("read",
            [](Context& c, double number) -> py::object {
              mbrt_num value;

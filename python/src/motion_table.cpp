@@ -13,6 +13,11 @@ namespace {
 
 constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
 
+/// The whole-number fields of a row, then f, then the axes' fields.
+constexpr const char* kHeaderNames[] = {"motion", "line",  "prog",
+                                        "file",   "cycle", "plane"};
+constexpr std::size_t kFirstAxisField = std::size(kHeaderNames) + 1;
+
 char lower(char axis) {
   return axis >= 'A' && axis <= 'Z' ? static_cast<char>(axis - 'A' + 'a')
                                     : axis;
@@ -82,10 +87,8 @@ const py::dtype& MotionTable::rowType(const std::string& axes) {
     formats.append(format);
     offsets.append(offset);
   };
-  const char* headerNames[] = {"motion", "line",  "prog",
-                               "file",   "cycle", "plane"};
-  for (std::size_t i = 0; i < std::size(headerNames); ++i) {
-    field(headerNames[i], "<i4", i * sizeof(std::int32_t));
+  for (std::size_t i = 0; i < std::size(kHeaderNames); ++i) {
+    field(kHeaderNames[i], "<i4", i * sizeof(std::int32_t));
   }
   field("f", "<f8", offsetof(Header, f));
   std::size_t offset = sizeof(Header);
@@ -101,6 +104,28 @@ const py::dtype& MotionTable::rowType(const std::string& axes) {
                 py::dtype(names, formats, offsets,
                           static_cast<py::ssize_t>(rowBytes(axes.size()))))
       .first->second;
+}
+
+py::dict MotionTable::lastRow(const py::sequence& motionNames) const {
+  const std::size_t width = rowBytes() / sizeof(double);
+  const double* row = rows_.data() + (count_ - 1) * width;
+  Header header;
+  std::memcpy(&header, row, sizeof header);
+  py::dict out;
+  out["motion"] = motionNames[static_cast<std::size_t>(header.motion)];
+  out["line"] = header.line;
+  out["prog"] = programs_.names()[static_cast<std::size_t>(header.prog)];
+  out["file"] = files_.names()[static_cast<std::size_t>(header.file)];
+  out["cycle"] = header.cycle;
+  out["plane"] = header.plane;
+  out["f"] = header.f;
+  // The axes' fields follow the header in the row type's order.
+  const py::list names = rowType(axes_).attr("names");
+  const double* axis = row + sizeof(Header) / sizeof(double);
+  for (std::size_t i = kFirstAxisField; i < names.size(); ++i) {
+    out[names[i]] = axis[i - kFirstAxisField];
+  }
+  return out;
 }
 
 py::array MotionTable::take() {

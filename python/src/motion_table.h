@@ -62,6 +62,10 @@ public:
   /// px (programmed end) and cx (arc centre, NaN off the arc plane).
   pybind11::array take();
 
+  /// The last row as a dict of its fields, for a callback: `motion`
+  /// named by `motionNames`, `prog` and `file` by their names.
+  pybind11::dict lastRow(const pybind11::sequence& motionNames) const;
+
   /// The row type of a machine with these axes.
   static const pybind11::dtype& rowType(const std::string& axes);
 

@@ -37,6 +37,28 @@ AlarmParts alarmParts(const mbrt_ctx* ctx) {
   return a;
 }
 
+/// The sinks of a run its host watches: the output first, then the host.
+struct Watched {
+  RunOutput& out;
+  const RunWatchers& watch;
+};
+
+void watchedMotion(void* user, const mbrt_motion* motion) {
+  auto& w = *static_cast<Watched*>(user);
+  MotionTable::append(&w.out.motions, motion);
+  if (w.watch.motion != nullptr) {
+    w.watch.motion(w.watch.user);
+  }
+}
+
+void watchedPrint(void* user, const char* data, std::size_t size) {
+  auto& w = *static_cast<Watched*>(user);
+  w.out.dprnt.append(data, size);
+  if (w.watch.print != nullptr) {
+    w.watch.print(w.watch.user, data, size);
+  }
+}
+
 } // namespace
 
 driver::CtxPtr newContext(const std::string* profile, std::string& error) {
@@ -59,8 +81,16 @@ void runProgram(const CompiledProgram& program, mbrt_ctx* ctx,
                 const RunRequest& request, RunOutput& out) {
   out.main = program.mainName();
   mbrt_buffer_motions(ctx, 0);
-  mbrt_set_motion_sink(ctx, &MotionTable::append, &out.motions);
-  mbrt_set_print_sink(ctx, &appendText, &out.dprnt);
+  Watched watched{out, request.watch};
+  const bool watching = request.watch.user != nullptr;
+  if (watching) {
+    mbrt_set_motion_sink(ctx, &watchedMotion, &watched);
+    mbrt_set_print_sink(ctx, &watchedPrint, &watched);
+    mbrt_set_alarm_sink(ctx, request.watch.alarm, request.watch.user);
+  } else {
+    mbrt_set_motion_sink(ctx, &MotionTable::append, &out.motions);
+    mbrt_set_print_sink(ctx, &appendText, &out.dprnt);
+  }
   mbrt_set_message_sink(ctx, &appendText, &out.messages);
   mbrt_set_max_blocks(ctx, request.maxBlocks);
   mbrt_start(ctx, out.main.c_str());
@@ -74,6 +104,7 @@ void runProgram(const CompiledProgram& program, mbrt_ctx* ctx,
   mbrt_set_motion_sink(ctx, nullptr, nullptr);
   mbrt_set_print_sink(ctx, nullptr, nullptr);
   mbrt_set_message_sink(ctx, nullptr, nullptr);
+  mbrt_set_alarm_sink(ctx, nullptr, nullptr);
   if (out.status != MBRT_OK) {
     out.alarm = alarmParts(ctx);
   }

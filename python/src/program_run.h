@@ -18,10 +18,21 @@
 
 namespace mbc::python {
 
+/// What a host watches as a run goes (Python's Machine callbacks): each is
+/// called with `user` after the run has kept what it reports (the motion
+/// is the table's last row by then); null for none.
+struct RunWatchers {
+  void (*motion)(void* user) = nullptr;
+  mbrt_text_fn print = nullptr;
+  mbrt_text_fn alarm = nullptr;
+  void* user = nullptr;
+};
+
 struct RunRequest {
   std::vector<std::pair<char, double>> args;      // G65-style, real values
   std::vector<std::pair<double, double>> presets; // #N = value, before
   std::uint64_t maxBlocks = 0;                    // 0: the default limit
+  RunWatchers watch;
 };
 
 struct AlarmParts {

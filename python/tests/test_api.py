@@ -249,3 +249,33 @@ def test_the_machine_position_between_runs():
         machine.position = {"X": 1e12}
     with pytest.raises(TypeError):
         machine.position = {"X": "1"}
+
+
+# A Machine's callbacks see the run as it goes, as the C API's sinks do.
+def test_machine_callbacks_as_the_run_goes():
+    seen, printed, alarms = [], [], []
+    machine = mbc.Machine(on_motion=seen.append, on_print=printed.append,
+                          on_alarm=alarms.append)
+    program = mbc.compile("%\nO11(STEPS)\nG90G00X1.Y2.\nG01X#24F100.\n"
+                          "DPRNT[AT*#5041[42]]\n#3000=5(STOP)\nM30\n%\n")
+    with pytest.raises(mbc.Alarm) as stopped:
+        program(machine, X=5)
+    rows = stopped.value.result.motions
+    assert [s["motion"] for s in seen] == ["rapid", "linear"]
+    assert [s["x"] for s in seen] == list(rows["x"])
+    assert seen[1]["prog"] == "O0011" and seen[1]["line"] == 4
+    assert seen[1]["f"] == 100.0
+    assert printed == ["AT     5.00\n"]
+    assert alarms == [stopped.value.report]
+
+    # An exception in a callback stops the run before its next block.
+    def refuse(motion):
+        raise ValueError(f"collision at X{motion['x']}")
+    careful = mbc.Machine(on_motion=refuse)
+    with pytest.raises(ValueError, match="collision at X1.0"):
+        program(careful, X=5)
+    assert careful.position["X"] == 1.0
+    careful.on_motion = None  # the machine runs on
+    with pytest.raises(mbc.Alarm):
+        program(careful, X=5)
+    assert careful.position["X"] == 5.0
