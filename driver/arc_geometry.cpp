@@ -14,6 +14,11 @@ int axisNamed(const mbrt_motion& m, char letter) {
   return -1;
 }
 
+bool isLatheMotion(const mbrt_motion& m) {
+  return axisNamed(m, 'Y') < 0 && axisNamed(m, 'X') >= 0 &&
+         axisNamed(m, 'Z') >= 0;
+}
+
 mbrt_motion inRadii(const mbrt_motion& m) {
   mbrt_motion out = m;
   for (int axis = 0; axis < m.axis_count; ++axis) {

@@ -12,6 +12,10 @@ namespace mbc::driver {
 /// The index of the axis named `letter`, or -1.
 int axisNamed(const mbrt_motion& m, char letter);
 
+/// Whether the move is a lathe's: X and Z and no Y (its pictures are drawn
+/// Z to the right, X up).
+bool isLatheMotion(const mbrt_motion& m);
+
 /// The move in its true geometry: a diameter axis (a lathe's X) halved to
 /// the distance from the spindle axis, so that arcs are round.
 mbrt_motion inRadii(const mbrt_motion& m);

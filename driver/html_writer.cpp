@@ -77,9 +77,61 @@ void HtmlWriter::segmentTo(const std::array<double, 3>& from,
   segmentMove_.push_back(static_cast<std::uint32_t>(kinds_.size() - 1));
 }
 
+/// The programmed contour of a move, where compensation runs the tool
+/// beside it: from the last programmed point to this one, an arc with the
+/// tool arc's centre and turn (the tool's offset arc is concentric), a
+/// rapid lifting the pen.
+void HtmlWriter::addProgrammed(const mbrt_motion& m) {
+  const std::array<double, 3> to = xyz(m.programmed, m);
+  const std::array<double, 3> end = xyz(m.end, m);
+  compensated_ = compensated_ || to != end;
+  const std::array<double, 3> from = programmedPen_.value_or(xyz(m.start, m));
+  programmedPen_ = to;
+  if (m.kind == MBRT_MOTION_RAPID || from == to) {
+    return;
+  }
+  const auto segment = [&](const std::array<double, 3>& a,
+                           const std::array<double, 3>& b) {
+    for (const auto& point : {a, b}) {
+      for (const double v : point) {
+        programmed_.push_back(static_cast<float>(v));
+      }
+    }
+  };
+  if (m.kind != MBRT_MOTION_CW && m.kind != MBRT_MOTION_CCW) {
+    segment(from, to);
+    return;
+  }
+  // The tool arc's points moved along their radii onto the programmed one.
+  const Arc a = arcOf(m);
+  const double scale = a.radius > 0.0
+                           ? std::hypot(m.programmed[a.p] - m.center[0],
+                                        m.programmed[a.q] - m.center[1]) /
+                                 a.radius
+                           : 1.0;
+  const int pieces = std::max(
+      4,
+      static_cast<int>(std::ceil(std::fabs(a.sweep) / (2.0 * std::numbers::pi) *
+                                 kSegmentsPerTurn)));
+  std::array<double, 3> last = from;
+  for (int i = 1; i <= pieces; ++i) {
+    auto point = arcPoint(m, a, static_cast<double>(i) / pieces);
+    point[a.p] = m.center[0] + (point[a.p] - m.center[0]) * scale;
+    point[a.q] = m.center[1] + (point[a.q] - m.center[1]) * scale;
+    const std::array<double, 3> next = i == pieces ? to : xyz(point.data(), m);
+    segment(last, next);
+    last = next;
+  }
+}
+
 std::size_t HtmlWriter::add(const mbrt_motion& motion) {
   const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
-  const std::size_t before = points_.size();
+  const std::size_t before = points_.size() + programmed_.size();
+  lathe_ = isLatheMotion(m);
+  for (const double v : xyz(motion.end, motion)) {
+    ends_.push_back(static_cast<float>(v));
+  }
+  addProgrammed(m);
   const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
   kinds_.push_back(m.kind == MBRT_MOTION_RAPID ? kRapid : arc ? kArc : kFeed);
   files_.push_back(indexOf(fileNames_, m.file));
@@ -101,8 +153,8 @@ std::size_t HtmlWriter::add(const mbrt_motion& motion) {
   } else {
     segmentTo(from, xyz(m.end, m));
   }
-  // About 8 bytes of the page per coordinate, 20 per move.
-  return (points_.size() - before) * 8 + 20;
+  // About 8 bytes of the page per coordinate, 40 per move.
+  return (points_.size() + programmed_.size() - before) * 8 + 40;
 }
 
 std::string HtmlWriter::document(const std::string& title) const {
@@ -145,13 +197,15 @@ std::string HtmlWriter::document(const std::string& title) const {
     programs += (programs.empty() ? "" : ",") + jsonString(p);
   }
   std::string data = fmt::format(
-      "{{\"title\":{},\"files\":[{}],\"programs\":[{}],\"source\":{{{}}},"
-      "\"moves\":{{\"kind\":[{}],\"file\":[{}],\"line\":[{}],\"program\":[{}]}}"
-      ","
-      "\"points\":[{}],\"segmentMove\":[{}]}}",
-      jsonString(title), names, programs, source, joined(kinds_),
-      joined(files_), joined(lines_), joined(programs_), joined(points_),
-      joined(segmentMove_));
+      "{{\"title\":{},\"lathe\":{},\"files\":[{}],\"programs\":[{}],"
+      "\"source\":{{{}}},"
+      "\"moves\":{{\"kind\":[{}],\"file\":[{}],\"line\":[{}],\"program\":[{}],"
+      "\"end\":[{}]}},"
+      "\"points\":[{}],\"segmentMove\":[{}],\"programmed\":[{}]}}",
+      jsonString(title), lathe_, names, programs, source, joined(kinds_),
+      joined(files_), joined(lines_), joined(programs_), joined(ends_),
+      joined(points_), joined(segmentMove_),
+      compensated_ ? joined(programmed_) : "");
   // No "</script>" inside the script element: JSON may write "<\/".
   for (std::size_t at = data.find("</"); at != std::string::npos;
        at = data.find("</", at + 3)) {

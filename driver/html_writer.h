@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,11 +27,20 @@ private:
   int indexOf(std::vector<std::string>& names, const char* name);
   void segmentTo(const std::array<double, 3>& from,
                  const std::array<double, 3>& to);
+  void addProgrammed(const mbrt_motion& m);
 
   std::vector<float> points_; // x, y, z of both ends of each segment
   std::vector<std::uint32_t> segmentMove_;
   std::vector<int> kinds_, files_, lines_, programs_; // per move
+  // Each move's end as the control shows it (a lathe's X a diameter).
+  std::vector<float> ends_;
   std::vector<std::string> fileNames_, programNames_;
+  // The programmed contour where cutter compensation moves the tool off it:
+  // segments as points_, drawn beside the tool centre's path.
+  std::vector<float> programmed_;
+  bool compensated_ = false;
+  std::optional<std::array<double, 3>> programmedPen_; // its last point
+  bool lathe_ = false;
 };
 
 } // namespace mbc::driver

@@ -166,9 +166,7 @@ void SvgWriter::include(Point p) {
 std::size_t SvgWriter::add(const mbrt_motion& motion) {
   const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
   if (view_ == SvgView::Auto) {
-    const bool lathe = axisNamed(m, 'Y') < 0 && axisNamed(m, 'X') >= 0 &&
-                       axisNamed(m, 'Z') >= 0;
-    view_ = lathe ? SvgView::ZX : SvgView::XY;
+    view_ = isLatheMotion(m) ? SvgView::ZX : SvgView::XY;
   }
   const std::size_t before = rapids_.size() + programmed_.size() +
                              feeds_.size() * sizeof(Piece) +

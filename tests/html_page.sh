@@ -35,10 +35,36 @@ grep -q 'data-ready="1"' dom.html || { grep -i console console.txt; fail "the pa
 grep -q 'data-segments="20" data-moves="20"' dom.html ||
   fail "segments: $(grep -o 'data-segments="[0-9]*" data-moves="[0-9]*"' dom.html)"
 
-# The move under the pointer names its source line: the rapid of move 2.
+# The move under the pointer names its source line and end point: the
+# rapid of move 2 (the first hole of 30 radius about X50 Y30, at 18 degrees).
 browse 'demo.html#probe=2' --dump-dom 2>/dev/null | tr '\n' ' ' >probe.html
-grep -q 'data-probe="[^"]*bolt_circle.nc:18  O9001  rapid 2 G00 X#28 Y#29"' probe.html ||
+grep -q 'data-probe="[^"]*bolt_circle.nc:18  O9001  rapid 2  X78.978 Y47.765 Z10. G00 X#28 Y#29"' probe.html ||
   fail "the tip at move 2: $(grep -o 'data-probe="[^"]*"' probe.html)"
+
+# View presets as backplotters have them, axis labels, the iso view first:
+# where the machine's axes point on the screen.
+grep -q 'data-view="iso" data-screen="X:right Y:up Z:up"' dom.html &&
+  grep -q 'data-labels="X,Y,Z"' dom.html || fail "the iso view: $(grep -o '<html[^>]*>' dom.html)"
+for view in "top X:right Y:up Z:depth" "front X:right Y:depth Z:up" "side X:depth Y:right Z:up"; do
+  browse "demo.html#view=${view%% *}" --dump-dom 2>/dev/null >view.html
+  grep -q "data-view=\"${view%% *}\" data-screen=\"${view#* }\"" view.html ||
+    fail "view ${view%% *}: $(grep -o '<html[^>]*>' view.html)"
+done
+
+# A lathe: Z to the right and X up, its X and Z labelled, the tip's X a
+# diameter as the control shows it (the drawing's is a radius); under tool
+# nose radius compensation the programmed contour beside the tip's path.
+printf '{"series": "T", "tool_offsets": {"1": {"r_geometry": 0.8, "tip": 3}}}\n' >lathe.json
+printf '%%\nO2(SHAFT)\nG18G21G40G99\nT0101S500M3\nG00X40.Z2.\nG42G01Z0F.2\nX50.Z-5.\nZ-20.\nG40G00X80.Z50.\nM30\n%%\n' >shaft.nc
+"$mbc" run shaft.nc --machine lathe.json --html lathe.html 2>/dev/null || fail "mbc run --html on a lathe"
+browse 'lathe.html#probe=1' --dump-dom 2>/dev/null | tr '\n' ' ' >lathe-dom.html
+grep -q 'data-view="zx" data-screen="X:up Z:right"' lathe-dom.html &&
+  grep -q 'data-labels="X,Z"' lathe-dom.html ||
+  fail "the lathe's view: $(grep -o '<html[^>]*>' lathe-dom.html)"
+grep -q 'data-probe="[^"]*shaft.nc:5  O0002  rapid 1  X40. Z2. G00X40.Z2."' lathe-dom.html ||
+  fail "the lathe's tip: $(grep -o 'data-probe="[^"]*"' lathe-dom.html)"
+grep -q 'data-programmed="[1-9]' lathe-dom.html && ! grep -q 'data-programmed="[1-9]' dom.html ||
+  fail "the programmed contour: $(grep -o 'data-programmed="[0-9]*"' lathe-dom.html dom.html)"
 
 # Arcs are segments of their own: a full circle and a quarter.
 printf '%%\nO1(ARCS)\nG90G54G17G0X10.Y0Z5.\nG1Z-1.F100\nG3I-10.\nG2X0Y10.R10.\nG0Z5.\nM30\n%%\n' >arcs.nc
