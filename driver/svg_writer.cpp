@@ -183,11 +183,7 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
   include(end);
   std::size_t grown = 0;
   if (m.kind == MBRT_MOTION_RAPID) {
-    if (!rapidPen_.open || rapidPen_.x != start.u || rapidPen_.y != start.v) {
-      rapids_ += fmt::format("M{} {}", number(start.u), number(-start.v));
-    }
-    rapids_ += fmt::format("L{} {}", number(end.u), number(-end.v));
-    rapidPen_ = {true, end.u, end.v};
+    drawRapid(start, end);
   } else {
     if (motion.diameter_mask != 0) {
       depthAxis_ = 'X';
@@ -212,6 +208,28 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
   }
   return rapids_.size() + programmed_.size() + feeds_.size() * sizeof(Piece) +
          holes_.size() * sizeof(Hole) + grown - before;
+}
+
+/// A rapid is a subpath of its own from its lower end, so that its dashes
+/// start there: a retract and the plunge back share their dashes, and a
+/// rapid drawn before is not drawn again.
+void SvgWriter::drawRapid(Point start, Point end) {
+  const auto key = [](Point p) {
+    return std::pair{std::llround(p.u * 1e4), std::llround(p.v * 1e4)};
+  };
+  auto a = key(start), b = key(end);
+  if (a == b) {
+    return; // along the view's depth: nothing to draw
+  }
+  if (b < a) {
+    std::swap(a, b);
+    std::swap(start, end);
+  }
+  if (!rapidSegments_.insert({a.first, a.second, b.first, b.second}).second) {
+    return;
+  }
+  rapids_ += fmt::format("M{} {}L{} {}", number(start.u), number(-start.v),
+                         number(end.u), number(-end.v));
 }
 
 void SvgWriter::drawArc(const mbrt_motion& m, std::string& d) {
@@ -268,9 +286,21 @@ void SvgWriter::recordHole(const mbrt_motion& m) {
   const double hy = y >= 0 ? m.end[y] : 0.0;
   const std::pair<long long, long long> key{std::llround(hx * 1e3),
                                             std::llround(hy * 1e3)};
-  const auto [it, added] =
-      holes_.try_emplace(key, Hole{project(m.end, m), m.start[z], m.end[z]});
+  const auto [it, added] = holes_.try_emplace(
+      key, Hole{project(m.end, m), m.start[z], m.end[z], {}});
   Hole& hole = it->second;
+  // The pecks of one block (G73, G83) go on down one hole: its depth is
+  // the deepest. Another block's plunge (a drill after the spot drill) is
+  // a depth of its own.
+  HoleBlock block{key, m.line, m.program != nullptr ? m.program : ""};
+  if (!added && lastHoleBlock_ == block) {
+    hole.bottoms.back() = std::min(hole.bottoms.back(), m.end[z]);
+  } else if (std::none_of(
+                 hole.bottoms.begin(), hole.bottoms.end(),
+                 [&](double b) { return std::fabs(b - m.end[z]) < 1e-9; })) {
+    hole.bottoms.push_back(m.end[z]);
+  }
+  lastHoleBlock_ = std::move(block);
   if (!added) {
     hole.top = std::max(hole.top, m.start[z]);
     if (m.end[z] < hole.bottom) {
@@ -503,17 +533,27 @@ std::string SvgWriter::document(const std::string& title) const {
       }
     }
   }
-  // The holes, with their depth while there are few enough to read.
+  // The holes, with their depths while there are few enough to read; a
+  // label that would run past the right edge goes left of its hole.
   const bool labelled = holes_.size() <= 60;
+  const double right = left + viewWidth;
   for (const auto& [key, hole] : holes_) {
     svg += "<g class=\"hole\">" + holeMark(hole.at.u, -hole.at.v, font, pixel);
     if (labelled) {
+      std::string text;
+      for (const double b : hole.bottoms) {
+        text += (text.empty() ? "Z" : " / Z") + number(b);
+      }
+      // Sans-serif digits are about 0.6 of the font size wide.
+      const double textSize = 0.7 * font;
+      const double wide = 0.6 * textSize * static_cast<double>(text.size());
+      const bool leftOf = hole.at.u + 0.6 * font + wide > right;
       svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" "
-                         "font-family=\"sans-serif\" fill=\"#a02020\">Z{}"
+                         "font-family=\"sans-serif\" fill=\"#a02020\"{}>{}"
                          "</text>",
-                         number(hole.at.u + 0.6 * font),
-                         number(-hole.at.v - 0.6 * font), number(0.7 * font),
-                         number(hole.bottom));
+                         number(hole.at.u + (leftOf ? -0.6 : 0.6) * font),
+                         number(-hole.at.v - 0.6 * font), number(textSize),
+                         leftOf ? " text-anchor=\"end\"" : "", text);
     }
     svg += "</g>\n";
   }

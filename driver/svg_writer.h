@@ -10,6 +10,8 @@
 
 #include <array>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -50,14 +52,18 @@ private:
     std::string d;
   };
 
-  /// Where the tool went down along Z alone: its top and its bottom.
+  /// Where the tool went down along Z alone: its top and its bottom, and
+  /// every bottom the plunges there reached (a spot drill's and a drill's),
+  /// in the order of the run.
   struct Hole {
     Point at; // the bottom, in the view
     double top = 0.0;
     double bottom = 0.0;
+    std::vector<double> bottoms;
   };
 
   Point project(const double* point, const mbrt_motion& m) const;
+  void drawRapid(Point start, Point end);
   void drawArc(const mbrt_motion& m, std::string& d);
   void drawProgrammed(const mbrt_motion& m, int x, int y);
   void recordHole(const mbrt_motion& m);
@@ -76,9 +82,22 @@ private:
 
   SvgView view_;
   std::string rapids_; // path data, SVG coordinates (y down)
-  Pen rapidPen_;
+  // The rapids drawn, by their ends in 0.0001 units: a retrace is drawn
+  // once, or its dashes would fill each other's gaps and look like a feed.
+  std::set<std::array<long long, 4>> rapidSegments_;
   std::vector<Piece> feeds_;
   std::map<std::pair<long long, long long>, Hole> holes_; // by X, Y in um
+
+  /// The hole and the block of the last plunge.
+  struct HoleBlock {
+    std::pair<long long, long long> key;
+    int line = 0;
+    std::string program;
+
+    bool operator==(const HoleBlock&) const = default;
+  };
+
+  std::optional<HoleBlock> lastHoleBlock_;
   std::string programmed_; // the programmed points, drawn if compensated_
   Pen programmedPen_;
   bool compensated_ = false; // a move's end is not its programmed point

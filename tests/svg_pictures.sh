@@ -29,6 +29,19 @@ for view in xy iso; do
     { cp "$view.png" "$view.diff.png" /tmp/ 2>/dev/null; fail "$view: the picture differs (/tmp/$view.png, /tmp/$view.diff.png)"; }
 done
 grep -q '>Y</text>' xy.svg && ! grep -q '>Z</text>' xy.svg || fail "xy: the axes X and Y only"
+
+# A spot drill and a drill in the same holes: both depths at each. The
+# hole at the right edge has its label on its left, inside the picture.
+# Every retract runs back down its plunge: drawn once, or the dashes of
+# the two fill each other's gaps and the rapid looks like a feed.
+printf '%%\nO3(SPOT AND DRILL)\nG90G17G80G00X0Y0Z10.\nG99G81X10.Y10.Z-1.R2.F100.\nX80.\nG80G00Z10.\nG81X10.Y10.Z-10.R2.F80.\nX80.\nG80G00Z10.\nM30\n%%\n' >spot.nc
+"$mbc" run spot.nc --svg spot.svg 2>/dev/null || fail "mbc run --svg spot.nc"
+[ "$(grep -c '>Z-1 / Z-10</text>' spot.svg)" = 2 ] || fail "spot: two depths at each hole: $(grep -o '>Z[^<]*<' spot.svg)"
+grep -q 'text-anchor="end">Z-1 / Z-10<' spot.svg || fail "spot: the label at the right edge"
+"$mbc" run spot.nc --svg spot-xz.svg --view xz 2>/dev/null || fail "mbc run --svg --view xz spot.nc"
+rapids=$(grep -o 'class="rapid"[^>]*d="[^"]*"' spot-xz.svg | grep -o 'M[^M]*')
+[ "$(printf '%s\n' "$rapids" | sort | uniq -d)" = "" ] || fail "spot: a rapid drawn twice"
+[ "$(printf '%s\n' "$rapids" | grep -c 'M10 -2L10 -10$')" = 1 ] || fail "spot: the retract over X10: $rapids"
 grep -q '>Z</text>' iso.svg || fail "iso: the Z axis"
 "$mbc" run "$source_dir/examples/bolt_circle.nc" --view xz 2>err.txt && fail "--view without --svg"
 grep -q "mbc: error: --view chooses the view of --svg, which is not given" err.txt || { cat err.txt; fail "--view alone"; }

@@ -44,7 +44,8 @@ TEST(SvgWriter, RapidsDashedFeedsSolidTitled) {
                                    move(MBRT_MOTION_RAPID, 0, 5, 0, 0)});
   EXPECT_NE(svg.find("class=\"rapid\""), std::string::npos);
   EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
-  EXPECT_NE(svg.find("d=\"M0 0L10 0M0 -5L0 0\""), std::string::npos) << svg;
+  // Each rapid from its lower end: its dashes start there.
+  EXPECT_NE(svg.find("d=\"M0 0L10 0M0 0L0 -5\""), std::string::npos) << svg;
   EXPECT_NE(svg.find("d=\"M10 0L10 -5M10 -5L0 -5\""), std::string::npos) << svg;
   EXPECT_NE(svg.find(">O1 \"test\" &lt;1&gt;</text>"), std::string::npos)
       << svg;
@@ -105,6 +106,14 @@ TEST(SvgWriter, PlungesAreHolesWithTheirDepth) {
   EXPECT_EQ(holes, 2u) << svg;
   EXPECT_NE(svg.find(">Z-8</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">Z-4</text>"), std::string::npos) << svg;
+  // The pecks of one block are one depth; another block's plunge into the
+  // same hole (the drill after the spot drill) is a depth of its own.
+  mbrt_motion drill = other;
+  drill.end[2] = -12;
+  drill.line = 7;
+  const std::string both = drawing({down, peck, other, drill});
+  EXPECT_NE(both.find(">Z-8</text>"), std::string::npos) << both;
+  EXPECT_NE(both.find(">Z-4 / Z-12</text>"), std::string::npos) << both;
 }
 
 TEST(SvgWriter, FeedsColouredByDepthAndTheAxesOfTheView) {
