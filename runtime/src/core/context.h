@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "last_words.h"
 #include "lathe_shape.h"
 #include "profile.h"
 
@@ -362,7 +363,7 @@ struct MachineSnapshot {
   AxisCounts program{};
   ModalState modal;
   Frames frames;
-  std::array<double, 30> lastWords{};
+  std::array<double, mbc::rt::kLastWordCount> lastWords{};
   double clockMs = 0.0;
   double clockHours = 0.0;
   RunStats stats;
@@ -449,7 +450,7 @@ struct mbrt_ctx {
   mbc::rt::ModalState modal;
   // #4101..#4130 by index: the last value of each address (not in
   // ModalState, which a block with G codes copies).
-  std::array<double, 30> lastWords{};
+  std::array<double, mbc::rt::kLastWordCount> lastWords{};
   mbc::rt::Frames frames;
   mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
   mbc::rt::AxisCounts program{}; // the same point as the program sees it

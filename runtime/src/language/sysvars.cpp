@@ -370,8 +370,9 @@ mbrt_status readModalGroup(mbrt_ctx& ctx, int index, Num* out) {
 
 /// #4101..#4130: the last value of each address; #4115 is the program.
 mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
-  constexpr int kProgramIndex = 14;
-  *out = index == kProgramIndex ? ctx.programNumber() : ctx.lastWords[index];
+  *out = index == static_cast<int>(LastWord::Program)
+             ? ctx.programNumber()
+             : ctx.lastWords[static_cast<std::size_t>(index)];
   return 0;
 }
 

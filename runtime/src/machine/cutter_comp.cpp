@@ -364,7 +364,7 @@ mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
     move.side = ctx.modal.compensation == 41 ? 1 : -1;
     return 0;
   }
-  const double d = ctx.lastWords[kLastDIndex];
+  const double d = ctx.lastWords[lastWordSlot(LastWord::D)];
   if (d < 0.0 || d > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
                  fmt::format("D{} (the machine has {})", d,
@@ -405,7 +405,8 @@ void followTip(const mbrt_ctx& ctx, HeldMove& move);
 /// G41 or G42 with an offset number other than D0.
 bool offsetOn(const mbrt_ctx& ctx) {
   return ctx.modal.compensation != 40 &&
-         (ctx.profile.lathe() || ctx.lastWords[kLastDIndex] != 0.0);
+         (ctx.profile.lathe() ||
+          ctx.lastWords[lastWordSlot(LastWord::D)] != 0.0);
 }
 
 void followTip(const mbrt_ctx& ctx, HeldMove& move) {

@@ -30,8 +30,6 @@ const mbrt_word* FrameWords::word(char letter) const {
 
 namespace {
 
-constexpr int kLastHIndex = 10; // #4111
-
 bool has(const MotionWords& axes, int axis) {
   return (axes.axisMask >> axis & 1) != 0;
 }
@@ -202,7 +200,7 @@ mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
         ctx, AlarmId::ImproperNcAddress,
         fmt::format("G{} offsets {}, which this machine lacks", mode, letter));
   }
-  const double h = ctx.lastWords[kLastHIndex];
+  const double h = ctx.lastWords[lastWordSlot(LastWord::H)];
   if (h < 0.0 || h > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
                  fmt::format("H{} (the machine has {})", h,

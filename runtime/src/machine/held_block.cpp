@@ -11,8 +11,8 @@ namespace mbc::rt {
 BlockState captureBlock(const mbrt_ctx& ctx) {
   return {ctx.modal,
           placementOf(ctx),
-          ctx.lastWords[kLastDIndex],
-          ctx.lastWords[kLastSIndex],
+          ctx.lastWords[lastWordSlot(LastWord::D)],
+          ctx.lastWords[lastWordSlot(LastWord::S)],
           ctx.compensation.codeInBlock,
           ctx.feedInBlock};
 }
@@ -22,8 +22,8 @@ InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
       line_(ctx.block.line) {
   const BlockState& block = held.block;
   ctx.modal = block.modal;
-  ctx.lastWords[kLastDIndex] = block.dWord;
-  ctx.lastWords[kLastSIndex] = block.sWord;
+  ctx.lastWords[lastWordSlot(LastWord::D)] = block.dWord;
+  ctx.lastWords[lastWordSlot(LastWord::S)] = block.sWord;
   ctx.compensation.codeInBlock = block.codeInBlock;
   ctx.feedInBlock = block.feedInBlock;
   ctx.block.file = held.file;
@@ -34,8 +34,8 @@ InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
 InHeldBlock::~InHeldBlock() {
   placed_.reset();
   ctx_.modal = own_.modal;
-  ctx_.lastWords[kLastDIndex] = own_.dWord;
-  ctx_.lastWords[kLastSIndex] = own_.sWord;
+  ctx_.lastWords[lastWordSlot(LastWord::D)] = own_.dWord;
+  ctx_.lastWords[lastWordSlot(LastWord::S)] = own_.sWord;
   ctx_.compensation.codeInBlock = own_.codeInBlock;
   ctx_.feedInBlock = own_.feedInBlock;
   ctx_.block.file = file_;

@@ -42,7 +42,7 @@ MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
                     ctx.programName(),
                     ctx.modal.feed,
                     ctx.modal.feedMode,
-                    ctx.lastWords[kLastSIndex],
+                    ctx.lastWords[lastWordSlot(LastWord::S)],
                     cycle != 0 ? cycle : ctx.cycleLabel};
   origin.surfaceSpeed = ctx.modal.surfaceSpeed;
   origin.spindleLimit = ctx.spindleLimit;
@@ -534,7 +534,7 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
   }
   const bool perRevolution =
       ctx.modal.feedMode == 95 || cutsThread(ctx.modal.motion);
-  if (perRevolution && ctx.lastWords[kLastSIndex] <= 0.0) {
+  if (perRevolution && ctx.lastWords[lastWordSlot(LastWord::S)] <= 0.0) {
     return raise(
         ctx, AlarmId::FeedZero,
         cutsThread(ctx.modal.motion) ? "threading needs a spindle speed (S)"

@@ -30,9 +30,6 @@ struct MotionWords {
   std::optional<double> angle;
 };
 
-inline constexpr int kLastDIndex = 6;  // #4107: the last D
-inline constexpr int kLastSIndex = 18; // #4119: the last S
-
 /// The block data a move carries, taken now: the current block, feed and
 /// spindle speed; `cycle` names the canned cycle it belongs to.
 MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle = 0);

@@ -34,34 +34,6 @@ namespace {
 constexpr int kMaxMCodes = 3;
 constexpr double kMaxCodeValue = 99'999'999.0; // M, S, T...: 8 digits
 
-/// #4101 + index for the addresses the control remembers.
-int lastWordIndex(char letter) {
-  switch (letter) {
-    case 'B':
-      return 1;
-    case 'D':
-      return 6;
-    case 'E':
-      return 7;
-    case 'F':
-      return 8;
-    case 'H':
-      return 10;
-    case 'M':
-      return 12;
-    case 'N':
-      return 13;
-    case 'S':
-      return 18;
-    case 'T':
-      return 19;
-    default:
-      return -1;
-  }
-}
-
-constexpr int kLastPIndex = 29; // #4130: G54.1 P
-
 /// Which G codes a block holds: most hold none, or only codes that set one
 /// modal field (setsOneField).
 enum class GCodes { None, OneField, Other };
@@ -488,7 +460,7 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   ctx.modal = next;
   if (block.selectsG541) {
-    ctx.lastWords[kLastPIndex] = block.hasP ? block.p : 1.0;
+    ctx.lastWords[lastWordSlot(LastWord::G541P)] = block.hasP ? block.p : 1.0;
   }
   if (newOrigin) {
     resyncProgram(ctx); // the machine stays, the program position moves
@@ -642,7 +614,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
   if (letter == 'F') {
     ctx.feedInBlock = true;
     ctx.modal.feed = numeric(word.value);
-    ctx.lastWords[lastWordIndex('F')] = ctx.modal.feed;
+    ctx.lastWords[lastWordSlot(LastWord::F)] = ctx.modal.feed;
     return 0;
   }
   if (letter == 'Q') {
@@ -1169,7 +1141,7 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   if (count > 0 && words[0].letter == 'N') {
     sequence = mbc::numeric(words[0].value);
     ctx->blockSequence = *sequence;
-    ctx->lastWords[lastWordIndex('N')] = *sequence;
+    ctx->lastWords[lastWordSlot(LastWord::N)] = *sequence;
     ++words;
     --count;
   }
