@@ -9,6 +9,7 @@
 
 #include "driver/output_files.h"
 #include <mbc/engine.h>
+#include <mbc/limits.h>
 #include <mbc/read_file.h>
 #include <mbc/value.h>
 
@@ -28,9 +29,6 @@ namespace mbc::driver {
 namespace {
 
 using nlohmann::json;
-
-constexpr int kFirstNonvolatile = 500;
-constexpr int kLastNonvolatile = 999;
 
 /// What the file says of the machine it is for, and what this one is.
 struct Machine {
