@@ -16,6 +16,11 @@ inline bool isWholeNumberAddress(char letter) {
   return std::string_view("DHMST").find(letter) != std::string_view::npos;
 }
 
+/// I J K and R: an arc's centre or radius (a length in input units).
+constexpr bool isArcCenterLetter(char letter) {
+  return letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
+}
+
 /// ,C ,R and ,A (chamfer, corner R, angle of a line) travel from the parser
 /// to the runtime as the lower-case letter: every table of the addresses
 /// A..Z passes them by, and no upper-case letter is mistaken for them.

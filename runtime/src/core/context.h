@@ -696,10 +696,6 @@ mbrt_status raiseOutputLimit(mbrt_ctx& ctx);
 /// 1000 for "O1000", 0 for "<NAME>", "MAIN" and anything else.
 int parseProgramNumber(const char* name);
 
-/// Counts per unit of the address that sets local `local` (1-33) from a
-/// literal without decimal point: ADP gives the literal back with it.
-double argumentScale(const mbrt_ctx& ctx, int local);
-
 /// PS0074 for a program number the machine cannot have (more than four
 /// digits on a profile with program_number_digits 4).
 mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number);

@@ -1,6 +1,8 @@
 // Calls: macro calls with their argument mapping (specification I and II,
 // spec §5.2-5.4; a G66.1 block's words), subprogram calls, returns and the
 // nesting limits (PS0122, PS0077).
+#include "calls.h"
+
 #include <mbc/addresses.h>
 
 #include <fmt/format.h>
@@ -177,17 +179,6 @@ double argumentScale(const mbrt_ctx& ctx, int local) {
     }
   }
   return ctx.inputScale(); // the I, J, K of specification II
-}
-
-mbrt_status checkProgramNumber(mbrt_ctx& ctx, double number) {
-  if (ctx.profile.programNumberDigits == 4 &&
-      number > kMaxProgramNumber4Digits && !isNamedProgramNumber(number)) {
-    return raise(ctx, AlarmId::IllegalProgramNumber,
-                 fmt::format("O{}: this machine has program numbers O1 to "
-                             "O{} (profile program_number_digits)",
-                             number, kMaxProgramNumber4Digits));
-  }
-  return 0;
 }
 
 } // namespace mbc::rt

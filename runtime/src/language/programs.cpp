@@ -84,21 +84,3 @@ mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
   ctx->block.line = 0;
   return st;
 }
-
-namespace mbc::rt {
-
-int parseProgramNumber(const char* name) {
-  if (name == nullptr || name[0] != 'O' || name[1] == '\0') {
-    return 0;
-  }
-  int number = 0;
-  for (const char* digit = name + 1; *digit != '\0'; ++digit) {
-    if (*digit < '0' || *digit > '9' || number > kMaxProgramNumber) {
-      return 0;
-    }
-    number = number * 10 + (*digit - '0');
-  }
-  return number;
-}
-
-} // namespace mbc::rt

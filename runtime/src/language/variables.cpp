@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "calls.h"
 #include "context.h"
 #include "sysvars.h"
 

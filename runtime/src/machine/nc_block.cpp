@@ -84,28 +84,7 @@ bool isCycleCode(int tenths) {
          (tenths >= 810 && tenths <= 890 && tenths % 10 == 0);
 }
 
-bool isArcCenterLetter(char letter) {
-  return letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
-}
-
 } // namespace
-
-double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
-  if (letter == 'G') {
-    return 10.0;
-  }
-  if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
-    return ctx.axisScale(axis) / ctx.axisCountsPerIncrement(axis);
-  }
-  if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F' ||
-      letter == commaWordLetter('C') || letter == commaWordLetter('R')) {
-    return ctx.inputScale();
-  }
-  if (letter == commaWordLetter('A')) {
-    return kCountsPerDegree; // 0.001 degree in inches too
-  }
-  return 1.0;
-}
 
 namespace {
 
