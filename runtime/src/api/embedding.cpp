@@ -1,6 +1,7 @@
-// What embedders get beyond the plain sinks: an alarm callback and a
-// toolpath buffer in the context, for callers that would rather read the
-// motions of a run than receive them one by one.
+// What embedders get beyond the plain sinks: a run of a compiled program
+// as the main program, an alarm callback and a toolpath buffer in the
+// context, for callers that would rather read the motions of a run than
+// receive them one by one.
 #include "context.h"
 
 namespace {
@@ -30,4 +31,24 @@ void mbrt_buffer_motions(mbrt_ctx* ctx, int on) {
 const mbrt_motion* mbrt_buffered_motions(const mbrt_ctx* ctx, size_t* count) {
   *count = ctx->motionBuffer.size();
   return ctx->motionBuffer.data();
+}
+
+/// A run of a compiled program as the main program: mbrt_start, the
+/// arguments, the body.
+mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
+                          const mbrt_word* args, size_t count) {
+  if (mbc::rt::refuseInSink(*ctx, "mbrt_run_main")) {
+    return static_cast<mbrt_status>(mbc::AlarmId::CalledFromSink);
+  }
+  mbrt_start(ctx, program->name);
+  if (count > 0) {
+    if (const mbrt_status st = mbrt_set_main_args(ctx, args, count)) {
+      return st;
+    }
+  }
+  const mbrt_status st = mbrt_run_body(ctx, program);
+  // The run is over: what the host calls next is no block's doing.
+  ctx->block.file = nullptr;
+  ctx->block.line = 0;
+  return st;
 }

@@ -1,5 +1,6 @@
 // Compiled programs: finding one in a table, running a call of one (G65 or
-// M98, with L repetitions) and running one as the main program. The IR
+// M98, with L repetitions) and the body of a main program (the API's
+// mbrt_run_main starts a run around it). The IR
 // evaluator runs its calls through mbrt_run_call too, so every engine
 // repeats, nests and returns alike.
 #include <mbc/addresses.h>
@@ -65,22 +66,4 @@ mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program) {
   mbrt_flow leave{};
   const mbrt_status st = program->body(ctx, nullptr, &leave);
   return st > 0 ? st : 0;
-}
-
-mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
-                          const mbrt_word* args, size_t count) {
-  if (mbc::rt::refuseInSink(*ctx, "mbrt_run_main")) {
-    return static_cast<mbrt_status>(mbc::AlarmId::CalledFromSink);
-  }
-  mbrt_start(ctx, program->name);
-  if (count > 0) {
-    if (const mbrt_status st = mbrt_set_main_args(ctx, args, count)) {
-      return st;
-    }
-  }
-  const mbrt_status st = mbrt_run_body(ctx, program);
-  // The run is over: what the host calls next is no block's doing.
-  ctx->block.file = nullptr;
-  ctx->block.line = 0;
-  return st;
 }
