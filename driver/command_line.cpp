@@ -193,16 +193,17 @@ void addPassOptions(CLI::App& cmd, Reader& r) {
 }
 
 void addEngineOptions(CLI::App& cmd, Reader& r) {
-  addValueOption(cmd, "--engine", "jit|interp|ir",
+  addValueOption(cmd, "--engine", engineList("|", "|"),
                  "what runs the program: native code (default), the "
                  "interpreter of the source or the IR evaluator",
                  r.error,
                  [&r](const std::string& v) -> std::string {
-                   if (v != "jit" && v != "interp" && v != "ir") {
-                     return fmt::format(
-                         "unknown engine '{}' (jit, interp or ir)", v);
+                   const std::optional<EngineKind> engine = engineNamed(v);
+                   if (!engine) {
+                     return fmt::format("unknown engine '{}' ({})", v,
+                                        engineList(", ", " or "));
                    }
-                   r.o.engine = v;
+                   r.o.engine = *engine;
                    return "";
                  })
       ->group("Run");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "driver/compile_unit.h"
+#include "driver/engine_kind.h"
 #include "driver/run_options.h"
 
 #include <optional>
@@ -16,7 +17,7 @@ struct Options {
   std::string command; // run, check, emit-ir, compile, build
   std::vector<std::string> files;
   RunOptions run;
-  std::string engine = "jit";
+  EngineKind engine = EngineKind::Jit;
   int optLevel = 2;        // -O0 ... -O3: the LLVM pipeline
   int sizeLevel = 0;       // -Os 1, -Oz 2: smaller code
   bool debugInfo = false;  // -g

@@ -89,14 +89,14 @@ int PreparedProgram::build(const Options& o, PhaseTimes& phases,
   }
   auto start = std::chrono::steady_clock::now();
   std::optional<JitCompiler> jit;
-  if (engine_ == "jit") {
+  if (engine_ == EngineKind::Jit) {
     jit.emplace(o, cu_.sources);
     if ((code_ = jit->cached())) {
       phases.emplace_back("cache", millisecondsSince(start));
       return 0;
     }
   }
-  if (engine_ != "interp") {
+  if (engine_ != EngineKind::Interp) {
     if (!buildModule(cu_, o, module_) || !optimizeModule(module_, o)) {
       error = "internal error: the IR of the input could not be built";
       return 4;
@@ -120,7 +120,7 @@ mbrt_status PreparedProgram::run(mbrt_ctx* ctx) const {
   if (code_) {
     return mbrt_run_body(ctx, &code_->programs()->programs[mainIndex_]);
   }
-  if (engine_ == "ir") {
+  if (engine_ == EngineKind::Ir) {
     return ir::evaluate(module_, mainIndex_, ctx);
   }
   Interpreter interp(cu_.unit, cu_.sources, ctx);

@@ -48,7 +48,7 @@ public:
   }
 
 private:
-  std::string engine_;
+  EngineKind engine_ = EngineKind::Jit;
   CompiledUnit cu_;
   ir::Module module_;
   std::unique_ptr<NativeCode> code_;

@@ -45,7 +45,7 @@ CompiledProgram::compile(const CompileRequest& request, py::list& diagnostics,
                          std::string& message) {
   auto compiled = std::make_unique<CompiledProgram>();
   driver::Options o;
-  o.engine = "jit";
+  o.engine = driver::EngineKind::Jit;
   o.optLevel = request.opt;
   o.noCache = !request.cache;
   o.strict = request.strict;

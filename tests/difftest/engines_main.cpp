@@ -24,12 +24,15 @@ using namespace mbc::driver;
 namespace {
 
 struct Config {
-  const char* engine;
+  EngineKind engine;
   int optLevel;
 };
 
-constexpr Config kConfigs[] = {
-    {"interp", 2}, {"ir", 2}, {"jit", 0}, {"jit", 1}, {"jit", 2}};
+constexpr Config kConfigs[] = {{EngineKind::Interp, 2},
+                               {EngineKind::Ir, 2},
+                               {EngineKind::Jit, 0},
+                               {EngineKind::Jit, 1},
+                               {EngineKind::Jit, 2}};
 
 // One run as `mbc run` makes it, standard error going to `dir/stderr`.
 int runConfig(const Config& c, const std::string& file, RunOptions run,

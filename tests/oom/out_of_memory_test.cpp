@@ -245,7 +245,7 @@ std::vector<std::string> outputsOf(const driver::Options& o) {
 
 driver::Options runOptions(const std::filesystem::path& dir,
                            const std::string& program,
-                           const std::string& engine) {
+                           driver::EngineKind engine) {
   driver::Options o;
   o.command = "run";
   o.files = {(dir / program).string()};
@@ -271,7 +271,8 @@ bool endedForLackOfMemory(int status) {
 // failed allocation for the end of the file, and the program, cut short,
 // got syntax errors.
 TEST_F(OutOfMemory, InterpreterRunSaysOutOfMemory) {
-  const driver::Options o = runOptions(dir_, "oom.nc", "interp");
+  const driver::Options o =
+      runOptions(dir_, "oom.nc", driver::EngineKind::Interp);
   const std::vector<std::string> reference = outputsOf(o);
   failEachSample([&] { driver::runCommand(o); },
                  [&] { runAsMbc(o, reference); }, 1000, endedForLackOfMemory);
@@ -292,7 +293,8 @@ END1
 M30
 %
 )";
-  const driver::Options o = runOptions(dir_, "long.nc", "jit");
+  const driver::Options o =
+      runOptions(dir_, "long.nc", driver::EngineKind::Jit);
   const std::vector<std::string> reference = outputsOf(o);
   failEachSample([&] { driver::runCommand(o); },
                  [&] { runAsMbc(o, reference); }, 80, endedForLackOfMemory);
