@@ -243,8 +243,9 @@ TEST(RuntimeNcBlock, CallsThatMustNotBeIgnored) {
 // G51's P); a value from a variable is rounded. K is among those addresses:
 // a cycle's K2. repeats twice.
 TEST(RuntimeNcBlock, NumbersAndCountsTakeNoDecimalPoint) {
-  for (const char* block : {"M98 P2. L2", "M98 P2 L2.", "G10 L2. P1 X0",
-                            "G10 L2 P1. X0", "G54.1 P1.", "M99 P10."}) {
+  for (const char* block :
+       {"M98 P2. L2", "M98 P2 L2.", "G10 L2. P1 X0", "G10 L2 P1. X0",
+        "G54.1 P1.", "M99 P10.", "G66 P9010. A1.", "G66.1 P9010 L2."}) {
     Machine m;
     EXPECT_EQ(m.block(block), status(AlarmId::IllegalDecimalPoint)) << block;
   }

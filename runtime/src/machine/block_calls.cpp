@@ -9,8 +9,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace mbc::rt {
+
+std::string pointedWordText(char letter, double value) {
+  return fmt::format("{}{}{}", letter, value,
+                     value == std::trunc(value) ? "." : "");
+}
 
 namespace {
 
@@ -140,6 +146,16 @@ mbrt_status setModalCall(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   if (p == nullptr) {
     return raise(ctx, AlarmId::ProgramNotFound,
                  fmt::format("{} without P", name));
+  }
+  // P is the program and L the count, as in G65: no decimal point.
+  for (const char letter : {'P', 'L'}) {
+    const mbrt_word* word = findWord(words, count, letter);
+    if (word != nullptr && word->kind == MBRT_WORD_DEC_LITERAL) {
+      return raise(ctx, AlarmId::IllegalDecimalPoint,
+                   fmt::format("{} {}: {} takes a whole number", name,
+                               pointedWordText(letter, numeric(word->value)),
+                               letter));
+    }
   }
   std::vector<mbrt_word> args = argumentsOf(words, count, &g, true);
   if (std::any_of(args.begin(), args.end(),

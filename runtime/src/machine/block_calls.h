@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 
 #include "context.h"
 
@@ -19,6 +20,10 @@ struct BlockCodes {
   std::optional<double> s;
   std::optional<double> b; // when B is no axis
 };
+
+/// "M3." or "P2.5": a word written with a decimal point, as written (the
+/// PS0007 of a number or count that takes none).
+std::string pointedWordText(char letter, double value);
 
 /// Before a block executes: G66, G66.1 and G67 themselves, and the calls
 /// that take the block's place (G66.1 in force, custom G and M code macros).

@@ -73,12 +73,6 @@ struct Block {
   bool flattened = false; // in the flattened program already
 };
 
-/// "M3." or "P2.5": a word written with a decimal point, as written.
-std::string pointedWordText(char letter, double value) {
-  return fmt::format("{}{}{}", letter, value,
-                     value == std::trunc(value) ? "." : "");
-}
-
 bool isCycleCode(int tenths) {
   return tenths == 730 || tenths == 740 || tenths == 760 ||
          (tenths >= 810 && tenths <= 890 && tenths % 10 == 0);
