@@ -58,11 +58,14 @@ printf '{"series": "T", "tool_offsets": {"1": {"r_geometry": 0.8, "tip": 3}}}\n'
 printf '%%\nO2(SHAFT)\nG18G21G40G99\nT0101S500M3\nG00X40.Z2.\nG42G01Z0F.2\nX50.Z-5.\nZ-20.\nG40G00X80.Z50.\nM30\n%%\n' >shaft.nc
 "$mbc" run shaft.nc --machine lathe.json --html lathe.html 2>/dev/null || fail "mbc run --html on a lathe"
 browse 'lathe.html#probe=1' --dump-dom 2>/dev/null | tr '\n' ' ' >lathe-dom.html
-grep -q 'data-view="zx" data-screen="X:up Z:right"' lathe-dom.html &&
+grep -q 'data-view="front" data-screen="X:up Z:right"' lathe-dom.html &&
   grep -q 'data-labels="X,Z"' lathe-dom.html ||
   fail "the lathe's view: $(grep -o '<html[^>]*>' lathe-dom.html)"
 grep -q 'data-probe="[^"]*shaft.nc:5  O0002  rapid 1  X40. Z2. G00X40.Z2."' lathe-dom.html ||
   fail "the lathe's tip: $(grep -o 'data-probe="[^"]*"' lathe-dom.html)"
+browse 'lathe.html#view=top' --dump-dom 2>/dev/null >lathe-top.html
+grep -q 'data-view="top" data-screen="X:depth Z:right"' lathe-top.html ||
+  fail "the lathe's top view: $(grep -o '<html[^>]*>' lathe-top.html)"
 grep -q 'data-programmed="[1-9]' lathe-dom.html && ! grep -q 'data-programmed="[1-9]' dom.html ||
   fail "the programmed contour: $(grep -o 'data-programmed="[0-9]*"' lathe-dom.html dom.html)"
 

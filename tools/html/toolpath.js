@@ -129,9 +129,11 @@ const camera = new THREE.PerspectiveCamera(40, 1, radius / 100, radius * 100);
 const controls = new OrbitControls(camera, renderer.domElement);
 
 // The views a backplot offers: where the camera looks from, in machine
-// directions (the scene's up stays the machine's Z, a lathe's X).
+// directions (the scene's up stays the machine's Z, a lathe's X). A
+// lathe's front is its ZX view, Z to the right and X up; its top looks
+// down X, its side along the spindle.
 const views = lathe
-  ? { zx: [0, 1, 0], iso: [1, 1, 1] }
+  ? { front: [0, 1, 0], top: [1, 0.001, 0], side: [0, 0, 1], iso: [1, 1, 1] }
   : { top: [0, -0.001, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [1.6, -2.2, 1.4] };
 const screenOf = { X: [1, 0, 0], Y: [0, 1, 0], Z: [0, 0, 1] };
 // Where the machine's axes point on the screen (a test reads it).
@@ -276,7 +278,7 @@ renderer.domElement.addEventListener("pointermove", (event) => {
 document.getElementById("title").textContent = data.title;
 resize();
 const wanted = /view=(\w+)/.exec(location.hash);
-setView(wanted && views[wanted[1]] ? wanted[1] : lathe ? "zx" : "iso");
+setView(wanted && views[wanted[1]] ? wanted[1] : lathe ? "front" : "iso");
 showUpTo(moveCount);
 // "#probe=N" (a test's): what the tip says at the middle of move N's
 // first segment on the screen.
