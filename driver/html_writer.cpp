@@ -23,6 +23,13 @@ enum MoveKind { kRapid = 0, kFeed = 1, kArc = 2 };
 // Segments of an arc: about one per 7.5 degrees, at least 4.
 constexpr double kSegmentsPerTurn = 48.0;
 
+/// How many segments draw an arc (the tool's, or the programmed one).
+int arcPieces(const Arc& arc) {
+  return std::max(4, static_cast<int>(std::ceil(std::fabs(arc.sweep) /
+                                                (2.0 * std::numbers::pi) *
+                                                kSegmentsPerTurn)));
+}
+
 std::array<double, 3> xyz(const double* point, const mbrt_motion& m) {
   std::array<double, 3> out{};
   const char letters[] = {'X', 'Y', 'Z'};
@@ -109,10 +116,7 @@ void HtmlWriter::addProgrammed(const mbrt_motion& m) {
                                         m.programmed[a.q] - m.center[1]) /
                                  a.radius
                            : 1.0;
-  const int pieces = std::max(
-      4,
-      static_cast<int>(std::ceil(std::fabs(a.sweep) / (2.0 * std::numbers::pi) *
-                                 kSegmentsPerTurn)));
+  const int pieces = arcPieces(a);
   std::array<double, 3> last = from;
   for (int i = 1; i <= pieces; ++i) {
     auto point = arcPoint(m, a, static_cast<double>(i) / pieces);
@@ -140,10 +144,7 @@ std::size_t HtmlWriter::add(const mbrt_motion& motion) {
   std::array<double, 3> from = xyz(m.start, m);
   if (arc) {
     const Arc a = arcOf(m);
-    const int pieces =
-        std::max(4, static_cast<int>(std::ceil(std::fabs(a.sweep) /
-                                               (2.0 * std::numbers::pi) *
-                                               kSegmentsPerTurn)));
+    const int pieces = arcPieces(a);
     for (int i = 1; i <= pieces; ++i) {
       const auto point = arcPoint(m, a, static_cast<double>(i) / pieces);
       const std::array<double, 3> to = xyz(point.data(), m);
