@@ -5,10 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
+#include <tuple>
+#include <vector>
 
 #include "g_codes.h"
-#include "lathe_codes.h"
 #include "lathe_offset_vars.h"
 #include "parameters.h"
 #include "sysvars.h"
@@ -36,25 +38,39 @@ json functions() {
   return rows;
 }
 
+/// The G code list of a mill (by number) or a lathe (in system A's order,
+/// the codes system A lacks last), as the manuals print them.
+json gCodes(bool lathe) {
+  using mbc::rt::GCodeRow;
+  using mbc::rt::kNo;
+  std::vector<GCodeRow> rows;
+  for (const GCodeRow& row : mbc::rt::gCodeRows()) {
+    if (lathe ? row.a != kNo || row.b != kNo || row.c != kNo : row.m != kNo) {
+      rows.push_back(row);
+    }
+  }
+  std::sort(rows.begin(), rows.end(),
+            [&](const GCodeRow& x, const GCodeRow& y) {
+              return lathe ? std::tuple(x.a == kNo, x.a, x.b) <
+                                 std::tuple(y.a == kNo, y.a, y.b)
+                           : x.m < y.m;
+            });
+  return each(rows, [&](const GCodeRow& row) -> json {
+    json out = lathe ? json{{"a", row.a}, {"b", row.b}, {"c", row.c}}
+                     : json{{"tenths", row.m}};
+    out["modelled"] = row.modelled;
+    out["name"] = row.name;
+    return out;
+  });
+}
+
 } // namespace
 
 int main() {
   using namespace mbc::rt;
   const json tables{
-      {"gcodes_m", each(millGCodeList(),
-                        [](const GCodeInfo& code) -> json {
-                          return {{"tenths", code.tenths},
-                                  {"modelled", code.modelled},
-                                  {"name", code.name}};
-                        })},
-      {"gcodes_t", each(latheGCodeList(),
-                        [](const LatheGCode& code) -> json {
-                          return {{"a", code.a},
-                                  {"b", code.b},
-                                  {"c", code.c},
-                                  {"modelled", code.modelled},
-                                  {"name", code.name}};
-                        })},
+      {"gcodes_m", gCodes(false)},
+      {"gcodes_t", gCodes(true)},
       {"system_variables",
        each(systemVariableRows(),
             [](const SystemVariableRow& row) -> json {

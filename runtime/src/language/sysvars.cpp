@@ -19,8 +19,8 @@
 #include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frames.h"
+#include "g_code_handlers.h"
 #include "held_block.h"
-#include "lathe_codes.h"
 #include "lathe_offset_vars.h"
 #include "machine_unit.h"
 #include "motion.h"
@@ -311,56 +311,6 @@ mbrt_status writeBits(mbrt_ctx& ctx, int, Num value, const char*) {
 mbrt_status readMainProgram(mbrt_ctx& ctx, int, Num* out) {
   *out = ctx.mainProgramNumber;
   return 0;
-}
-
-/// #4001+g: the G code of modal group g (spec §6.4); groups mbc keeps in one
-/// fixed state read their only code.
-double modalGroupValue(const mbrt_ctx& ctx, int group) {
-  if (ctx.profile.lathe()) {
-    return latheModalGroupValue(ctx, group);
-  }
-  const ModalState& modal = ctx.modal;
-  switch (group) {
-    case 1:
-      return modal.motion;
-    case 2:
-      return modal.plane;
-    case 3:
-      return modal.incremental ? 91 : 90;
-    case 5:
-      return modal.feedMode;
-    case 6:
-      return modal.inch ? 20 : 21;
-    case 7:
-      return modal.compensation;
-    case 8:
-      return ctx.frames.lengthMode;
-    case 9:
-      if (modal.seriesFifteenTap != 0) {
-        return modal.seriesFifteenTap / 10.0; // 84.2, 84.3
-      }
-      return modal.cycle != 0 ? modal.cycle : 80;
-    case 10:
-      return modal.returnToR ? 99 : 98;
-    case 11:
-      return ctx.frames.scaling ? 51 : 50;
-    case 12:
-      return modalCallGroupValue(ctx);
-    case 13:
-      return 97;
-    case 14:
-      return modal.workOffset < kFirstG541Offset ? 53 + modal.workOffset : 54.1;
-    case 15:
-      return modal.cuttingMode;
-    case 16:
-      return ctx.frames.rotation ? 68 : 69;
-    case 17:
-      return modal.polar ? 16 : 15;
-    case 18:
-      return ctx.frames.mirrorMask != 0 ? 51.1 : 50.1;
-    default:
-      return 0;
-  }
 }
 
 mbrt_status readModalGroup(mbrt_ctx& ctx, int index, Num* out) {

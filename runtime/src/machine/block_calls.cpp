@@ -320,11 +320,4 @@ mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
   return 0;
 }
 
-double modalCallGroupValue(const mbrt_ctx& ctx) {
-  if (ctx.modalCalls.empty()) {
-    return 67;
-  }
-  return ctx.modalCalls.back().everyBlock ? 66.1 : 66;
-}
-
 } // namespace mbc::rt

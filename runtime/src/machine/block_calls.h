@@ -37,7 +37,4 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
 mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                            mbrt_flow* flow);
 
-/// #4012: 66, 66.1 or 67.
-double modalCallGroupValue(const mbrt_ctx& ctx);
-
 } // namespace mbc::rt

@@ -14,7 +14,7 @@
 #include "flat_gcode.h"
 #include "frame_codes.h"
 #include "frames.h"
-#include "g_codes.h"
+#include "g_code_handlers.h"
 #include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_corners.h"
@@ -33,54 +33,6 @@ namespace {
 
 constexpr int kMaxMCodes = 3;
 constexpr double kMaxCodeValue = 99'999'999.0; // M, S, T...: 8 digits
-
-/// Which G codes a block holds: most hold none, or only codes that set one
-/// modal field (setsOneField).
-enum class GCodes { None, OneField, Other };
-
-constexpr int kMaxOneFieldCodes = 4;
-
-/// The words of one block after conversion.
-struct Block {
-  GCodes gCodes = GCodes::None;
-  // Under GCodes::OneField, the codes in tenths, in block order.
-  std::array<int, kMaxOneFieldCodes> oneField{};
-  int oneFieldCount = 0;
-  MotionWords motion;
-  bool hasP = false;
-  // The first of P and L written with a decimal point (PS0007 but in
-  // G51), or nullptr.
-  const mbrt_word* countWithPoint = nullptr;
-  bool hasL = false;
-  double p = 0.0;
-  double l = 0.0;
-  std::optional<Counts> q;
-  std::optional<double> qWritten; // Q as written: G05.1's switch
-  // Q as a lathe cycle reads it: increments unless written with a decimal
-  // point (a value from a variable counts increments, as P does).
-  std::optional<Counts> incrementQ;
-  std::optional<double> k; // the repeat count of a canned cycle
-  // G04 (40), G28 (280), G29, G30, G31, G39 (390), G53 (530) and the
-  // look-ahead switches G05, G05.1, G05.4, G08.
-  int nonModal = 0;
-  bool selectsG541 = false;  // #4130 becomes its P
-  double dwellSeconds = 0.0; // G04 X
-  // A and D of a lathe's G76 in the Series 10/11 format.
-  std::optional<double> tenFormatA;
-  std::optional<double> tenFormatD;
-  BlockCodes codes;
-  FrameWords frames;
-  bool flattened = false; // in the flattened program already
-};
-
-bool isCycleCode(int tenths) {
-  return tenths == 730 || tenths == 740 || tenths == 760 ||
-         (tenths >= 810 && tenths <= 890 && tenths % 10 == 0);
-}
-
-} // namespace
-
-namespace {
 
 /// An axis or arc word in counts, `perIncrement` of them to each of the
 /// `increments` per unit: a literal without decimal point already is
@@ -103,344 +55,6 @@ mbrt_status toCounts(mbrt_ctx& ctx, const mbrt_word& word, double increments,
 /// A radius, arc centre or depth word (R, I, J, K, Q) in counts.
 mbrt_status toLengthCounts(mbrt_ctx& ctx, const mbrt_word& word, Counts* out) {
   return toCounts(ctx, word, ctx.inputScale(), ctx.countsPerIncrement(), out);
-}
-
-mbrt_status selectG541(mbrt_ctx& ctx, ModalState& next, Block& block) {
-  const double p = block.hasP ? block.p : 1.0;
-  if (p < 1.0 || p > kG541Count) {
-    return raise(ctx, AlarmId::ImproperNcAddress,
-                 fmt::format("G54.1 P{}: P must be 1 to {}", p, kG541Count));
-  }
-  next.workOffset = kFirstG541Offset + static_cast<int>(p) - 1;
-  block.selectsG541 = true;
-  return 0;
-}
-
-double gTenths(const mbrt_word& word) {
-  return roundHalfAway(numeric(word.value) * 10.0);
-}
-
-/// The code a G word executes as (lathe_codes.h): on a mill its own tenths;
-/// on a lathe -1 when its G code system has no such code.
-double executedCode(const mbrt_ctx& ctx, const mbrt_word& word) {
-  const double tenths = gTenths(word);
-  if (!ctx.profile.lathe() || !(tenths >= 0.0 && tenths <= 9999.0)) {
-    return tenths;
-  }
-  return latheCode(ctx.profile.gCodeSystem, static_cast<int>(tenths));
-}
-
-/// The G codes that set one field of the modal state and cannot alarm, and
-/// G00-G03 also cancel a canned cycle. G66 and G67 are not among them: they
-/// take the block in callInsteadOfBlock.
-bool setsOneField(double tenths) {
-  if (!(tenths >= 0.0 && tenths <= 9999.0)) {
-    return false; // applyGCodes raises the alarm
-  }
-  switch (static_cast<int>(tenths)) {
-    case 0: // G00-G03
-    case 10:
-    case 20:
-    case 30:
-    case 170: // G17-G19
-    case 180:
-    case 190:
-    case 900: // G90, G91
-    case 910:
-    case 930: // G93-G95
-    case 940:
-    case 950:
-    case 610: // G61-G64
-    case 620:
-    case 630:
-    case 640:
-    case 980: // G98, G99
-    case 990:
-    case 150: // G15, G16
-    case 160:
-    case 400: // G40-G42
-    case 410:
-    case 420:
-    case 970: // G97: the one state mbc keeps
-      return true;
-    default:
-      return false;
-  }
-}
-
-/// One G code into `next`; codes of one group overwrite each other, so the
-/// last one of a block wins.
-mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, int tenths,
-                       Block& block) {
-  if (ctx.profile.lathe()) {
-    switch (tenths) {
-      case kLatheThreading:
-      case kLatheVariableLead:
-        next.motion =
-            tenths == kLatheThreading ? kThreadingMotion : kVariableLeadMotion;
-        next.cycle = 0; // group 01, as G00-G03
-        return 0;
-      case kLatheTurningCycle:
-      case kLatheThreadCycle:
-      case kLatheFacingCycle:
-        // A new cycle starts from no end point; its own repeats keep it.
-        if (next.motion != tenths / 10 - kLatheOwnCode / 10) {
-          next.singleCycle = SingleCycleData{};
-        }
-        next.motion = tenths / 10 - kLatheOwnCode / 10;
-        next.cycle = 0;
-        return 0;
-      case kLatheOwnCode + 830: // drilling cycles (canned_cycles.h)
-      case kLatheOwnCode + 840:
-      case kLatheOwnCode + 850:
-      case kLatheOwnCode + 870:
-      case kLatheOwnCode + 880:
-      case kLatheOwnCode + 890:
-        next.cycle = (tenths - kLatheOwnCode) / 10;
-        next.seriesFifteenTap = 0;
-        return 0;
-      case kLatheOwnCode + 690: // G69: no mirror image is ever on
-        return 0;
-      case kLatheG10: // the block's words are offset data
-        block.frames.code = kLatheG10;
-        return 0;
-      case kLatheOwnCode + 700: // G70-G73 (lathe_shapes.h)
-      case kLatheOwnCode + 710:
-      case kLatheOwnCode + 720:
-      case kLatheOwnCode + 730:
-      case kLatheOwnCode + 740: // G74-G76 (lathe_repetitive.h)
-      case kLatheOwnCode + 750:
-      case kLatheOwnCode + 760:
-        block.nonModal = tenths;
-        return 0;
-      case 960:
-        next.surfaceSpeed = true;
-        return 0;
-      default:
-        break;
-    }
-  }
-  switch (tenths) {
-    case 0:
-    case 10:
-    case 20:
-    case 30:
-      next.motion = tenths / 10;
-      next.cycle = 0; // a group 01 code cancels the canned cycle
-      return 0;
-    case 40:  // G04 dwell
-    case 280: // G28 reference position return
-    case 290: // G29 return from the reference position
-    case 300: // G30 2nd to 4th reference position return
-    case 310: // G31 skip
-    case 390: // G39 corner circular interpolation
-    case 530: // G53 machine coordinates
-      block.nonModal = tenths;
-      return 0;
-    case 430:
-    case 440:
-    case 490:
-      block.frames.lengthCode = tenths / 10;
-      return 0;
-    case 500:
-      block.frames.cancelScaling = true;
-      return 0;
-    case 690:
-      block.frames.cancelRotation = true;
-      return 0;
-    case 800:
-      next.cycle = 0;
-      return 0;
-    case 170:
-    case 180:
-    case 190:
-      if (tenths / 10 != ctx.modal.plane && compensating(ctx)) {
-        return raise(ctx, AlarmId::PlaneChangeInCrc,
-                     fmt::format("G{} in cutter compensation mode (G{}); "
-                                 "cancel with G40 first",
-                                 tenths / 10, ctx.modal.compensation));
-      }
-      next.plane = tenths / 10;
-      return 0;
-    case 200:
-    case 210:
-      next.inch = tenths == 200;
-      return 0;
-    case 900:
-    case 910:
-      next.incremental = tenths == 910;
-      return 0;
-    case 980:
-    case 990:
-      next.returnToR = tenths == 990;
-      return 0;
-    case 110: // G11 outside the parameter input mode: nothing to end
-      return 0;
-    case 540:
-      if (block.hasP) { // G54 Pn is another spelling of G54.1 Pn
-        return selectG541(ctx, next, block);
-      }
-      [[fallthrough]];
-    case 550:
-    case 560:
-    case 570:
-    case 580:
-    case 590:
-      next.workOffset = kFirstG54Offset + (tenths - 540) / 10;
-      return 0;
-    case 541:
-      return selectG541(ctx, next, block);
-    case 90: // G09 exact stop: the move ends at rest on the same path
-      return 0;
-    case 610: // exact stop mode
-    case 620: // automatic corner override
-    case 630: // tapping mode
-    case 640: // cutting mode
-      next.cuttingMode = tenths / 10;
-      return 0;
-    case 930: // inverse time feed
-    case 940: // feed per minute
-    case 950: // feed per revolution
-      next.feedMode = tenths / 10;
-      return 0;
-    case 150: // G15, G16: polar coordinate command (polar.h)
-    case 160:
-      next.polar = tenths == 160;
-      return 0;
-    case 400: // G40, G41, G42: cutter compensation (cutter_comp.h)
-    case 410:
-    case 420:
-      next.compensation = tenths / 10;
-      ctx.compensation.codeInBlock = true;
-      return 0;
-    case 970: // G97 (a mill keeps it, its one state)
-      next.surfaceSpeed = false;
-      return 0;
-    // The one state mbc keeps this group in (#4001.. reads it).
-    case 670: // G67
-      return 0;
-    default:
-      break;
-  }
-  if (isCycleCode(tenths)) {
-    next.cycle = tenths / 10;
-    next.seriesFifteenTap = 0;
-    return 0;
-  }
-  if (tenths == 842 || tenths == 843) {
-    // The Series 15 format of rigid tapping: G84 and G74 with M29 given.
-    next.cycle = tenths == 842 ? 84 : 74;
-    next.seriesFifteenTap = tenths;
-    next.rigidTapping = true;
-    return 0;
-  }
-  if (isLookAheadCode(tenths)) {
-    block.nonModal = tenths;
-    return 0;
-  }
-  if (isFrameCode(tenths)) {
-    if (block.frames.code != 0) {
-      return raise(ctx, AlarmId::ImproperGCode,
-                   fmt::format("{} and {} in one block",
-                               gCodeText(block.frames.code),
-                               gCodeText(tenths)));
-    }
-    block.frames.code = tenths;
-    return 0;
-  }
-  if (const GCodeInfo* code = findGCode(tenths)) {
-    return raise(ctx, AlarmId::Unsupported,
-                 fmt::format("{} ({})", gCodeText(tenths), code->name));
-  }
-  return raise(ctx, AlarmId::ImproperGCode, gCodeText(tenths));
-}
-
-/// A lathe's G10 writes tool offsets (P X Z R Q), except G10 L2 and L20,
-/// which write work offsets as on a mill.
-bool writesWorkOffset(const mbrt_word* words, size_t count) {
-  double l = 0.0;
-  for (size_t i = 0; i < count; ++i) {
-    if (words[i].letter == 'L') {
-      l = roundHalfAway(numeric(words[i].value));
-    }
-  }
-  return l == 2.0 || l == 20.0;
-}
-
-/// G codes take effect before every other word of the block: G20/G21 change
-/// how the block's own coordinates read.
-mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                        Block& block) {
-  if (block.gCodes == GCodes::None) {
-    return 0; // most blocks: no modal state to copy
-  }
-  // G00-G03 also cancel a canned cycle: that takes the copy below.
-  const auto cancelsCycle = [&] {
-    return ctx.modal.cycle != 0 &&
-           std::any_of(block.oneField.begin(),
-                       block.oneField.begin() + block.oneFieldCount,
-                       [](int tenths) { return tenths <= 30; });
-  };
-  if (block.gCodes == GCodes::OneField && !cancelsCycle()) {
-    // Nothing to commit or drop: no copy of the modal state.
-    for (int i = 0; i < block.oneFieldCount; ++i) {
-      const int tenths = block.oneField[i];
-      if (tenths <= 30) {
-        ctx.modal.motion = tenths / 10; // most of them, cheaper than the call
-      } else if (const mbrt_status status =
-                     applyGCode(ctx, ctx.modal, tenths, block)) {
-        return status; // G17-G19 under compensation
-      }
-    }
-    return 0;
-  }
-  ModalState next = ctx.modal;
-  for (size_t i = 0; i < count; ++i) {
-    if (words[i].letter != 'G') {
-      continue;
-    }
-    const double written = gTenths(words[i]);
-    const double tenths = executedCode(ctx, words[i]);
-    if (tenths < 0.0 || written > 9999.0) {
-      return raise(ctx, AlarmId::ImproperGCode,
-                   fmt::format("G{}", numeric(words[i].value)));
-    }
-    if (const char* name = ctx.profile.lathe()
-                               ? unmodelledLatheCode(static_cast<int>(tenths))
-                               : nullptr) {
-      return raise(
-          ctx, AlarmId::Unsupported,
-          fmt::format("{} ({})", gCodeText(static_cast<int>(written)), name));
-    }
-    if (const mbrt_status status =
-            applyGCode(ctx, next, static_cast<int>(tenths), block)) {
-      return status;
-    }
-  }
-  if (block.frames.code == kLatheG10 && writesWorkOffset(words, count)) {
-    block.frames.code = 100;
-  }
-  const bool inch = next.inch;
-  next.inch = ctx.modal.inch;
-  const int cycle = next.cycle;
-  next.cycle = ctx.modal.cycle;
-  const bool newOrigin = next.workOffset != ctx.modal.workOffset;
-  if (newOrigin || inch != ctx.modal.inch) {
-    if (const mbrt_status status = refuseUnderHeldMoves(
-            ctx, newOrigin ? "a work coordinate system change" : "G20/G21")) {
-      return status;
-    }
-  }
-  ctx.modal = next;
-  if (block.selectsG541) {
-    ctx.lastWords[lastWordSlot(LastWord::G541P)] = block.hasP ? block.p : 1.0;
-  }
-  if (newOrigin) {
-    resyncProgram(ctx); // the machine stays, the program position moves
-  }
-  switchUnits(ctx, inch);
-  changeCycle(ctx, cycle);
-  return 0;
 }
 
 mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
@@ -483,7 +97,7 @@ mbrt_status readCommaWord(mbrt_ctx& ctx, const mbrt_word& word,
 /// (G76's tool angle) and D (G71-G76: depth, divisions or relief, least
 /// increments or times without a decimal point) of one-block cycles.
 std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
-                                           Block& block) {
+                                           NcBlock& block) {
   const char letter = word.letter;
   const double value = numeric(word.value);
   if (block.nonModal == 40 && (letter == 'X' || letter == 'U')) {
@@ -525,7 +139,7 @@ std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
   return std::nullopt;
 }
 
-mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
+mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, NcBlock& block) {
   const char letter = word.letter;
   if (block.nonModal != 0) { // most blocks have no one-shot code
     if (const std::optional<mbrt_status> status =
@@ -659,7 +273,8 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, Block& block) {
 /// count; with 4 digits a P of more than four digits and no L carries the
 /// repeat count in its high digits (spec §5.8). Q starts the program at that
 /// sequence number; without P it is one of the running program.
-mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
+mbrt_status callSubprogram(mbrt_ctx& ctx, const NcBlock& block,
+                           mbrt_flow* flow) {
   if (!block.hasP && !block.qWritten) {
     return raise(ctx, AlarmId::ProgramNotFound, "M98 without P or Q");
   }
@@ -698,7 +313,7 @@ mbrt_status callSubprogram(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
   return 0;
 }
 
-mbrt_status decideFlow(mbrt_ctx& ctx, const Block& block, mbrt_flow* flow) {
+mbrt_status decideFlow(mbrt_ctx& ctx, const NcBlock& block, mbrt_flow* flow) {
   for (int i = 0; i < block.codes.mCount; ++i) {
     switch (block.codes.m[i]) {
       case 0:
@@ -750,7 +365,7 @@ mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
 /// crawl of a feed per minute. Until there is a lathe profile they stop the
 /// run. A G99 block with a mill's feed (F150.) is no lathe block. Only
 /// blocks with G codes can be these.
-mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
+mbrt_status refuseLatheForms(mbrt_ctx& ctx, const NcBlock& block,
                              const mbrt_word* words, size_t count) {
   if (block.frames.cancelScaling &&
       (block.motion.axisMask != 0 || block.codes.s)) {
@@ -778,7 +393,7 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const Block& block,
 
 /// What a block cannot do under cutter compensation: G31 (PS0035), and
 /// what mbc does not model yet (MBC0001).
-mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
+mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const NcBlock& block) {
   if (block.nonModal == 310) {
     return raise(ctx, AlarmId::SkipInCrc,
                  "G31 skip in cutter compensation mode (G41/G42)");
@@ -801,7 +416,7 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const Block& block) {
 
 /// What the block's axis words do: dwell, G28, G53, a canned cycle or a
 /// move in the modal motion mode.
-mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
+mbrt_status executeMotionWords(mbrt_ctx& ctx, NcBlock& block) {
   const MotionWords& motion = block.motion;
   // After a chamfer or corner R only a G01 may come: a cycle, dwell or
   // reference return would run before the alarm (lathe_corners.h).
@@ -910,7 +525,7 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, Block& block) {
 /// P, L, Q, H and what kind of G codes the block holds, before anything
 /// executes.
 void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-               Block& block) {
+               NcBlock& block) {
   for (size_t i = 0; i < count; ++i) {
     const char letter = words[i].letter;
     if (letter == 'P' || letter == 'L') {
@@ -929,14 +544,8 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
               : roundHalfAway(*block.qWritten) * ctx.countsPerIncrement());
     } else if (letter == 'H' && !ctx.profile.lathe()) {
       block.frames.hasH = true;
-    } else if (letter == 'G' && block.gCodes != GCodes::Other) {
-      const double tenths = executedCode(ctx, words[i]);
-      if (!setsOneField(tenths) || block.oneFieldCount == kMaxOneFieldCodes) {
-        block.gCodes = GCodes::Other;
-        continue;
-      }
-      block.gCodes = GCodes::OneField;
-      block.oneField[block.oneFieldCount++] = static_cast<int>(tenths);
+    } else if (letter == 'G') {
+      noteGCode(ctx, words[i], block);
     }
   }
 }
@@ -945,7 +554,7 @@ void scanWords(const mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 /// milliseconds: written with a decimal point they are PS0007, as the
 /// manual lists the addresses that take one (docs/language.md). G51's P is
 /// a magnification and takes one; a value from a variable is rounded.
-mbrt_status refuseCountWithPoint(mbrt_ctx& ctx, const Block& block) {
+mbrt_status refuseCountWithPoint(mbrt_ctx& ctx, const NcBlock& block) {
   const mbrt_word& word = *block.countWithPoint;
   if (word.letter == 'P' && block.frames.code == 510) {
     return 0;
@@ -963,7 +572,7 @@ mbrt_status refuseCountWithPoint(mbrt_ctx& ctx, const Block& block) {
 /// The executed block in the flattened program, its cycle words read as
 /// its cycle reads them.
 void flattenExecuted(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                     const mbrt_flow& flow, const Block& block) {
+                     const mbrt_flow& flow, const NcBlock& block) {
   const int code = block.nonModal;
   flattenBlock(ctx, words, count, flow,
                code >= kLatheOwnCode + 740   ? LatheCycleWords::Increments
@@ -972,7 +581,7 @@ void flattenExecuted(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 }
 
 mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
-                         mbrt_flow* flow, Block& block) {
+                         mbrt_flow* flow, NcBlock& block) {
   scanWords(ctx, words, count, block);
   ctx.feedInBlock = false;
   ctx.compensation.codeInBlock = false;
@@ -1079,7 +688,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
-  Block block;
+  NcBlock block;
   const std::uint64_t movesBefore = ctx.moves;
   const mbrt_status status = executeWords(ctx, words, count, flow, block);
   // A block that moved before its alarm (a G70 along a shape the tool
