@@ -3,6 +3,7 @@
 // NC blocks, alarms or output.
 #include "context.h"
 
+#include <mbc/compiled.h>
 #include <mbc/read_file.h>
 
 #include <fmt/format.h>
