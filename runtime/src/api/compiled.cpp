@@ -25,6 +25,14 @@ mbrt_status check(mbrt_ctx& ctx, AlarmId id) {
 
 } // namespace
 
+mbrt_level* mbrt_current_level(mbrt_ctx* ctx) {
+  return &ctx->locals();
+}
+
+mbrt_num* mbrt_common_base(mbrt_ctx* ctx) {
+  return ctx->commons.data();
+}
+
 mbrt_block_state* mbrt_block_state_of(mbrt_ctx* ctx) {
   return &ctx->block;
 }

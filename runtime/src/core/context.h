@@ -5,9 +5,8 @@
 
 #include <mbc/addresses.h>
 #include <mbc/alarm.h>
-#include <mbc/compiled.h>
+#include <mbc/direct_storage.h>
 #include <mbc/engine.h>
-#include <mbc/sysvars.h>
 #include <mbc/value.h>
 
 #include <algorithm>
@@ -31,7 +30,7 @@ namespace mbc::rt {
 
 inline constexpr int kCommonEnd = kLastNonvolatile + 1; // commons: #100..#999
 static_assert(sizeof(mbrt_level::value) / sizeof(mbrt_num) == kLocalCount,
-              "compiled.h's call level holds the locals of limits.h");
+              "direct_storage.h's call level holds the locals of limits.h");
 inline constexpr double kCountsPerDegree = 1000.0; // 0.001 deg (IS-B)
 inline constexpr std::uint64_t kDefaultMaxBlocks = 100'000'000;
 inline constexpr std::uint64_t kDefaultMaxOutput = std::uint64_t{1} << 30;

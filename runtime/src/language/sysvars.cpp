@@ -4,6 +4,7 @@
 #include "sysvars.h"
 
 #include <mbc/arith.h>
+#include <mbc/signals.h>
 #include <mbc/sysvars.h>
 
 #include <fmt/format.h>

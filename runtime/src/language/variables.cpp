@@ -2,7 +2,7 @@
 // locals and the common variables are handled here on the hot path; every
 // number from #1000 up goes to the system variable table (sysvars.cpp).
 #include <mbc/arith.h>
-#include <mbc/sysvars.h>
+#include <mbc/signals.h>
 
 #include <fmt/format.h>
 
@@ -121,14 +121,6 @@ mbrt_status mbrt_adp(mbrt_ctx* ctx, double number, mbrt_num* out) {
     return 0;
   }
   return mbrt_read_var(ctx, number, out);
-}
-
-mbrt_level* mbrt_current_level(mbrt_ctx* ctx) {
-  return &ctx->locals();
-}
-
-mbrt_num* mbrt_common_base(mbrt_ctx* ctx) {
-  return ctx->commons.data();
 }
 
 int mbrt_tool_offset_count(const mbrt_ctx* ctx) {

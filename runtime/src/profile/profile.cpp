@@ -4,7 +4,7 @@
 #include "profile.h"
 
 #include <mbc/calling_codes.h>
-#include <mbc/sysvars.h>
+#include <mbc/signals.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
