@@ -1,5 +1,7 @@
 // One run after another in a context: what a new run keeps of the machine
 // (as a control after RESET) and what the reset calls put back.
+#include "runtime/src/core/context.h"
+
 #include "runtime_test_support.h"
 
 namespace mbc::test {
@@ -61,6 +63,26 @@ TEST(RuntimeRuns, ANewRunCancelsWhatResetCancels) {
   ASSERT_EQ(m.motions().size(), holeMoves + 1);
   EXPECT_EQ(m.motions().back().kind, MBRT_MOTION_RAPID);
   EXPECT_EQ(m.motions().back().cycle, 0);
+}
+
+// The machine's state as a whole returns to power-on at mbrt_reset_state,
+// whatever a program left in it: no field of it can outlive the reset.
+// #3002 is machine data and stays.
+TEST(RuntimeRuns, ResetStateLeavesNoMachineStateBehind) {
+  Machine m(R"({"tool_offsets": {"1": {"h_geometry": 50}}})");
+  for (const char* block :
+       {"G20", "G92 X1. Y2. Z3.", "G52 X3.", "G68 X0 Y0 R30.", "G51 X0 Y0 P2.",
+        "G43 H1 Z1.", "G91 G28 Z0", "G90 G31 X5. F100", "G16",
+        "G99 G83 X1. Y1. Z-1. R1. Q0.5 F50", "G95 G64 G18", "M29 S500"}) {
+    ASSERT_EQ(m.block(block), 0) << block << "\n" << m.report();
+  }
+  ASSERT_EQ(m.write(3002, 5.0), 0);
+  mbrt_reset_state(m.ctx());
+  // A mill's power-on state is the state's defaults.
+  rt::MachineState expected;
+  expected.clockHours = 5.0;
+  EXPECT_TRUE(m.ctx()->machine == expected);
+  EXPECT_EQ(m.read(3002), 5.0);
 }
 
 TEST(RuntimeRuns, ResetStateHomesTheMachineAndKeepsItsData) {

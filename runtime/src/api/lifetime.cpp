@@ -1,8 +1,6 @@
 // Context lifetime, sinks and run bookkeeping (blocks, limits, finish,
 // statistics): the parts of the C ABI that are not about variables, calls,
 // NC blocks, alarms or output.
-#include "context.h"
-
 #include <mbc/compiled.h>
 #include <mbc/read_file.h>
 
@@ -15,6 +13,7 @@
 #include <ctime>
 #include <new>
 
+#include "context.h"
 #include "cutter_comp.h"
 #include "flat_gcode.h"
 #include "frames.h"
@@ -51,7 +50,7 @@ void loadProfile(mbrt_ctx& ctx) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     ctx.axisIndex[profile.axes[axis] - 'A'] = static_cast<std::int8_t>(axis);
   }
-  ctx.modal.inch = profile.inch;
+  ctx.machine.modal.inch = profile.inch;
   ctx.workOffsets.assign(kWorkOffsetCount, AxisCounts{});
   for (int index = 0; index < kWorkOffsetCount; ++index) {
     for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
@@ -77,39 +76,16 @@ void loadProfile(mbrt_ctx& ctx) {
   ctx.calls.reserve(profile.totalNesting + 2);
 }
 
-/// The power-on modal codes and no last words (#4101+); G20/G21 stays, as
-/// the control's clear state keeps it.
-void clearModalCodes(mbrt_ctx& ctx) {
-  const bool inch = ctx.modal.inch;
-  ctx.modal = ModalState{};
-  ctx.modal.inch = inch;
-  if (ctx.profile.lathe()) {
-    // A lathe starts in G18, and feeds per revolution unless 3402#4 FPM.
-    ctx.modal.plane = 18;
-    ctx.modal.feedMode = ctx.profile.parameterBit(3402, 4) ? 94 : 95;
-  }
-  ctx.lastWords = {};
-}
-
-/// The machine's power-on state: modal codes, the tool at the machine
-/// origin, no frames (G92, G52, mirror, scaling, rotation, tool length
-/// offset), the output signals off and the clock at 0. Machine data
+/// The machine's power-on state (MachineState::reset), no held moves, the
+/// output signals off and no lathe cycle settings or shapes. Machine data
 /// (commons, offsets, part counters, #3002, settings) stays.
 void resetMachineState(mbrt_ctx& ctx) {
-  ctx.machine = AxisCounts{};
-  ctx.frames = Frames{};
-  ctx.skipPosition = AxisCounts{};
-  ctx.intermediate = AxisCounts{};
-  ctx.intermediateMask = 0;
+  ctx.machine.reset(ctx.profile);
   ctx.compensation = CompensationState{};
   ctx.corner = CornerInsertion{};
+  ctx.lathe.reset();
   ctx.outputWords = {}; // the output signals #1100+ are off at power-on
-  ctx.spindleLimit = 0.0;
-  ctx.cycleSettings.clear();
-  ctx.shapes.clear();
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
-  clearModalCodes(ctx);
-  ctx.clockMs = 0.0;
 }
 
 /// A run begins as a control starts a program after RESET: a new call
@@ -129,18 +105,10 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.macroDepth = 0;
   ctx.subDepth = 0;
   ctx.levels.assign(1, LocalLevel{});
+  ctx.machine.startRun(ctx.profile);
   ctx.compensation = CompensationState{};
   ctx.corner = CornerInsertion{};
-  ctx.shapeReading.code = 0; // a shape cycle an interrupted run was reading
-  if (ctx.profile.clearOnReset) {
-    clearModalCodes(ctx);
-  } else {
-    ctx.modal.compensation = ModalState{}.compensation;
-    ctx.modal.cycle = 0;
-    ctx.modal.cycleData = CycleData{};
-    ctx.modal.rigidTapping = false;
-    ctx.modal.seriesFifteenTap = 0;
-  }
+  ctx.lathe.startRun();
   resyncProgram(ctx);
   ctx.singleBlockBits = 0.0;
   ctx.feedHoldBits = 0.0;
@@ -155,8 +123,6 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
                           ctx.mainProgramNumber > kMaxProgramNumber4Digits;
   setBlockLimit(ctx, ctx.illegalMainNumber ? 0 : ctx.maxBlocks);
   ctx.output = OutputBudget{0, ctx.output.limit};
-  ctx.moves = 0;
-  ctx.stats = RunStats{};
   ctx.optionalStops = 0;
   ctx.mainM99 = false;
   ctx.alarm = PendingAlarm{};
@@ -381,13 +347,13 @@ void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
 
 void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
   out->blocks = ctx->block.blocks;
-  out->moves = ctx->moves;
+  out->moves = ctx->machine.moves;
   out->optional_stops = ctx->optionalStops;
   out->main_m99 = ctx->mainM99;
   // Lengths are kept in mm, the box in counts: the summary speaks the
   // profile's unit.
   const double unit = ctx->profile.inch ? 25.4 : 1.0;
-  const RunStats& stats = ctx->stats;
+  const RunStats& stats = ctx->machine.stats;
   out->unit = ctx->profile.inch ? "inch" : "mm";
   out->feed_length = stats.feedLength / unit;
   out->rapid_length = stats.rapidLength / unit;

@@ -100,7 +100,7 @@ int mbrt_set_work_offset(mbrt_ctx* ctx, const char* set, int axis,
     return 0;
   }
   ctx->workOffsets[index][axis] = static_cast<Counts>(*counts);
-  if (index == ctx->modal.workOffset || index == kExternalOffset) {
+  if (index == ctx->machine.modal.workOffset || index == kExternalOffset) {
     resyncProgram(*ctx); // the machine stays
   }
   flattenWorkOffset(*ctx, index);

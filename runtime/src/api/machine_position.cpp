@@ -14,7 +14,7 @@ int mbrt_get_machine_position(const mbrt_ctx* ctx, int axis, double* value) {
   if (axis < 0 || axis >= ctx->axisCount()) {
     return 0;
   }
-  *value = countsToUnits(ctx->machine[axis],
+  *value = countsToUnits(ctx->machine.position[axis],
                          ctx->axisScale(axis, ctx->profile.inch));
   return 1;
 }
@@ -30,7 +30,7 @@ int mbrt_set_machine_position(mbrt_ctx* ctx, int axis, double value) {
   if (!fitsAddress(counts)) {
     return 0;
   }
-  ctx->machine[axis] = static_cast<Counts>(counts) * per;
+  ctx->machine.position[axis] = static_cast<Counts>(counts) * per;
   resyncProgram(*ctx); // the work coordinates follow the machine
   return 1;
 }

@@ -59,9 +59,9 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
   alarm.line = ctx.block.line;
   alarm.stack.clear();
-  const BlockPlace& cycle = ctx.cycleBlock;
+  const BlockPlace& cycle = ctx.lathe.cycleBlock;
   if (cycle.line != 0 && alarm.line != cycle.line) {
-    alarm.stack.push_back(CallSite{fmt::format("G{}", ctx.cycleLabel),
+    alarm.stack.push_back(CallSite{fmt::format("G{}", ctx.lathe.cycleLabel),
                                    cycle.file != nullptr ? cycle.file : "",
                                    cycle.line});
   }

@@ -85,6 +85,8 @@ struct CycleData {
   Counts z = 0; // the hole bottom
   Counts q = 0; // peck depth (G73, G83) or shift (G76, G87)
   double p = 0; // dwell at the bottom, ms
+
+  bool operator==(const CycleData&) const = default;
 };
 
 /// A lathe's single cycle (G90, G92, G94) keeps its end point and taper
@@ -95,6 +97,8 @@ struct SingleCycleData {
   Counts x = 0;
   Counts z = 0;
   Counts r = 0; // the taper: the cut's start less its end (radius or Z)
+
+  bool operator==(const SingleCycleData&) const = default;
 };
 
 /// Modal G codes (#4001..) and F.
@@ -116,6 +120,8 @@ struct ModalState {
   double feed = 0.0;                // modal F
   bool surfaceSpeed = false;        // G96: S is a surface speed (lathes)
   SingleCycleData singleCycle;
+
+  bool operator==(const ModalState&) const = default;
 };
 
 /// The coordinate frames between a program and the machine (frames.h):
@@ -154,6 +160,8 @@ struct Frames {
   AxisCounts syncedWork{};
 
   bool transforms() const { return mirrorMask != 0 || scaling || rotation; }
+
+  bool operator==(const Frames&) const = default;
 };
 
 /// Where a block's points go on the machine: its frames (G52, G92, mirror,
@@ -239,6 +247,8 @@ struct CountsBox {
   bool any = false;
   AxisValues low{};
   AxisValues high{};
+
+  bool operator==(const CountsBox&) const = default;
 };
 
 /// What the summary tells about the toolpath (mbrt_stats): lengths in mm,
@@ -248,6 +258,8 @@ struct RunStats {
   double rapidLength = 0.0;
   double seconds = 0.0;
   std::array<CountsBox, 2> box{};
+
+  bool operator==(const RunStats&) const = default;
 };
 
 /// A G66/G66.1 (or modal custom G code) in force: what it calls.
@@ -354,19 +366,60 @@ struct CornerInsertion {
   bool anyAngle() const { return blend != 0 || openEnd; }
 };
 
-/// The state a lathe's shape cycle puts back after running blocks or moves
-/// that must not count: the shape program's blocks while it is read, and
-/// the dry run that finds a shape's compensated path (lathe_shapes.cpp).
-struct MachineSnapshot {
-  AxisCounts machine{};
-  AxisCounts program{};
+/// Where the tool is and what its next move starts from: its positions,
+/// the modal state, the frames and the last words, and what the toolpath
+/// has done so far (clock, moves, statistics). A run that must not count
+/// (a lathe's shape program while it is read, the dry run that finds a
+/// shape's compensated path) copies it whole and puts it back.
+struct MachineState {
+  AxisCounts position{}; // the control point in machine coordinates
+  AxisCounts program{};  // the same point as the program sees it
   ModalState modal;
+  // #4101..#4130 by index: the last value of each address (not in
+  // ModalState, which a block with G codes copies).
+  std::array<double, kLastWordCount> lastWords{};
   Frames frames;
-  std::array<double, mbc::rt::kLastWordCount> lastWords{};
-  double clockMs = 0.0;
-  double clockHours = 0.0;
-  RunStats stats;
+  bool feedInBlock = false;  // the block has F (G93 needs it)
+  AxisCounts skipPosition{}; // #5061: where the last G31 ended
+  // The last G28/G30 intermediate point, for G29, and the axes it has (not
+  // in ModalState: that is copied for every block).
+  AxisCounts intermediate{};
+  std::uint32_t intermediateMask = 0;
+  // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
+  // G92 S in B and C), rpm; 0: none given.
+  double spindleLimit = 0.0;
+  // G34's K of the block running: the lead's change per revolution.
+  double leadChange = 0.0;
+  double clockMs = 0.0;    // #3001
+  double clockHours = 0.0; // #3002, machine data: a reset keeps it
   std::uint64_t moves = 0;
+  RunStats stats;
+
+  /// The machine's power-on state (mbrt_reset_state): the tool at the
+  /// machine origin, no frames (G92, G52, mirror, scaling, rotation, tool
+  /// length offset), the power-on modal codes and the clock at 0. G20/G21
+  /// stays until the units are switched back (switchUnits).
+  void reset(const Profile& profile);
+
+  /// A run begins as a control starts a program after RESET: the machine
+  /// stays where the last run left it (position, modal codes, frames, F),
+  /// except for what RESET cancels: canned cycles (G80) and cutter
+  /// compensation (G40). With parameter 3402#6 CLR the modal codes go back
+  /// to their power-on values (the control's clear state). Moves and
+  /// statistics count from 0.
+  void startRun(const Profile& profile);
+
+  /// The power-on modal codes and no last words (#4101+); G20/G21 stays,
+  /// as the control's clear state keeps it.
+  void clearModalCodes(const Profile& profile);
+
+  bool operator==(const MachineState&) const = default;
+};
+
+/// What a run that must not count puts back: the machine's state and
+/// where moves went.
+struct DryRunState {
+  MachineState machine;
   Sink<mbrt_motion_fn> motionSink;
 };
 
@@ -390,8 +443,29 @@ struct ShapeReading {
   Counts escape = 0;
   ShapePoint relief;
   int divisions = 1;
-  MachineSnapshot before; // the state the shape's blocks run over
-  BlockPlace cycleBlock;  // the block of the cycle
+  DryRunState before;    // the state the shape's blocks run over
+  BlockPlace cycleBlock; // the block of the cycle
+};
+
+/// A lathe's multiple repetitive cycles: their settings, the shape being
+/// read and those read so far.
+struct LatheState {
+  // The parameters of a lathe's multiple repetitive cycles (5130-5143)
+  // that a cycle's first block set, until power-off (lengths in mm).
+  std::map<int, double> cycleSettings;
+  ShapeReading shapeReading;
+  // The shapes read so far by (ns, nf), for G70.
+  std::map<std::pair<double, double>, Shape> shapes;
+  int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
+  // While a shape cycle runs the moves of its shape's blocks, each at its
+  // block's line, the cycle's block: an alarm names it as the caller.
+  BlockPlace cycleBlock;
+
+  /// Power-on: no settings and no shapes.
+  void reset();
+
+  /// A run begins reading no shape (an interrupted run may have been).
+  void startRun();
 };
 
 } // namespace mbc::rt
@@ -413,8 +487,6 @@ struct mbrt_ctx {
   std::vector<mbc::rt::ToolOffset> toolOffsets;
   std::vector<mbc::rt::LatheOffset> latheOffsets; // a lathe's instead
   std::vector<mbc::rt::AxisCounts> workOffsets;
-  double clockMs = 0.0;
-  double clockHours = 0.0;
   double singleBlockBits = 0.0; // #3003
   double feedHoldBits = 0.0;    // #3004
   double settingBits = 0.0;     // #3005
@@ -445,37 +517,11 @@ struct mbrt_ctx {
   /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
   std::map<int, std::string> programNames;
 
-  // Machine state.
-  mbc::rt::ModalState modal;
-  // #4101..#4130 by index: the last value of each address (not in
-  // ModalState, which a block with G codes copies).
-  std::array<double, mbc::rt::kLastWordCount> lastWords{};
-  mbc::rt::Frames frames;
-  mbc::rt::AxisCounts machine{}; // the control point in machine coordinates
-  mbc::rt::AxisCounts program{}; // the same point as the program sees it
-  bool feedInBlock = false;      // the block has F (G93 needs it)
-  mbc::rt::AxisCounts skipPosition{}; // #5061: where the last G31 ended
-  // The last G28/G30 intermediate point, for G29, and the axes it has (not
-  // in ModalState: that is copied for every block).
-  mbc::rt::AxisCounts intermediate{};
-  std::uint32_t intermediateMask = 0;
+  // The machine, its features' state and the lathe's cycles.
+  mbc::rt::MachineState machine;
   mbc::rt::CompensationState compensation;
   mbc::rt::CornerInsertion corner;
-  // A lathe's maximum spindle speed in G96 (G50 S in G code system A,
-  // G92 S in B and C), rpm; 0: none given.
-  double spindleLimit = 0.0;
-  // G34's K of the block running: the lead's change per revolution.
-  double leadChange = 0.0;
-  // The parameters of a lathe's multiple repetitive cycles (5130-5143)
-  // that a cycle's first block set, until power-off (lengths in mm).
-  std::map<int, double> cycleSettings;
-  mbc::rt::ShapeReading shapeReading;
-  // The shapes read so far by (ns, nf), for G70.
-  std::map<std::pair<double, double>, mbc::rt::Shape> shapes;
-  int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
-  // While a shape cycle runs the moves of its shape's blocks, each at its
-  // block's line, the cycle's block: an alarm names it as the caller.
-  mbc::rt::BlockPlace cycleBlock;
+  mbc::rt::LatheState lathe;
   // The N of the block running, -1 for none: the flattened program keeps
   // it, for a lathe's shape cycles and a reader's bearings.
   double blockSequence = -1.0;
@@ -495,8 +541,6 @@ struct mbrt_ctx {
   std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
   mbc::rt::OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
-  std::uint64_t moves = 0;
-  mbc::rt::RunStats stats;
   std::uint64_t optionalStops = 0;
   bool mainM99 = false;
   mbc::rt::PendingAlarm alarm;
@@ -521,7 +565,7 @@ struct mbrt_ctx {
 
   /// Least input increments per unit: 1000 (0.001 mm) or 10000 (0.0001
   /// inch).
-  double inputScale() const { return inputScale(modal.inch); }
+  double inputScale() const { return inputScale(machine.modal.inch); }
 
   static double inputScale(bool inch) { return inch ? 10000.0 : 1000.0; }
 
@@ -532,7 +576,7 @@ struct mbrt_ctx {
   int countsPerIncrement() const { return profile.diameterMask != 0 ? 2 : 1; }
 
   /// Counts per input unit of a radius or a length.
-  double scale() const { return scale(modal.inch); }
+  double scale() const { return scale(machine.modal.inch); }
 
   double scale(bool inch) const {
     return inputScale(inch) * countsPerIncrement();
@@ -575,7 +619,9 @@ struct mbrt_ctx {
   /// Counts per unit of an axis as programs write it and the control shows
   /// it: a rotary axis counts 0.001 degree whatever G20/G21, a diameter
   /// axis counts its radius, so a unit of diameter is half the counts.
-  double axisScale(int axis) const { return axisScale(axis, modal.inch); }
+  double axisScale(int axis) const {
+    return axisScale(axis, machine.modal.inch);
+  }
 
   double axisScale(int axis, bool inch) const {
     if (isRotary(axis)) {
@@ -623,10 +669,10 @@ struct mbrt_ctx {
     return countsPerMm(inch) / (isDiameter(axis) ? 2.0 : 1.0);
   }
 
-  int decimals() const { return modal.inch ? 4 : 3; }
+  int decimals() const { return machine.modal.inch ? 4 : 3; }
 
   /// Counts per mm, for parameters given in mm whatever the input unit.
-  double countsPerMm() const { return countsPerMm(modal.inch); }
+  double countsPerMm() const { return countsPerMm(machine.modal.inch); }
 
   double countsPerMm(bool inch) const {
     return (inch ? 10000.0 / 25.4 : 1000.0) * countsPerIncrement();

@@ -32,15 +32,15 @@ inline Counts toOtherUnit(const mbrt_ctx& ctx, int axis, Counts counts,
 /// in force.
 inline Counts workOffsetInForce(const mbrt_ctx& ctx, int index, int axis) {
   const Counts stored = ctx.workOffsets[index][axis];
-  return ctx.modal.inch == ctx.profile.inch
+  return ctx.machine.modal.inch == ctx.profile.inch
              ? stored
-             : toOtherUnit(ctx, axis, stored, ctx.modal.inch);
+             : toOtherUnit(ctx, axis, stored, ctx.machine.modal.inch);
 }
 
 /// Stores a work offset given in counts of the unit in force.
 inline void storeWorkOffset(mbrt_ctx& ctx, int index, int axis, Counts counts) {
   ctx.workOffsets[index][axis] =
-      ctx.modal.inch == ctx.profile.inch
+      ctx.machine.modal.inch == ctx.profile.inch
           ? counts
           : toOtherUnit(ctx, axis, counts, ctx.profile.inch);
 }

@@ -265,22 +265,22 @@ mbrt_status writeMessage(mbrt_ctx& ctx, int, Num, const char* comment) {
 }
 
 mbrt_status readClockMs(mbrt_ctx& ctx, int, Num* out) {
-  *out = std::floor(ctx.clockMs);
+  *out = std::floor(ctx.machine.clockMs);
   return 0;
 }
 
 mbrt_status writeClockMs(mbrt_ctx& ctx, int, Num value, const char*) {
-  ctx.clockMs = numeric(value);
+  ctx.machine.clockMs = numeric(value);
   return 0;
 }
 
 mbrt_status readClockHours(mbrt_ctx& ctx, int, Num* out) {
-  *out = ctx.clockHours;
+  *out = ctx.machine.clockHours;
   return 0;
 }
 
 mbrt_status writeClockHours(mbrt_ctx& ctx, int, Num value, const char*) {
-  ctx.clockHours = numeric(value);
+  ctx.machine.clockHours = numeric(value);
   return 0;
 }
 
@@ -323,7 +323,7 @@ mbrt_status readModalGroup(mbrt_ctx& ctx, int index, Num* out) {
 mbrt_status readLastWord(mbrt_ctx& ctx, int index, Num* out) {
   *out = index == static_cast<int>(LastWord::Program)
              ? ctx.programNumber()
-             : ctx.lastWords[static_cast<std::size_t>(index)];
+             : ctx.machine.lastWords[static_cast<std::size_t>(index)];
   return 0;
 }
 
@@ -353,7 +353,7 @@ mbrt_status readToolPosition(mbrt_ctx& ctx, int axis, Num* out) {
 }
 
 Counts machinePosition(const mbrt_ctx& ctx, int axis) {
-  return ctx.machine[axis];
+  return ctx.machine.position[axis];
 }
 
 Counts currentPosition(const mbrt_ctx& ctx, int axis) {
@@ -361,13 +361,15 @@ Counts currentPosition(const mbrt_ctx& ctx, int axis) {
 }
 
 Counts skipPosition(const mbrt_ctx& ctx, int axis) {
-  return ctx.skipPosition[axis];
+  return ctx.machine.skipPosition[axis];
 }
 
 /// #5081+: the tool length offset, or a lathe's tool position offset.
 Counts toolLengthOffset(const mbrt_ctx& ctx, int axis) {
-  return (axis == ctx.frames.lengthAxis ? ctx.frames.length : 0) +
-         ctx.frames.toolGeometry[axis] + ctx.frames.toolWear[axis];
+  return (axis == ctx.machine.frames.lengthAxis ? ctx.machine.frames.length
+                                                : 0) +
+         ctx.machine.frames.toolGeometry[axis] +
+         ctx.machine.frames.toolWear[axis];
 }
 
 /// Axes beyond the machine's read 0 and ignore writes, so that programs
@@ -389,7 +391,7 @@ mbrt_status writeOffset(mbrt_ctx& ctx, int offset, int axis, Num value) {
     return status;
   }
   if (const mbrt_status status =
-          offset == ctx.modal.workOffset || offset == kExternalOffset
+          offset == ctx.machine.modal.workOffset || offset == kExternalOffset
               ? refuseUnderHeldCorner(ctx, "writing the work offset in force")
               : 0) {
     return status;

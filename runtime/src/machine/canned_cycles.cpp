@@ -43,7 +43,7 @@ public:
       return 0;
     }
     target[axis_] = level;
-    return moveStraight(ctx_, target, rapid, ctx_.modal.cycle);
+    return moveStraight(ctx_, target, rapid, ctx_.machine.modal.cycle);
   }
 
   mbrt_status rapid(Counts level) { return to(level, true); }
@@ -64,20 +64,21 @@ public:
     }
     AxisCounts target = programPosition(ctx_);
     target[axis] += (negative ? -1 : 1) * away * data().q;
-    return moveStraight(ctx_, target, true, ctx_.modal.cycle);
+    return moveStraight(ctx_, target, true, ctx_.machine.modal.cycle);
   }
 
-  const CycleData& data() const { return ctx_.modal.cycleData; }
+  const CycleData& data() const { return ctx_.machine.modal.cycleData; }
 
   /// M29 given, or 5200#0 G84: G84 and G74 tap rigidly.
   bool rigid() const {
-    return ctx_.modal.rigidTapping || ctx_.profile.parameterBit(5200, 0);
+    return ctx_.machine.modal.rigidTapping ||
+           ctx_.profile.parameterBit(5200, 0);
   }
 
   Counts rLevel() const { return data().hasR ? data().r : data().initial; }
 
   Counts returnLevel() const {
-    return ctx_.modal.returnToR ? rLevel() : data().initial;
+    return ctx_.machine.modal.returnToR ? rLevel() : data().initial;
   }
 
   /// Which way the hole goes from R to Z: -1 down, 1 up (G87 goes up).
@@ -89,7 +90,7 @@ public:
 
 private:
   int planeAxis(int index) const {
-    return ctx_.axisOf(planeAxes(ctx_.modal.plane).letters[index]);
+    return ctx_.axisOf(planeAxes(ctx_.machine.modal.plane).letters[index]);
   }
 
   mbrt_ctx& ctx_;
@@ -149,7 +150,7 @@ int millEquivalent(const mbrt_ctx& ctx, int cycle) {
   switch (cycle) {
     case 83:
     case 87:
-      return ctx.modal.cycleData.q > 0 ? 0 : 82;
+      return ctx.machine.modal.cycleData.q > 0 ? 0 : 82;
     case 84:
     case 88:
       return 84;
@@ -160,8 +161,8 @@ int millEquivalent(const mbrt_ctx& ctx, int cycle) {
 
 mbrt_status Hole::drill() {
   const bool lathe = ctx_.profile.lathe();
-  const int cycle =
-      lathe ? millEquivalent(ctx_, ctx_.modal.cycle) : ctx_.modal.cycle;
+  const int cycle = lathe ? millEquivalent(ctx_, ctx_.machine.modal.cycle)
+                          : ctx_.machine.modal.cycle;
   if (cycle == 87) {
     return backBore();
   }
@@ -219,16 +220,17 @@ mbrt_status Hole::drill() {
 /// Whether the block's word for `axis` is incremental: G91, or a lathe's
 /// U, W or H.
 bool incrementalWord(const mbrt_ctx& ctx, const MotionWords& words, int axis) {
-  return ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
+  return ctx.machine.modal.incremental ||
+         (words.incrementalMask >> axis & 1) != 0;
 }
 
 /// R, Z, Q, P into the drilling data. In G91 (and always on a lathe) R is
 /// measured from the initial level; an incremental Z from R.
 void takeDrillingData(mbrt_ctx& ctx, const CycleWords& words, int axis) {
-  CycleData& data = ctx.modal.cycleData;
+  CycleData& data = ctx.machine.modal.cycleData;
   if (words.motion->hasR) {
     data.hasR = true;
-    data.r = ctx.modal.incremental || ctx.profile.lathe()
+    data.r = ctx.machine.modal.incremental || ctx.profile.lathe()
                  ? data.initial + words.motion->r
                  : words.motion->r;
   }
@@ -254,28 +256,28 @@ char drillingAxis(const mbrt_ctx& ctx, int cycle) {
 } // namespace
 
 void changeCycle(mbrt_ctx& ctx, int cycle) {
-  if (cycle == ctx.modal.cycle) {
+  if (cycle == ctx.machine.modal.cycle) {
     return;
   }
   if (cycle == 0) {
-    ctx.modal.rigidTapping = false; // G80 ends rigid tapping
-    ctx.modal.seriesFifteenTap = 0;
+    ctx.machine.modal.rigidTapping = false; // G80 ends rigid tapping
+    ctx.machine.modal.seriesFifteenTap = 0;
   }
   // From a face cycle to a side one the drilling axis changes: its data
   // and initial level start again.
-  if (cycle == 0 || ctx.modal.cycle == 0 ||
-      drillingAxis(ctx, cycle) != drillingAxis(ctx, ctx.modal.cycle)) {
-    ctx.modal.cycleData = CycleData{};
+  if (cycle == 0 || ctx.machine.modal.cycle == 0 ||
+      drillingAxis(ctx, cycle) != drillingAxis(ctx, ctx.machine.modal.cycle)) {
+    ctx.machine.modal.cycleData = CycleData{};
     const int axis = ctx.axisOf(drillingAxis(ctx, cycle));
     if (cycle != 0 && axis >= 0) {
-      ctx.modal.cycleData.initial = programPosition(ctx)[axis];
+      ctx.machine.modal.cycleData.initial = programPosition(ctx)[axis];
     }
   }
-  ctx.modal.cycle = cycle;
+  ctx.machine.modal.cycle = cycle;
 }
 
 mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
-  const int cycle = ctx.modal.cycle;
+  const int cycle = ctx.machine.modal.cycle;
   const char letter = drillingAxis(ctx, cycle);
   const int axis = ctx.axisOf(letter);
   if (axis < 0) {
@@ -288,7 +290,7 @@ mbrt_status executeCycleBlock(mbrt_ctx& ctx, const CycleWords& words) {
   if (words.motion->axisMask == 0 && !words.motion->hasR) {
     return 0;
   }
-  const CycleData& data = ctx.modal.cycleData;
+  const CycleData& data = ctx.machine.modal.cycleData;
   if (!data.hasZ) {
     return raise(
         ctx, AlarmId::ImproperNcAddress,

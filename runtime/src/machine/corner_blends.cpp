@@ -248,7 +248,7 @@ mbrt_status roundPoints(mbrt_ctx& ctx, const CornerInsertion& held,
 /// `end`; nothing when it is already there.
 mbrt_status runAlong(mbrt_ctx& ctx, const PlaneMove& move,
                      const AxisCounts& end, bool rapid) {
-  if (end == ctx.program) {
+  if (end == ctx.machine.program) {
     return 0;
   }
   if (!move.arc) {
@@ -271,7 +271,7 @@ mbrt_status blockMove(mbrt_ctx& ctx, const MotionWords& words,
   const PlaneIndex plane = planeIndex(ctx);
   move.start = planeOf(start, plane);
   move.end = planeOf(target, plane);
-  const int mode = ctx.modal.motion;
+  const int mode = ctx.machine.modal.motion;
   if (mode != 2 && mode != 3) {
     return 0;
   }
@@ -313,7 +313,7 @@ mbrt_status insertBlend(mbrt_ctx& ctx, const CornerInsertion& held,
   }
   const AxisCounts leave = withPlane(held.corner, plane, blend.leave);
   const AxisCounts join = withPlane(held.corner, plane, blend.join);
-  ctx.program = held.from;
+  ctx.machine.program = held.from;
   return asHeldBlock(ctx, held, [&] {
     if (const mbrt_status status = runAlong(ctx, first, leave, false)) {
       return status;
@@ -332,7 +332,7 @@ mbrt_status closeAngledLine(mbrt_ctx& ctx, CornerInsertion& held,
                             const MotionWords& words,
                             const AxisCounts& target) {
   const PlaneIndex plane = planeIndex(ctx);
-  const int mode = ctx.modal.motion;
+  const int mode = ctx.machine.modal.motion;
   if (mode != 0 && mode != 1) {
     return raise(ctx, AlarmId::NotG01AfterCorner,
                  fmt::format("the block after the ,A line of line {} must be "
@@ -384,14 +384,14 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
   held.line = ctx.block.line;
   held.block = captureBlock(ctx);
   held.blend = words.blend;
-  held.rapid = ctx.modal.motion == 0;
+  held.rapid = ctx.machine.modal.motion == 0;
   held.arc = move.arc;
   held.clockwise = move.clockwise;
   held.center = {move.center.x, move.center.y};
   held.openEnd = open;
   held.angle = words.angle.value_or(0.0);
   if (!open) {
-    ctx.program = target;
+    ctx.machine.program = target;
   }
 }
 
@@ -407,11 +407,11 @@ mbrt_status endAngledLine(mbrt_ctx& ctx, const MotionWords& words,
   if (plane.p < 0 || plane.q < 0) {
     return missingPlaneAxis(ctx);
   }
-  if (ctx.modal.motion != 0 && ctx.modal.motion != 1) {
+  if (ctx.machine.modal.motion != 0 && ctx.machine.modal.motion != 1) {
     return raise(ctx, AlarmId::TooManyAddressCommands,
                  fmt::format(",A gives the angle of a G00 or G01 line, not "
                              "of G{:02}",
-                             ctx.modal.motion));
+                             ctx.machine.modal.motion));
   }
   const bool p = (words.axisMask >> plane.p & 1) != 0;
   const bool q = (words.axisMask >> plane.q & 1) != 0;
@@ -449,7 +449,7 @@ mbrt_status holdBlendMove(mbrt_ctx& ctx, const MotionWords& words,
   if (plane.p < 0 || plane.q < 0) {
     return missingPlaneAxis(ctx);
   }
-  const int mode = ctx.modal.motion;
+  const int mode = ctx.machine.modal.motion;
   const bool open = opensAngledLine(words, plane);
   if (!open && mode != 1 && mode != 2 && mode != 3) {
     return raise(ctx, AlarmId::TooManyAddressCommands,
@@ -473,29 +473,30 @@ mbrt_status moveAfterBlend(mbrt_ctx& ctx, const MotionWords& words,
   CornerInsertion held = ctx.corner;
   ctx.corner.pending = false;
   const PlaneIndex plane = planeIndex(ctx);
-  if (ctx.modal.plane != held.block.modal.plane) {
+  if (ctx.machine.modal.plane != held.block.modal.plane) {
     return raise(ctx, AlarmId::MissingMoveAfterCorner,
                  fmt::format("the block after the chamfer, corner R or ,A "
                              "line of line {} changes the plane (G{} to G{})",
                              held.line, held.block.modal.plane,
-                             ctx.modal.plane));
+                             ctx.machine.modal.plane));
   }
   if (held.openEnd) {
     if (const mbrt_status status = closeAngledLine(ctx, held, words, target)) {
       return status;
     }
     if (held.blend == 0) {
-      ctx.program = held.from;
+      ctx.machine.program = held.from;
       if (const mbrt_status status = asHeldBlock(ctx, held, [&] {
             return moveLine(ctx, held.corner, held.rapid);
           })) {
         return status;
       }
-      return words.blend != 0 ? holdBlendMove(ctx, words, held.corner, target)
-                              : moveLine(ctx, target, ctx.modal.motion == 0);
+      return words.blend != 0
+                 ? holdBlendMove(ctx, words, held.corner, target)
+                 : moveLine(ctx, target, ctx.machine.modal.motion == 0);
     }
   }
-  const int mode = ctx.modal.motion;
+  const int mode = ctx.machine.modal.motion;
   if (mode != 1 && mode != 2 && mode != 3) {
     return raise(ctx, AlarmId::NotG01AfterCorner,
                  fmt::format("the block after a chamfer or corner R (line "
@@ -533,7 +534,7 @@ mbrt_status runHeldAsProgrammed(mbrt_ctx& ctx, const CornerInsertion& held) {
   if (held.openEnd) {
     return 0; // a line without an end point goes nowhere
   }
-  ctx.program = held.from;
+  ctx.machine.program = held.from;
   const PlaneMove move = heldMove(held, planeIndex(ctx));
   return asHeldBlock(
       ctx, held, [&] { return runAlong(ctx, move, held.corner, held.rapid); });

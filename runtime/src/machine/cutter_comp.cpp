@@ -45,14 +45,14 @@ PlanePoint workDirection(const mbrt_ctx& ctx, PlanePoint direction) {
 
 /// The I J K words of the plane, as a direction of the program.
 PlanePoint centerWords(const mbrt_ctx& ctx, const MotionWords& words) {
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
   return {static_cast<double>(words.center[axes.centerIndex[0]]),
           static_cast<double>(words.center[axes.centerIndex[1]])};
 }
 
 /// Where the tool is, in the workpiece frame.
 AxisCounts toolPosition(const mbrt_ctx& ctx) {
-  return machineToWork(ctx, ctx.machine);
+  return machineToWork(ctx, ctx.machine.position);
 }
 
 /// The move's end position with the plane axes at `point` (rounded to
@@ -361,10 +361,10 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
 mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
   if (ctx.profile.lathe()) { // the nose radius of the T code's offset
     move.offset = static_cast<double>(noseTool(ctx).radius);
-    move.side = ctx.modal.compensation == 41 ? 1 : -1;
+    move.side = ctx.machine.modal.compensation == 41 ? 1 : -1;
     return 0;
   }
-  const double d = ctx.lastWords[lastWordSlot(LastWord::D)];
+  const double d = ctx.machine.lastWords[lastWordSlot(LastWord::D)];
   if (d < 0.0 || d > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
                  fmt::format("D{} (the machine has {})", d,
@@ -386,7 +386,7 @@ mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
   const PlaneIndex plane = planeIndex(ctx);
   const bool mirrored = arcFrame(ctx, plane.p, plane.q).reversed;
   move.offset = roundToLengthCounts(ctx, std::fabs(value));
-  move.side = (ctx.modal.compensation == 41) == (value >= 0.0) ? 1 : -1;
+  move.side = (ctx.machine.modal.compensation == 41) == (value >= 0.0) ? 1 : -1;
   if (mirrored) {
     move.side = -move.side;
   }
@@ -404,9 +404,9 @@ void followTip(const mbrt_ctx& ctx, HeldMove& move);
 
 /// G41 or G42 with an offset number other than D0.
 bool offsetOn(const mbrt_ctx& ctx) {
-  return ctx.modal.compensation != 40 &&
+  return ctx.machine.modal.compensation != 40 &&
          (ctx.profile.lathe() ||
-          ctx.lastWords[lastWordSlot(LastWord::D)] != 0.0);
+          ctx.machine.lastWords[lastWordSlot(LastWord::D)] != 0.0);
 }
 
 void followTip(const mbrt_ctx& ctx, HeldMove& move) {
@@ -518,10 +518,10 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
   CompensationState& state = ctx.compensation;
   const PlaneIndex plane = planeIndex(ctx);
   if (plane.p < 0 || plane.q < 0) {
-    const PlaneAxes axes = planeAxes(ctx.modal.plane);
+    const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
     return raise(ctx, AlarmId::IllegalPlaneSelect,
                  fmt::format("cutter compensation in G{} needs axes {} and {}",
-                             ctx.modal.plane, axes.letters[0],
+                             ctx.machine.modal.plane, axes.letters[0],
                              axes.letters[1]));
   }
   if (ctx.profile.lathe()) {
@@ -682,13 +682,14 @@ mbrt_status cancelVectorHere(mbrt_ctx& ctx) {
     return 0;
   }
   const PlaneIndex plane = planeIndex(ctx);
-  const AxisCounts here = programToWork(ctx, ctx.program);
+  const AxisCounts here = programToWork(ctx, ctx.machine.program);
   if (!state.held.empty()) {
     if (const mbrt_status status = leave(ctx, {pointOf(here, plane)})) {
       return status;
     }
   } else if (here != toolPosition(ctx)) {
-    moveWorkStraight(ctx, here, ctx.modal.motion == 0, blockOrigin(ctx));
+    moveWorkStraight(ctx, here, ctx.machine.modal.motion == 0,
+                     blockOrigin(ctx));
   }
   state.engaged = false;
   return 0;
@@ -731,19 +732,19 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
   // The direction in program coordinates, then through the frames.
   PlanePoint programmed = centerWords(ctx, words);
   if (words.centerMask == 0) {
-    const PlanePoint from = pointOf(ctx.program, plane);
+    const PlanePoint from = pointOf(ctx.machine.program, plane);
     PlanePoint toward = from;
     if ((words.axisMask >> plane.p & 1) != 0) {
       toward.x = static_cast<double>(words.axis[plane.p]) +
-                 (ctx.modal.incremental ? from.x : 0.0);
+                 (ctx.machine.modal.incremental ? from.x : 0.0);
     }
     if ((words.axisMask >> plane.q & 1) != 0) {
       toward.y = static_cast<double>(words.axis[plane.q]) +
-                 (ctx.modal.incremental ? from.y : 0.0);
+                 (ctx.machine.modal.incremental ? from.y : 0.0);
     }
     programmed = toward - from;
   }
-  const AxisCounts here = programToWork(ctx, ctx.program);
+  const AxisCounts here = programToWork(ctx, ctx.machine.program);
   const PlanePoint direction = unit(workDirection(ctx, programmed));
   if (length(direction) == 0.0) {
     return raise(ctx, AlarmId::ImproperCommand,

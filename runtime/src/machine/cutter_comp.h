@@ -20,13 +20,13 @@ namespace mbc::rt {
 /// lathe's shape cycle reads its shape program: its moves are the
 /// programmed shape, which the cycle compensates as a whole.
 inline bool compensating(const mbrt_ctx& ctx) {
-  return ctx.shapeReading.code == 0 &&
-         (ctx.modal.compensation != 40 || ctx.compensation.engaged);
+  return ctx.lathe.shapeReading.code == 0 &&
+         (ctx.machine.modal.compensation != 40 || ctx.compensation.engaged);
 }
 
 /// A programmed move (G00-G03, start and end in the workpiece frame;
-/// ctx.program already at its end): the start-up, a move in offset mode,
-/// the cancel move, or a move without motion in the plane.
+/// ctx.machine.program already at its end): the start-up, a move in offset
+/// mode, the cancel move, or a move without motion in the plane.
 mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move);
 
 /// The tool leaves the offset on `move` (G28/G30 to the intermediate

@@ -38,7 +38,7 @@ mbrt_status setWorkOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axes->axisMask >> axis & 1) != 0) {
       // G91, or a lathe's U/W in G code system A, adds.
-      const bool adds = ctx.modal.incremental ||
+      const bool adds = ctx.machine.modal.incremental ||
                         (words.axes->incrementalMask >> axis & 1) != 0;
       const Counts value = words.axes->axis[axis];
       storeWorkOffset(ctx, index, axis,
@@ -67,7 +67,7 @@ mbrt_status setToolOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
       &ToolOffset::dWear};
   double& field = ctx.toolOffsets[static_cast<std::size_t>(p)].*kFields[l - 10];
   const double value = countsToUnits(words.axes->r, ctx.scale());
-  field = ctx.modal.incremental ? field + value : value;
+  field = ctx.machine.modal.incremental ? field + value : value;
   return 0;
 }
 

@@ -43,7 +43,7 @@ double centerOf(const mbrt_ctx& ctx, const MotionWords& axes, int axis) {
 void setLocalOrigin(mbrt_ctx& ctx, const MotionWords& axes) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if (has(axes, axis)) {
-      ctx.frames.local[axis] = axes.axis[axis];
+      ctx.machine.frames.local[axis] = axes.axis[axis];
     }
   }
 }
@@ -51,15 +51,15 @@ void setLocalOrigin(mbrt_ctx& ctx, const MotionWords& axes) {
 /// G92: the control point becomes the commanded position; it replaces the
 /// G52 local origin on the axes it names.
 mbrt_status setCoordinateSystem(mbrt_ctx& ctx, const MotionWords& axes) {
-  if (ctx.frames.transforms()) {
+  if (ctx.machine.frames.transforms()) {
     return raise(ctx, AlarmId::Unsupported,
                  "G92 while G51, G51.1 or G68 is in force");
   }
-  const AxisCounts work = machineToWork(ctx, ctx.machine);
+  const AxisCounts work = machineToWork(ctx, ctx.machine.position);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if (has(axes, axis)) {
-      ctx.frames.preset[axis] += work[axis] - axes.axis[axis];
-      ctx.frames.local[axis] = 0;
+      ctx.machine.frames.preset[axis] += work[axis] - axes.axis[axis];
+      ctx.machine.frames.local[axis] = 0;
     }
   }
   return 0;
@@ -70,8 +70,8 @@ mbrt_status setCoordinateSystem(mbrt_ctx& ctx, const MotionWords& axes) {
 void presetCoordinateSystem(mbrt_ctx& ctx, const MotionWords& axes) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if (has(axes, axis)) {
-      ctx.frames.preset[axis] = 0;
-      ctx.frames.local[axis] = 0;
+      ctx.machine.frames.preset[axis] = 0;
+      ctx.machine.frames.local[axis] = 0;
     }
   }
 }
@@ -79,16 +79,17 @@ void presetCoordinateSystem(mbrt_ctx& ctx, const MotionWords& axes) {
 void setMirror(mbrt_ctx& ctx, const MotionWords& axes) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if (has(axes, axis)) {
-      ctx.frames.mirrorMask |= std::uint32_t{1} << axis;
-      ctx.frames.mirrorCenter[axis] = static_cast<double>(axes.axis[axis]);
+      ctx.machine.frames.mirrorMask |= std::uint32_t{1} << axis;
+      ctx.machine.frames.mirrorCenter[axis] =
+          static_cast<double>(axes.axis[axis]);
     }
   }
 }
 
 /// G50.1 cancels the axes it names, all of them when it names none.
 void cancelMirror(mbrt_ctx& ctx, const MotionWords& axes) {
-  ctx.frames.mirrorMask =
-      axes.axisMask == 0 ? 0 : ctx.frames.mirrorMask & ~axes.axisMask;
+  ctx.machine.frames.mirrorMask =
+      axes.axisMask == 0 ? 0 : ctx.machine.frames.mirrorMask & ~axes.axisMask;
 }
 
 /// A magnification word: with a decimal point the factor itself, without
@@ -131,9 +132,9 @@ mbrt_status setScaling(mbrt_ctx& ctx, const FrameWords& words) {
     }
     scale[axis] = factor;
   }
-  ctx.frames.scaling = true;
-  ctx.frames.scale = scale;
-  ctx.frames.scaleCenter = center;
+  ctx.machine.frames.scaling = true;
+  ctx.machine.frames.scale = scale;
+  ctx.machine.frames.scaleCenter = center;
   return 0;
 }
 
@@ -145,26 +146,26 @@ mbrt_status setRotation(mbrt_ctx& ctx, const FrameWords& words) {
     return raise(ctx, AlarmId::Unsupported,
                  "G68 with I, J, K (3-dimensional coordinate conversion)");
   }
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const PlaneAxes plane = planeAxes(ctx.machine.modal.plane);
   const char* letters = plane.letters;
   const int p = ctx.axisOf(letters[0]);
   const int q = ctx.axisOf(letters[1]);
   if (p < 0 || q < 0) {
     return raise(ctx, AlarmId::ImproperNcAddress,
-                 fmt::format("G68 in G{} needs axes {} and {}", ctx.modal.plane,
-                             letters[0], letters[1]));
+                 fmt::format("G68 in G{} needs axes {} and {}",
+                             ctx.machine.modal.plane, letters[0], letters[1]));
   }
   double angle = ctx.profile.parameter(5410) / 1000.0;
   if (const mbrt_word* r = words.word('R')) {
     const bool thousandths =
         r->kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput;
     angle = numeric(r->value) / (thousandths ? 1000.0 : 1.0);
-    if (ctx.modal.incremental && ctx.profile.parameterBit(5400, 0) &&
-        ctx.frames.rotation) {
-      angle += ctx.frames.angle;
+    if (ctx.machine.modal.incremental && ctx.profile.parameterBit(5400, 0) &&
+        ctx.machine.frames.rotation) {
+      angle += ctx.machine.frames.angle;
     }
   }
-  Frames& frames = ctx.frames;
+  Frames& frames = ctx.machine.frames;
   frames.rotationCenter[0] = centerOf(ctx, *words.axes, p);
   frames.rotationCenter[1] = centerOf(ctx, *words.axes, q);
   frames.rotation = true;
@@ -180,7 +181,7 @@ mbrt_status setRotation(mbrt_ctx& ctx, const FrameWords& words) {
 /// G43/G44 H: the offset (geometry plus wear) of H, on Z (or, with
 /// parameter 5001#1 TLB, the axis normal to the plane); H0 is no offset.
 mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
-  Frames& frames = ctx.frames;
+  Frames& frames = ctx.machine.frames;
   if (mode == 49) {
     frames.lengthMode = 49;
     frames.lengthAxis = -1;
@@ -192,15 +193,16 @@ mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
                  "tool length compensation C (parameter 5001#0 TLC)");
   }
   static constexpr char kNormals[3] = {'Z', 'Y', 'X'};
-  const char letter =
-      ctx.profile.parameterBit(5001, 1) ? kNormals[ctx.modal.plane - 17] : 'Z';
+  const char letter = ctx.profile.parameterBit(5001, 1)
+                          ? kNormals[ctx.machine.modal.plane - 17]
+                          : 'Z';
   const int axis = ctx.axisOf(letter);
   if (axis < 0) {
     return raise(
         ctx, AlarmId::ImproperNcAddress,
         fmt::format("G{} offsets {}, which this machine lacks", mode, letter));
   }
-  const double h = ctx.lastWords[lastWordSlot(LastWord::H)];
+  const double h = ctx.machine.lastWords[lastWordSlot(LastWord::H)];
   if (h < 0.0 || h > ctx.profile.toolOffsetCount) {
     return raise(ctx, AlarmId::IllegalOffsetNumber,
                  fmt::format("H{} (the machine has {})", h,
@@ -281,8 +283,10 @@ mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
   }
   const bool frameChanged =
       words.code != 0 || words.cancelScaling || words.cancelRotation;
-  ctx.frames.scaling = ctx.frames.scaling && !words.cancelScaling;
-  ctx.frames.rotation = ctx.frames.rotation && !words.cancelRotation;
+  ctx.machine.frames.scaling =
+      ctx.machine.frames.scaling && !words.cancelScaling;
+  ctx.machine.frames.rotation =
+      ctx.machine.frames.rotation && !words.cancelRotation;
   if (const mbrt_status status = executeFrameCode(ctx, words)) {
     return status;
   }
@@ -290,17 +294,17 @@ mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
     resyncProgram(ctx);
   }
   const int mode = words.lengthCode != 0 ? words.lengthCode
-                   : words.hasH          ? ctx.frames.lengthMode
+                   : words.hasH          ? ctx.machine.frames.lengthMode
                                          : 0;
-  if (mode == 0 || (mode == 49 && ctx.frames.lengthMode == 49)) {
+  if (mode == 0 || (mode == 49 && ctx.machine.frames.lengthMode == 49)) {
     return 0;
   }
-  const Frames before = ctx.frames;
+  const Frames before = ctx.machine.frames;
   if (const mbrt_status status = setToolLength(ctx, mode)) {
     return status;
   }
-  *lengthChanged = before.lengthAxis != ctx.frames.lengthAxis ||
-                   before.length != ctx.frames.length;
+  *lengthChanged = before.lengthAxis != ctx.machine.frames.lengthAxis ||
+                   before.length != ctx.machine.frames.length;
   // A length offset along an axis of the compensation plane would move
   // the plane's vector too, which the manuals do not show.
   const PlaneIndex plane = planeIndex(ctx);
@@ -308,7 +312,7 @@ mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,
     return axis >= 0 && (axis == plane.p || axis == plane.q);
   };
   if (*lengthChanged &&
-      (inPlane(before.lengthAxis) || inPlane(ctx.frames.lengthAxis))) {
+      (inPlane(before.lengthAxis) || inPlane(ctx.machine.frames.lengthAxis))) {
     return refuseUnderCompensation(
         ctx, "a tool length offset along an axis of the compensation plane");
   }

@@ -32,9 +32,9 @@ AxisCounts toCounts(const AxisValues& values) {
 AxisCounts originOf(const mbrt_ctx& ctx) {
   AxisCounts origin{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    origin[axis] = workOffsetInForce(ctx, ctx.modal.workOffset, axis) +
+    origin[axis] = workOffsetInForce(ctx, ctx.machine.modal.workOffset, axis) +
                    workOffsetInForce(ctx, kExternalOffset, axis) +
-                   ctx.frames.preset[axis];
+                   ctx.machine.frames.preset[axis];
   }
   return origin;
 }
@@ -83,7 +83,7 @@ AxisValues untransformPoint(const Frames& frames, AxisValues point) {
 } // namespace
 
 AxisValues transformPoint(const mbrt_ctx& ctx, AxisValues point) {
-  const Frames& frames = ctx.frames;
+  const Frames& frames = ctx.machine.frames;
   mirror(frames, point);
   if (frames.scaling) {
     scale(frames, point, 1);
@@ -114,7 +114,7 @@ bool staysSynced(const Frames& frames, const AxisCounts& program, int axis) {
 } // namespace
 
 AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
-  const Frames& frames = ctx.frames;
+  const Frames& frames = ctx.machine.frames;
   if (!frames.transforms()) {
     AxisCounts work = program;
     for (int axis = 0; axis < ctx.axisCount(); ++axis) {
@@ -134,11 +134,11 @@ AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
 AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work) {
   AxisCounts machine = originOf(ctx);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    machine[axis] +=
-        work[axis] + ctx.frames.toolGeometry[axis] + ctx.frames.toolWear[axis];
+    machine[axis] += work[axis] + ctx.machine.frames.toolGeometry[axis] +
+                     ctx.machine.frames.toolWear[axis];
   }
-  if (ctx.frames.lengthAxis >= 0) {
-    machine[ctx.frames.lengthAxis] += ctx.frames.length;
+  if (ctx.machine.frames.lengthAxis >= 0) {
+    machine[ctx.machine.frames.lengthAxis] += ctx.machine.frames.length;
   }
   return machine;
 }
@@ -147,11 +147,12 @@ AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
   const AxisCounts origin = originOf(ctx);
   AxisCounts work{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    work[axis] = machine[axis] - origin[axis] - ctx.frames.toolGeometry[axis] -
-                 ctx.frames.toolWear[axis];
+    work[axis] = machine[axis] - origin[axis] -
+                 ctx.machine.frames.toolGeometry[axis] -
+                 ctx.machine.frames.toolWear[axis];
   }
-  if (ctx.frames.lengthAxis >= 0) {
-    work[ctx.frames.lengthAxis] -= ctx.frames.length;
+  if (ctx.machine.frames.lengthAxis >= 0) {
+    work[ctx.machine.frames.lengthAxis] -= ctx.machine.frames.length;
   }
   return work;
 }
@@ -160,9 +161,9 @@ namespace {
 
 /// The control point in local coordinates without the tool length offset.
 AxisCounts localTip(const mbrt_ctx& ctx) {
-  AxisCounts local = machineToWork(ctx, ctx.machine);
+  AxisCounts local = machineToWork(ctx, ctx.machine.position);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    local[axis] -= ctx.frames.local[axis];
+    local[axis] -= ctx.machine.frames.local[axis];
   }
   return local;
 }
@@ -171,47 +172,48 @@ AxisCounts localTip(const mbrt_ctx& ctx) {
 
 AxisCounts localPosition(const mbrt_ctx& ctx) {
   AxisCounts local = localTip(ctx);
-  if (ctx.frames.lengthAxis >= 0) {
-    local[ctx.frames.lengthAxis] += ctx.frames.length;
+  if (ctx.machine.frames.lengthAxis >= 0) {
+    local[ctx.machine.frames.lengthAxis] += ctx.machine.frames.length;
   }
   return local;
 }
 
 void resyncProgram(mbrt_ctx& ctx) {
   const AxisCounts local = localTip(ctx);
-  Frames& frames = ctx.frames;
+  Frames& frames = ctx.machine.frames;
   frames.synced = frames.transforms();
   if (!frames.synced) {
-    ctx.program = local;
+    ctx.machine.program = local;
     return;
   }
-  ctx.program = toCounts(untransformPoint(frames, toValues(local)));
-  frames.syncedProgram = ctx.program;
+  ctx.machine.program = toCounts(untransformPoint(frames, toValues(local)));
+  frames.syncedProgram = ctx.machine.program;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     frames.syncedWork[axis] = local[axis] + frames.local[axis];
   }
 }
 
 Placement placementOf(const mbrt_ctx& ctx) {
-  return {ctx.frames, ctx.workOffsets[ctx.modal.workOffset],
+  return {ctx.machine.frames, ctx.workOffsets[ctx.machine.modal.workOffset],
           ctx.workOffsets[kExternalOffset]};
 }
 
 PlacedAs::PlacedAs(mbrt_ctx& ctx, const Placement& placement)
-    : ctx_(ctx), own_(placementOf(ctx)), workOffset_(ctx.modal.workOffset) {
-  ctx.frames = placement.frames;
+    : ctx_(ctx), own_(placementOf(ctx)),
+      workOffset_(ctx.machine.modal.workOffset) {
+  ctx.machine.frames = placement.frames;
   ctx.workOffsets[workOffset_] = placement.workOffset;
   ctx.workOffsets[kExternalOffset] = placement.external;
 }
 
 PlacedAs::~PlacedAs() {
-  ctx_.frames = own_.frames;
+  ctx_.machine.frames = own_.frames;
   ctx_.workOffsets[kExternalOffset] = own_.external;
   ctx_.workOffsets[workOffset_] = own_.workOffset;
 }
 
 ArcFrame arcFrame(const mbrt_ctx& ctx, int firstAxis, int secondAxis) {
-  const Frames& frames = ctx.frames;
+  const Frames& frames = ctx.machine.frames;
   ArcFrame arc;
   const auto mirrored = [&](int axis) {
     return (frames.mirrorMask >> axis & 1) != 0;

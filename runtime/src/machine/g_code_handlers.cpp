@@ -112,11 +112,11 @@ mbrt_status startSeriesFifteenTap(mbrt_ctx&, ModalState& next, NcBlock&,
 }
 
 mbrt_status selectPlane(mbrt_ctx& ctx, ModalState& next, NcBlock&, int code) {
-  if (code / 10 != ctx.modal.plane && compensating(ctx)) {
+  if (code / 10 != ctx.machine.modal.plane && compensating(ctx)) {
     return raise(ctx, AlarmId::PlaneChangeInCrc,
                  fmt::format("G{} in cutter compensation mode (G{}); "
                              "cancel with G40 first",
-                             code / 10, ctx.modal.compensation));
+                             code / 10, ctx.machine.modal.compensation));
   }
   next.plane = code / 10;
   return 0;
@@ -310,19 +310,20 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   const std::uint8_t* oneField = block.oneField.data();
   const std::uint8_t* oneFieldEnd = oneField + block.oneFieldCount;
   if (block.gCodes == GCodes::OneField &&
-      (ctx.modal.cycle == 0 || std::none_of(oneField, oneFieldEnd, isMotion))) {
+      (ctx.machine.modal.cycle == 0 ||
+       std::none_of(oneField, oneFieldEnd, isMotion))) {
     // Nothing to commit or drop: no copy of the modal state.
     for (const std::uint8_t* row = oneField; row != oneFieldEnd; ++row) {
       if (isMotion(*row)) {
-        ctx.modal.motion = kCodes[*row] / 10; // most of them, no call
+        ctx.machine.modal.motion = kCodes[*row] / 10; // most of them, no call
       } else if (const mbrt_status status =
-                     applyGCode(ctx, ctx.modal, *row, block)) {
+                     applyGCode(ctx, ctx.machine.modal, *row, block)) {
         return status; // G17-G19 under compensation
       }
     }
     return 0;
   }
-  ModalState next = ctx.modal;
+  ModalState next = ctx.machine.modal;
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter != 'G') {
       continue;
@@ -347,19 +348,20 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     block.frames.code = 100;
   }
   const bool inch = next.inch;
-  next.inch = ctx.modal.inch;
+  next.inch = ctx.machine.modal.inch;
   const int cycle = next.cycle;
-  next.cycle = ctx.modal.cycle;
-  const bool newOrigin = next.workOffset != ctx.modal.workOffset;
-  if (newOrigin || inch != ctx.modal.inch) {
+  next.cycle = ctx.machine.modal.cycle;
+  const bool newOrigin = next.workOffset != ctx.machine.modal.workOffset;
+  if (newOrigin || inch != ctx.machine.modal.inch) {
     if (const mbrt_status status = refuseUnderHeldMoves(
             ctx, newOrigin ? "a work coordinate system change" : "G20/G21")) {
       return status;
     }
   }
-  ctx.modal = next;
+  ctx.machine.modal = next;
   if (block.selectsG541) {
-    ctx.lastWords[lastWordSlot(LastWord::G541P)] = block.hasP ? block.p : 1.0;
+    ctx.machine.lastWords[lastWordSlot(LastWord::G541P)] =
+        block.hasP ? block.p : 1.0;
   }
   if (newOrigin) {
     resyncProgram(ctx); // the machine stays, the program position moves
@@ -370,7 +372,7 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 }
 
 int modalCode(const mbrt_ctx& ctx, ModalField field) {
-  const ModalState& modal = ctx.modal;
+  const ModalState& modal = ctx.machine.modal;
   switch (field) {
     case ModalField::None:
       return kNo;
@@ -388,7 +390,7 @@ int modalCode(const mbrt_ctx& ctx, ModalField field) {
     case ModalField::Compensation:
       return modal.compensation * 10;
     case ModalField::Length:
-      return ctx.frames.lengthMode * 10;
+      return ctx.machine.frames.lengthMode * 10;
     case ModalField::Cycle:
       if (modal.cycle == 0) {
         return 800;
@@ -401,7 +403,7 @@ int modalCode(const mbrt_ctx& ctx, ModalField field) {
     case ModalField::Return:
       return modal.returnToR ? 990 : 980;
     case ModalField::Scaling:
-      return ctx.frames.scaling ? 510 : 500;
+      return ctx.machine.frames.scaling ? 510 : 500;
     case ModalField::ModalCall:
       return ctx.modalCalls.empty()             ? 670
              : ctx.modalCalls.back().everyBlock ? 661
@@ -415,11 +417,11 @@ int modalCode(const mbrt_ctx& ctx, ModalField field) {
     case ModalField::CuttingMode:
       return modal.cuttingMode * 10;
     case ModalField::Rotation:
-      return ctx.frames.rotation ? 680 : 690;
+      return ctx.machine.frames.rotation ? 680 : 690;
     case ModalField::Polar:
       return modal.polar ? 160 : 150;
     case ModalField::Mirror:
-      return ctx.frames.mirrorMask != 0 ? 511 : 501;
+      return ctx.machine.frames.mirrorMask != 0 ? 511 : 501;
     case ModalField::TurretMirror: // never on
       return latheOwn(690);
   }

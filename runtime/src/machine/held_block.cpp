@@ -9,23 +9,23 @@
 namespace mbc::rt {
 
 BlockState captureBlock(const mbrt_ctx& ctx) {
-  return {ctx.modal,
+  return {ctx.machine.modal,
           placementOf(ctx),
-          ctx.lastWords[lastWordSlot(LastWord::D)],
-          ctx.lastWords[lastWordSlot(LastWord::S)],
+          ctx.machine.lastWords[lastWordSlot(LastWord::D)],
+          ctx.machine.lastWords[lastWordSlot(LastWord::S)],
           ctx.compensation.codeInBlock,
-          ctx.feedInBlock};
+          ctx.machine.feedInBlock};
 }
 
 InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
     : ctx_(ctx), own_(captureBlock(ctx)), file_(ctx.block.file),
       line_(ctx.block.line) {
   const BlockState& block = held.block;
-  ctx.modal = block.modal;
-  ctx.lastWords[lastWordSlot(LastWord::D)] = block.dWord;
-  ctx.lastWords[lastWordSlot(LastWord::S)] = block.sWord;
+  ctx.machine.modal = block.modal;
+  ctx.machine.lastWords[lastWordSlot(LastWord::D)] = block.dWord;
+  ctx.machine.lastWords[lastWordSlot(LastWord::S)] = block.sWord;
   ctx.compensation.codeInBlock = block.codeInBlock;
-  ctx.feedInBlock = block.feedInBlock;
+  ctx.machine.feedInBlock = block.feedInBlock;
   ctx.block.file = held.file;
   ctx.block.line = held.line;
   placed_.emplace(ctx, block.placement);
@@ -33,11 +33,11 @@ InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
 
 InHeldBlock::~InHeldBlock() {
   placed_.reset();
-  ctx_.modal = own_.modal;
-  ctx_.lastWords[lastWordSlot(LastWord::D)] = own_.dWord;
-  ctx_.lastWords[lastWordSlot(LastWord::S)] = own_.sWord;
+  ctx_.machine.modal = own_.modal;
+  ctx_.machine.lastWords[lastWordSlot(LastWord::D)] = own_.dWord;
+  ctx_.machine.lastWords[lastWordSlot(LastWord::S)] = own_.sWord;
   ctx_.compensation.codeInBlock = own_.codeInBlock;
-  ctx_.feedInBlock = own_.feedInBlock;
+  ctx_.machine.feedInBlock = own_.feedInBlock;
   ctx_.block.file = file_;
   ctx_.block.line = line_;
 }

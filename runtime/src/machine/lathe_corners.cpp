@@ -17,7 +17,7 @@ int signOf(Counts value) {
 
 /// The I, J or K letter that gives the chamfer into `axis` of the plane.
 char chamferLetter(const mbrt_ctx& ctx, int axis) {
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
   const int index = axes.centerIndex[axis == planeIndex(ctx).p ? 0 : 1];
   return static_cast<char>('I' + index);
 }
@@ -47,7 +47,7 @@ mbrt_status missingPlaneAxis(mbrt_ctx& ctx) {
   return raise(ctx, AlarmId::IllegalPlaneSelect,
                fmt::format("chamfering, corner R and ,A in G{} need both "
                            "axes of the plane",
-                           ctx.modal.plane));
+                           ctx.machine.modal.plane));
 }
 
 bool chamferByC(const mbrt_ctx& ctx) {
@@ -64,7 +64,7 @@ bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words) {
   if (ctx.compensation.codeInBlock) {
     return false; // G41/G42 I K: the direction of the start-up (mill)
   }
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
   const std::uint32_t planeCenters = (std::uint32_t{1} << axes.centerIndex[0]) |
                                      (std::uint32_t{1} << axes.centerIndex[1]);
   const bool chamferWord =
@@ -124,7 +124,7 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
   held = CornerInsertion{
       true,   true,   words.hasR,     start,          target,           along,
       toward, amount, ctx.block.file, ctx.block.line, captureBlock(ctx)};
-  ctx.program = target;
+  ctx.machine.program = target;
   return 0;
 }
 
@@ -136,7 +136,7 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
   CornerInsertion held = ctx.corner;
   ctx.corner.pending = false;
   const std::string toward = letterOf(ctx, held.toward);
-  if (ctx.modal.motion != 1) {
+  if (ctx.machine.modal.motion != 1) {
     return raise(ctx, AlarmId::NotG01AfterCorner,
                  fmt::format("the block after a chamfer or corner R (line "
                              "{}) must be G01 along {}",
@@ -165,7 +165,7 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
                    std::abs(held.amount);
   AxisCounts c = held.corner; // the amount along the next move
   c[held.toward] += held.amount;
-  ctx.program = held.from;
+  ctx.machine.program = held.from;
   const mbrt_status status = asHeldBlock(ctx, held, [&] {
     if (const mbrt_status toD = moveLine(ctx, d, false)) {
       return toD;
@@ -227,7 +227,7 @@ void releaseCornerMove(mbrt_ctx& ctx) {
     runHeldAsProgrammed(ctx, held);
     return;
   }
-  ctx.program = held.from;
+  ctx.machine.program = held.from;
   asHeldBlock(ctx, held, [&] { return moveLine(ctx, held.corner, false); });
 }
 

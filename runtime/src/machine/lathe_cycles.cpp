@@ -42,13 +42,13 @@ int cutSide(const AxisCounts& start, const AxisCounts& end, int x, int z,
 } // namespace
 
 AxisCounts cycleEndPoint(const mbrt_ctx& ctx, const MotionWords& words) {
-  AxisCounts end = ctx.program;
+  AxisCounts end = ctx.machine.program;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axisMask >> axis & 1) != 0) {
-      const bool incremental =
-          ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0;
-      end[axis] =
-          incremental ? ctx.program[axis] + words.axis[axis] : words.axis[axis];
+      const bool incremental = ctx.machine.modal.incremental ||
+                               (words.incrementalMask >> axis & 1) != 0;
+      end[axis] = incremental ? ctx.machine.program[axis] + words.axis[axis]
+                              : words.axis[axis];
     }
   }
   return end;
@@ -60,8 +60,8 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
   }
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
-  SingleCycleData& data = ctx.modal.singleCycle;
-  const AxisCounts start = ctx.program;
+  SingleCycleData& data = ctx.machine.modal.singleCycle;
+  const AxisCounts start = ctx.machine.program;
   const AxisCounts given = cycleEndPoint(ctx, words);
   if ((words.axisMask >> x & 1) != 0) {
     data.hasX = true;
@@ -71,7 +71,7 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
     data.hasZ = true;
     data.z = given[z];
   }
-  const int cycle = ctx.modal.motion;
+  const int cycle = ctx.machine.modal.motion;
   // The Series 10/11 format (0001#1 FCV) writes the taper as I (G90, G92)
   // or K (G94).
   const int taperIndex = cycle == kFacingCycleMotion ? 2 : 0;
@@ -94,7 +94,7 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
     p.back[z] = end[z];
   }
 
-  const int programmed = ctx.modal.compensation;
+  const int programmed = ctx.machine.modal.compensation;
   const int side = programmed == 40 || cycle == kThreadCycleMotion
                        ? 40
                        : cutSide(start, end, x, z, cycle == kFacingCycleMotion);
@@ -108,18 +108,18 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
                {&p.back, p.rapidBack, side},
                {&p.start, true, 40}};
 
-  ctx.cycleLabel =
+  ctx.lathe.cycleLabel =
       static_cast<int>(writtenLatheCode(ctx, kLatheOwnCode + cycle * 10));
   mbrt_status status = 0;
   for (const auto& move : moves) {
-    ctx.modal.compensation = move.compensation;
+    ctx.machine.modal.compensation = move.compensation;
     status = moveLine(ctx, *move.to, move.rapid);
     if (status != 0) {
       break;
     }
   }
-  ctx.modal.compensation = programmed;
-  ctx.cycleLabel = 0;
+  ctx.machine.modal.compensation = programmed;
+  ctx.lathe.cycleLabel = 0;
   return status;
 }
 

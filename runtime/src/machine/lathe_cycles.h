@@ -13,7 +13,7 @@ namespace mbc::rt {
 /// position, which stays on the axes it leaves out.
 AxisCounts cycleEndPoint(const mbrt_ctx& ctx, const MotionWords& words);
 
-/// One cycle of the single cycle in force (ctx.modal.motion).
+/// One cycle of the single cycle in force (ctx.machine.modal.motion).
 mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words);
 
 } // namespace mbc::rt

@@ -89,7 +89,7 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
       : motion.hasR ? std::llabs(motion.r)
                     : 0;
   const Counts back = cycleLength(ctx, 5139);
-  const AxisCounts start = ctx.program;
+  const AxisCounts start = ctx.machine.program;
   const AxisCounts end = cycleEndPoint(ctx, motion);
   if (peck == 0 && end[peckAxis] != start[peckAxis]) {
     return illegal(ctx, code, "the peck depth is 0");
@@ -217,9 +217,9 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
       const auto p = static_cast<long>(*words.p);
       const double tenths = static_cast<double>(p / 100 % 100);
       const double angle = static_cast<double>(p % 100);
-      ctx.cycleSettings[5142] = static_cast<double>(p / 10000);
-      ctx.cycleSettings[5130] = tenths;
-      ctx.cycleSettings[5143] = angle;
+      ctx.lathe.cycleSettings[5142] = static_cast<double>(p / 10000);
+      ctx.lathe.cycleSettings[5130] = tenths;
+      ctx.lathe.cycleSettings[5143] = angle;
     }
     if (words.q) {
       keepCycleLength(ctx, 5140, *words.q);
@@ -243,7 +243,7 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
   const int z = ctx.axisOf('Z');
   const Counts height = thread.height;
   const Counts first = thread.first;
-  const double lead = ctx.modal.feed;
+  const double lead = ctx.machine.modal.feed;
   if (height <= 0 || first <= 0) {
     return illegal(ctx, kG76,
                    seriesTenFormat(ctx)
@@ -261,7 +261,7 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
                    "the finishing allowance is not less than the "
                    "thread height");
   }
-  const AxisCounts start = ctx.program;
+  const AxisCounts start = ctx.machine.program;
   const AxisCounts end = cycleEndPoint(ctx, motion);
   const Counts taper = thread.taper;
   // The crest lies towards A: an outer thread is cut inwards.
@@ -278,7 +278,7 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
                     std::tan(pullAngle * std::numbers::pi / 180.0)));
   const int label = static_cast<int>(writtenLatheCode(ctx, kG76));
   const auto move = [&](Counts px, Counts pz, bool rapid) {
-    AxisCounts to = ctx.program;
+    AxisCounts to = ctx.machine.program;
     to[x] = px;
     to[z] = pz;
     return moveStraight(ctx, to, rapid, label);
@@ -297,13 +297,13 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
       status = move(atDepth + outward * rise, end[z], false);
     }
     if (status == 0) {
-      status = move(start[x], ctx.program[z], true);
+      status = move(start[x], ctx.machine.program[z], true);
     }
     return status != 0 ? status : move(start[x], start[z], true);
   };
   // The feed moves thread: F is the lead, whatever G98/G99.
-  const int motionMode = ctx.modal.motion;
-  ctx.modal.motion = kThreadingMotion;
+  const int motionMode = ctx.machine.modal.motion;
+  ctx.machine.modal.motion = kThreadingMotion;
   mbrt_status status = 0;
   for (const Counts depth :
        threadDepths(first, least, height, allowance, finishing)) {
@@ -311,7 +311,7 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
       break;
     }
   }
-  ctx.modal.motion = motionMode;
+  ctx.machine.modal.motion = motionMode;
   return status;
 }
 

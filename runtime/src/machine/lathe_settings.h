@@ -10,9 +10,9 @@
 namespace mbc::rt {
 
 inline double cycleSetting(const mbrt_ctx& ctx, int parameter) {
-  const auto it = ctx.cycleSettings.find(parameter);
-  return it != ctx.cycleSettings.end() ? it->second
-                                       : ctx.profile.parameter(parameter);
+  const auto it = ctx.lathe.cycleSettings.find(parameter);
+  return it != ctx.lathe.cycleSettings.end() ? it->second
+                                             : ctx.profile.parameter(parameter);
 }
 
 /// A length setting in counts.
@@ -35,7 +35,7 @@ inline Counts incrementCounts(const mbrt_ctx& ctx, double increments) {
 }
 
 inline void keepCycleLength(mbrt_ctx& ctx, int parameter, Counts counts) {
-  ctx.cycleSettings[parameter] =
+  ctx.lathe.cycleSettings[parameter] =
       static_cast<double>(counts) / ctx.countsPerMm();
 }
 

@@ -70,7 +70,7 @@ void keepSettings(mbrt_ctx& ctx, int code, const FrameWords& words) {
     keepLength(ctx, 5135, lengthWord(ctx, words, 'U'));
     keepLength(ctx, 5136, lengthWord(ctx, words, 'W'));
     if (const auto divisions = wholeWord(words, 'R')) {
-      ctx.cycleSettings[5137] = *divisions;
+      ctx.lathe.cycleSettings[5137] = *divisions;
     }
     return;
   }
@@ -111,14 +111,15 @@ ShapeMove shapeMoveOf(const mbrt_ctx& ctx, const mbrt_motion& motion) {
 /// with the G40/G41/G42 a block of the shape gave (0: the cycle's).
 void recordMove(void* user, const mbrt_motion* motion) {
   auto& ctx = *static_cast<mbrt_ctx*>(user);
-  ShapeReading& reading = ctx.shapeReading;
-  reading.feedSet = reading.feedSet || ctx.feedInBlock;
+  ShapeReading& reading = ctx.lathe.shapeReading;
+  reading.feedSet = reading.feedSet || ctx.machine.feedInBlock;
   ShapeMove move = shapeMoveOf(ctx, *motion);
   move.feed =
       reading.feedSet && move.motion != ShapeMotion::Rapid ? motion->feed : 0.0;
-  const int compensation = ctx.modal.compensation;
-  move.compensation =
-      compensation != reading.before.modal.compensation ? compensation : 0;
+  const int compensation = ctx.machine.modal.compensation;
+  move.compensation = compensation != reading.before.machine.modal.compensation
+                          ? compensation
+                          : 0;
   move.line = ctx.block.line;
   if (reading.shape.moves.empty() && ctx.block.file != nullptr) {
     reading.shape.file = ctx.block.file;
@@ -136,28 +137,28 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
                      const std::string* file) {
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
-  const ModalState modal = ctx.modal;
+  const ModalState modal = ctx.machine.modal;
   const bool codeInBlock = ctx.compensation.codeInBlock;
   ctx.compensation.codeInBlock = false;
-  ctx.cycleLabel = writtenCode(ctx, code);
+  ctx.lathe.cycleLabel = writtenCode(ctx, code);
   const BlockPlace cycle{ctx.block.file, ctx.block.line};
-  ctx.cycleBlock = cycle;
-  ctx.modal.incremental = false;
+  ctx.lathe.cycleBlock = cycle;
+  ctx.machine.modal.incremental = false;
   mbrt_status status = 0;
   for (const ShapeMove& move : moves) {
     const bool ofShape = file != nullptr && move.line != 0;
     ctx.block.file = ofShape ? file->c_str() : cycle.file;
     ctx.block.line = ofShape ? move.line : cycle.line;
-    ctx.modal.feed = move.feed > 0.0 ? move.feed : feed;
-    ctx.modal.compensation =
+    ctx.machine.modal.feed = move.feed > 0.0 ? move.feed : feed;
+    ctx.machine.modal.compensation =
         move.compensation != 0 ? move.compensation : compensation;
-    AxisCounts target = ctx.program;
+    AxisCounts target = ctx.machine.program;
     target[x] = static_cast<Counts>(roundHalfAway(move.end.x));
     target[z] = static_cast<Counts>(roundHalfAway(move.end.z));
     if (move.motion == ShapeMotion::Rapid || move.motion == ShapeMotion::Line) {
       status = moveLine(ctx, target, move.motion == ShapeMotion::Rapid);
     } else {
-      AxisCounts center = ctx.program;
+      AxisCounts center = ctx.machine.program;
       center[x] = static_cast<Counts>(roundHalfAway(move.center.x));
       center[z] = static_cast<Counts>(roundHalfAway(move.center.z));
       status = moveArcAbout(ctx, target, center,
@@ -169,12 +170,12 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
   }
   ctx.block.file = cycle.file;
   ctx.block.line = cycle.line;
-  ctx.cycleBlock = BlockPlace{};
-  ctx.cycleLabel = 0;
+  ctx.lathe.cycleBlock = BlockPlace{};
+  ctx.lathe.cycleLabel = 0;
   ctx.compensation.codeInBlock = codeInBlock;
-  const double lastFeed = ctx.modal.feed;
-  ctx.modal = modal;
-  ctx.modal.feed = code == kG70 ? lastFeed : modal.feed;
+  const double lastFeed = ctx.machine.modal.feed;
+  ctx.machine.modal = modal;
+  ctx.machine.modal.feed = code == kG70 ? lastFeed : modal.feed;
   return status;
 }
 
@@ -186,29 +187,20 @@ mbrt_status finish(mbrt_ctx& ctx, const Shape& shape) {
   std::vector<ShapeMove> moves = shape.moves;
   ShapeMove back;
   back.motion = ShapeMotion::Rapid;
-  back.end = {static_cast<double>(ctx.program[x]),
-              static_cast<double>(ctx.program[z])};
+  back.end = {static_cast<double>(ctx.machine.program[x]),
+              static_cast<double>(ctx.machine.program[z])};
   back.compensation = 40;
   moves.push_back(back);
-  return runMoves(ctx, moves, kG70, ctx.modal.feed, ctx.modal.compensation,
-                  &shape.file);
+  return runMoves(ctx, moves, kG70, ctx.machine.modal.feed,
+                  ctx.machine.modal.compensation, &shape.file);
 }
 
-MachineSnapshot takeSnapshot(const mbrt_ctx& ctx) {
-  return {ctx.machine, ctx.program,    ctx.modal, ctx.frames, ctx.lastWords,
-          ctx.clockMs, ctx.clockHours, ctx.stats, ctx.moves,  ctx.motionSink};
+DryRunState takeSnapshot(const mbrt_ctx& ctx) {
+  return {ctx.machine, ctx.motionSink};
 }
 
-void restoreSnapshot(mbrt_ctx& ctx, const MachineSnapshot& snapshot) {
+void restoreSnapshot(mbrt_ctx& ctx, const DryRunState& snapshot) {
   ctx.machine = snapshot.machine;
-  ctx.program = snapshot.program;
-  ctx.modal = snapshot.modal;
-  ctx.frames = snapshot.frames;
-  ctx.lastWords = snapshot.lastWords;
-  ctx.clockMs = snapshot.clockMs;
-  ctx.clockHours = snapshot.clockHours;
-  ctx.stats = snapshot.stats;
-  ctx.moves = snapshot.moves;
   ctx.motionSink = snapshot.motionSink;
 }
 
@@ -239,13 +231,13 @@ void collectMove(void* user, const mbrt_motion* motion) {
 /// moves through the compensation: nothing moves, nothing counts.
 mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
                             Shape& path) {
-  const MachineSnapshot before = takeSnapshot(ctx);
+  const DryRunState before = takeSnapshot(ctx);
   const CompensationState compensation = ctx.compensation;
   path = Shape{shape.start, {}, {}};
   PathCollector collector{&ctx, &path.moves};
   ctx.motionSink = {collectMove, &collector};
-  mbrt_status status = runMoves(ctx, shape.moves, code, ctx.modal.feed,
-                                ctx.modal.compensation, &shape.file);
+  mbrt_status status = runMoves(ctx, shape.moves, code, ctx.machine.modal.feed,
+                                ctx.machine.modal.compensation, &shape.file);
   if (status == 0) {
     status = releaseHeldMoves(ctx);
   }
@@ -256,16 +248,16 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
 
 /// After nf: the cycle runs over the shape read.
 mbrt_status runCycle(mbrt_ctx& ctx) {
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   const int code = reading.code;
   const Shape shape = reading.shape;
   const ShapePoint allowance = reading.allowance;
   const ShapePoint relief = reading.relief;
   const int divisions = reading.divisions;
   restoreSnapshot(ctx, reading.before);
-  ctx.shapeReading.code = 0;
+  ctx.lathe.shapeReading.code = 0;
   // G70 runs the kept shape: its moves' file lives as long as it.
-  const Shape& kept = ctx.shapes[{reading.ns, reading.nf}] = shape;
+  const Shape& kept = ctx.lathe.shapes[{reading.ns, reading.nf}] = shape;
   if (code == kG70) {
     return finish(ctx, kept);
   }
@@ -288,7 +280,7 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
     }
   }
   Shape cut = shape;
-  if (compensated(shape, ctx.modal.compensation)) {
+  if (compensated(shape, ctx.machine.modal.compensation)) {
     if (const mbrt_status status = compensatedPath(ctx, code, shape, cut)) {
       return status;
     }
@@ -302,20 +294,20 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
                              writtenCode(ctx, code), reading.ns, reading.nf,
                              roughing.pockets ? "along" : "across"));
   }
-  return runMoves(ctx, path, code, ctx.modal.feed, 40, nullptr);
+  return runMoves(ctx, path, code, ctx.machine.modal.feed, 40, nullptr);
 }
 
 /// Reading starts: the state the shape's blocks will run over is kept.
 void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   reading = ShapeReading{};
   reading.code = code;
   reading.ns = ns;
   reading.nf = nf;
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
-  reading.shape.start = {static_cast<double>(ctx.program[x]),
-                         static_cast<double>(ctx.program[z])};
+  reading.shape.start = {static_cast<double>(ctx.machine.program[x]),
+                         static_cast<double>(ctx.machine.program[z])};
   reading.before = takeSnapshot(ctx);
   reading.cycleBlock = {ctx.block.file, ctx.block.line};
 }
@@ -348,13 +340,13 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
     return status;
   }
   if (code == kG70) {
-    if (const auto shape = ctx.shapes.find({*ns, *nf});
-        shape != ctx.shapes.end()) {
+    if (const auto shape = ctx.lathe.shapes.find({*ns, *nf});
+        shape != ctx.lathe.shapes.end()) {
       return finish(ctx, shape->second);
     }
   }
   startReading(ctx, code, *ns, *nf);
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   if (const auto u = lengthWord(ctx, words, 'U')) {
@@ -372,7 +364,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
         static_cast<double>(lengthSetting(ctx, words, oneBlock, 'K', 5136))};
     reading.divisions = static_cast<int>(d.value_or(cycleSetting(ctx, 5137)));
     if (reading.divisions < 1) {
-      ctx.shapeReading.code = 0;
+      ctx.lathe.shapeReading.code = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: {} divisions", writtenCode(ctx, code),
                                reading.divisions));
@@ -385,7 +377,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
 }
 
 void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   if (reading.firstWordsRead) {
     return;
   }
@@ -396,7 +388,7 @@ void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
 }
 
 mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   if (!reading.started) {
     if (n != reading.ns) {
       const int code = reading.code;
@@ -415,7 +407,7 @@ mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
 
 mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
                             const mbrt_flow& flow, mbrt_status status) {
-  ShapeReading& reading = ctx.shapeReading;
+  ShapeReading& reading = ctx.lathe.shapeReading;
   ctx.motionSink = reading.before.motionSink;
   // A shape that cannot be read leaves the machine where the cycle found
   // it, for a context that runs again.

@@ -38,7 +38,7 @@ mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved) {
                  fmt::format("T{}: offset {} (the machine has {})", t, number,
                              ctx.profile.toolOffsetCount));
   }
-  Frames& frames = ctx.frames;
+  Frames& frames = ctx.machine.frames;
   const AxisCounts wearBefore = frames.toolWear;
   if (number == 0.0) {
     frames.toolWearNumber = 0;
@@ -127,7 +127,7 @@ char axisOfLetter(char letter) {
 } // namespace
 
 NoseTool noseTool(const mbrt_ctx& ctx) {
-  const Frames& frames = ctx.frames;
+  const Frames& frames = ctx.machine.frames;
   const LatheOffset& geometry =
       ctx.latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
   const LatheOffset& wear =

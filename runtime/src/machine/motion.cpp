@@ -40,21 +40,21 @@ MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
   MoveOrigin origin{ctx.block.file,
                     ctx.block.line,
                     ctx.programName(),
-                    ctx.modal.feed,
-                    ctx.modal.feedMode,
-                    ctx.lastWords[lastWordSlot(LastWord::S)],
-                    cycle != 0 ? cycle : ctx.cycleLabel};
-  origin.surfaceSpeed = ctx.modal.surfaceSpeed;
-  origin.spindleLimit = ctx.spindleLimit;
-  origin.threading = cutsThread(ctx.modal.motion);
-  if (ctx.modal.motion == kVariableLeadMotion) {
-    origin.leadChange = ctx.leadChange;
+                    ctx.machine.modal.feed,
+                    ctx.machine.modal.feedMode,
+                    ctx.machine.lastWords[lastWordSlot(LastWord::S)],
+                    cycle != 0 ? cycle : ctx.lathe.cycleLabel};
+  origin.surfaceSpeed = ctx.machine.modal.surfaceSpeed;
+  origin.spindleLimit = ctx.machine.spindleLimit;
+  origin.threading = cutsThread(ctx.machine.modal.motion);
+  if (ctx.machine.modal.motion == kVariableLeadMotion) {
+    origin.leadChange = ctx.machine.leadChange;
   }
   return origin;
 }
 
 PlaneIndex planeIndex(const mbrt_ctx& ctx) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const PlaneAxes plane = planeAxes(ctx.machine.modal.plane);
   return {ctx.axisOf(plane.letters[0]), ctx.axisOf(plane.letters[1])};
 }
 
@@ -90,7 +90,8 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
     if ((words.axisMask >> axis & 1) == 0) {
       continue;
     }
-    if (ctx.modal.incremental || (words.incrementalMask >> axis & 1) != 0) {
+    if (ctx.machine.modal.incremental ||
+        (words.incrementalMask >> axis & 1) != 0) {
       target[axis] = start[axis] + words.axis[axis];
     } else if (ctx.rollsOver(axis)) {
       target[axis] = rolloverTarget(ctx, axis, start[axis], words.axis[axis]);
@@ -103,9 +104,9 @@ AxisCounts workTarget(const mbrt_ctx& ctx, const MotionWords& words,
 
 /// The simulated clocks #3001/#3002 and the cycle time of the summary.
 void passTime(mbrt_ctx& ctx, double seconds) {
-  ctx.clockMs += seconds * 1000.0;
-  ctx.clockHours += seconds / 3600.0;
-  ctx.stats.seconds += seconds;
+  ctx.machine.clockMs += seconds * 1000.0;
+  ctx.machine.clockHours += seconds / 3600.0;
+  ctx.machine.stats.seconds += seconds;
 }
 
 /// How far a move goes: over every axis in input units, a degree counting
@@ -150,19 +151,20 @@ void advanceClock(mbrt_ctx& ctx, const Travel& travel, bool rapid, double timed,
     minutes = timed / origin.feed;
   }
   passTime(ctx, minutes * 60.0);
-  (rapid ? ctx.stats.rapidLength : ctx.stats.feedLength) += travel.mm;
+  (rapid ? ctx.machine.stats.rapidLength : ctx.machine.stats.feedLength) +=
+      travel.mm;
 }
 
 /// Widens the toolpath's bounding box by a coordinate of a workpiece point
 /// (counts) that follows the first.
 void widenBox(mbrt_ctx& ctx, int axis, double counts) {
-  CountsBox& box = ctx.stats.box[ctx.modal.inch];
+  CountsBox& box = ctx.machine.stats.box[ctx.machine.modal.inch];
   box.low[axis] = std::min(box.low[axis], counts);
   box.high[axis] = std::max(box.high[axis], counts);
 }
 
 void widenBox(mbrt_ctx& ctx, const AxisCounts& work) {
-  CountsBox& box = ctx.stats.box[ctx.modal.inch];
+  CountsBox& box = ctx.machine.stats.box[ctx.machine.modal.inch];
   const bool first = !box.any;
   box.any = true;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
@@ -177,15 +179,15 @@ void widenBox(mbrt_ctx& ctx, const AxisCounts& work) {
 void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, const MoveOrigin& origin) {
   widenBox(ctx, work);
-  ++ctx.moves;
+  ++ctx.machine.moves;
   if (ctx.motionSink.fn == nullptr) {
-    ctx.machine = machine;
+    ctx.machine.position = machine;
     return;
   }
-  const AxisCounts start = machineToWork(ctx, ctx.machine);
-  ctx.machine = machine;
+  const AxisCounts start = machineToWork(ctx, ctx.machine.position);
+  ctx.machine.position = machine;
   const double scale = ctx.scale();
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const PlaneAxes plane = planeAxes(ctx.machine.modal.plane);
   mbrt_motion motion{};
   motion.kind = kind;
   motion.axis_count = ctx.axisCount();
@@ -203,7 +205,7 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
         countsToUnits(ctx.shown(axis, programmed), axisScale);
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : origin.feed;
-  motion.plane = ctx.modal.plane;
+  motion.plane = ctx.machine.modal.plane;
   motion.center_axes[0] = plane.letters[0];
   motion.center_axes[1] = plane.letters[1];
   for (int i = 0; i < 2; ++i) {
@@ -262,7 +264,8 @@ Travel travel(const mbrt_ctx& ctx, const AxisCounts& machine,
   double lead = 0.0;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((pathAxes >> axis & 1) == 0) {
-      const auto delta = static_cast<double>(machine[axis] - ctx.machine[axis]);
+      const auto delta =
+          static_cast<double>(machine[axis] - ctx.machine.position[axis]);
       (ctx.isRotary(axis) ? rotary : linear) += delta * delta;
       lead = ctx.isRotary(axis) ? lead : std::max(lead, std::fabs(delta));
     }
@@ -310,9 +313,9 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
 HeldMove straightTo(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
   HeldMove move;
   move.rapid = rapid;
-  move.start = programToWork(ctx, ctx.program);
+  move.start = programToWork(ctx, ctx.machine.program);
   move.end = programToWork(ctx, target);
-  ctx.program = target;
+  ctx.machine.program = target;
   return move;
 }
 
@@ -336,7 +339,7 @@ std::optional<PlanePoint> arcCenter(const mbrt_ctx& ctx,
                                     const MotionWords& words,
                                     const AxisCounts& start,
                                     const AxisCounts& target, bool clockwise) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const PlaneAxes plane = planeAxes(ctx.machine.modal.plane);
   const auto [p, q] = planeIndex(ctx);
   const Point from{static_cast<double>(start[p]),
                    static_cast<double>(start[q])};
@@ -378,14 +381,15 @@ namespace {
 
 mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
                     const AxisCounts& start, const AxisCounts& target) {
-  const PlaneAxes plane = planeAxes(ctx.modal.plane);
+  const PlaneAxes plane = planeAxes(ctx.machine.modal.plane);
   const auto [p, q] = planeIndex(ctx);
   if (p < 0 || q < 0) {
     return raise(ctx, AlarmId::IllegalPlaneSelect,
-                 fmt::format("G{} arcs need axes {} and {}", ctx.modal.plane,
-                             plane.letters[0], plane.letters[1]));
+                 fmt::format("G{} arcs need axes {} and {}",
+                             ctx.machine.modal.plane, plane.letters[0],
+                             plane.letters[1]));
   }
-  const bool clockwise = ctx.modal.motion == 2;
+  const bool clockwise = ctx.machine.modal.motion == 2;
   const Point from{static_cast<double>(start[p]),
                    static_cast<double>(start[q])};
   const Point to{static_cast<double>(target[p]),
@@ -418,16 +422,18 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
     return raise(ctx, AlarmId::Unsupported,
                  fmt::format("G{:02} in G{} under unequal scaling or a "
                              "rotation in another plane",
-                             ctx.modal.motion, ctx.modal.plane));
+                             ctx.machine.modal.motion,
+                             ctx.machine.modal.plane));
   }
   AxisValues centerPoint{};
   centerPoint[p] = center.x;
   centerPoint[q] = center.y;
-  Point workCenter = planePoint(
-      ctx.frames.transforms() ? transformPoint(ctx, centerPoint) : centerPoint,
-      p, q);
-  workCenter.x += static_cast<double>(ctx.frames.local[p]);
-  workCenter.y += static_cast<double>(ctx.frames.local[q]);
+  Point workCenter = planePoint(ctx.machine.frames.transforms()
+                                    ? transformPoint(ctx, centerPoint)
+                                    : centerPoint,
+                                p, q);
+  workCenter.x += static_cast<double>(ctx.machine.frames.local[p]);
+  workCenter.y += static_cast<double>(ctx.machine.frames.local[q]);
   const bool turnsClockwise = clockwise != frame.reversed;
   const AxisCounts work = programToWork(ctx, target);
   if (compensating(ctx)) {
@@ -438,7 +444,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
     move.end = work;
     move.center[0] = workCenter.x;
     move.center[1] = workCenter.y;
-    ctx.program = target;
+    ctx.machine.program = target;
     return compensateMove(ctx, std::move(move));
   }
   const double radius = startRadius * frame.scale;
@@ -446,7 +452,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
   const double arc = radius * sweep;
   const AxisCounts machine = workToMachine(ctx, work);
   const MoveOrigin origin = blockOrigin(ctx);
-  const AxisCounts workStart = machineToWork(ctx, ctx.machine);
+  const AxisCounts workStart = machineToWork(ctx, ctx.machine.position);
   const Point startPoint{static_cast<double>(workStart[p]),
                          static_cast<double>(workStart[q])};
   advanceClock(
@@ -457,7 +463,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
       arcTurnMinutes(ctx, origin,
                      {p, q, workCenter, startPoint, sweep, turnsClockwise},
                      workStart));
-  ctx.program = target;
+  ctx.machine.program = target;
   moveTo(ctx, turnsClockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
          workCenter, origin);
   widenBoxByArc(ctx, p, q, workCenter, startPoint, radius, sweep,
@@ -468,7 +474,7 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
 } // namespace
 
 void switchUnits(mbrt_ctx& ctx, bool inch) {
-  if (ctx.modal.inch == inch) {
+  if (ctx.machine.modal.inch == inch) {
     return;
   }
   const double factor = unitCountsFactor(inch);
@@ -491,10 +497,11 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
       }
     }
   };
-  convertAll(ctx.machine); // the offset memory keeps the machine's unit
-  Frames& frames = ctx.frames;
-  convertAll(ctx.skipPosition);
-  convertAll(ctx.intermediate);
+  convertAll(
+      ctx.machine.position); // the offset memory keeps the machine's unit
+  Frames& frames = ctx.machine.frames;
+  convertAll(ctx.machine.skipPosition);
+  convertAll(ctx.machine.intermediate);
   convertAll(frames.local);
   convertAll(frames.preset);
   convertAll(frames.toolGeometry); // a lathe's tool offsets in force
@@ -504,7 +511,7 @@ void switchUnits(mbrt_ctx& ctx, bool inch) {
   scaleAll(frames.scaleCenter);
   frames.rotationCenter[0] *= factor;
   frames.rotationCenter[1] *= factor;
-  ctx.modal.inch = inch;
+  ctx.machine.modal.inch = inch;
   resyncProgram(ctx);
 }
 
@@ -519,7 +526,7 @@ mbrt_status refuseFeedPerRevolution(mbrt_ctx& ctx) {
                fmt::format("F{} per minute: a lathe's feed per revolution "
                            "(G99 F{}; on a mill G95 feeds per revolution); "
                            "a lathe profile has \"series\": \"T\"",
-                           ctx.modal.feed, ctx.modal.feed));
+                           ctx.machine.modal.feed, ctx.machine.modal.feed));
 }
 
 /// PS0011 for a feed move without F (in G93 without F in its block, in G95
@@ -529,30 +536,32 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
   if (readingShape(ctx)) {
     return 0; // a shape's moves are read, not made
   }
-  if (ctx.modal.feedMode == 93 && !ctx.feedInBlock) {
+  if (ctx.machine.modal.feedMode == 93 && !ctx.machine.feedInBlock) {
     return raise(ctx, AlarmId::FeedZero, "G93 needs F in every feed block");
   }
   const bool perRevolution =
-      ctx.modal.feedMode == 95 || cutsThread(ctx.modal.motion);
-  if (perRevolution && ctx.lastWords[lastWordSlot(LastWord::S)] <= 0.0) {
-    return raise(
-        ctx, AlarmId::FeedZero,
-        cutsThread(ctx.modal.motion) ? "threading needs a spindle speed (S)"
-        : ctx.profile.lathe() ? fmt::format("feed per revolution (G{}) needs a "
-                                            "spindle speed (S)",
-                                            writtenLatheCode(ctx, 950))
-                              : std::string("G95 needs a spindle speed (S)"));
+      ctx.machine.modal.feedMode == 95 || cutsThread(ctx.machine.modal.motion);
+  if (perRevolution &&
+      ctx.machine.lastWords[lastWordSlot(LastWord::S)] <= 0.0) {
+    return raise(ctx, AlarmId::FeedZero,
+                 cutsThread(ctx.machine.modal.motion)
+                     ? "threading needs a spindle speed (S)"
+                 : ctx.profile.lathe()
+                     ? fmt::format("feed per revolution (G{}) needs a "
+                                   "spindle speed (S)",
+                                   writtenLatheCode(ctx, 950))
+                     : std::string("G95 needs a spindle speed (S)"));
   }
-  if (ctx.modal.feed > 0.0) {
-    return ctx.modal.feedMode != 94 || ctx.profile.lathe() ||
-                   ctx.modal.feed >= kLeastFeed[ctx.modal.inch]
+  if (ctx.machine.modal.feed > 0.0) {
+    return ctx.machine.modal.feedMode != 94 || ctx.profile.lathe() ||
+                   ctx.machine.modal.feed >= kLeastFeed[ctx.machine.modal.inch]
                ? 0
                : refuseFeedPerRevolution(ctx);
   }
   return raise(ctx, AlarmId::FeedZero,
                cycle != 0 ? fmt::format("G{} needs F greater than 0", cycle)
                           : fmt::format("G{:02} needs F greater than 0",
-                                        ctx.modal.motion));
+                                        ctx.machine.modal.motion));
 }
 
 /// A straight move of the control point to `machine`.
@@ -568,7 +577,8 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
   advanceClock(ctx, length, rapid, length.units, origin,
                rapid ? 0.0
                      : lineTurnMinutes(ctx, origin,
-                                       machineToWork(ctx, ctx.machine), work));
+                                       machineToWork(ctx, ctx.machine.position),
+                                       work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
   return 0;
@@ -577,25 +587,25 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
 /// A rapid to machine coordinates on the axes in `mask`, when it moves.
 mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
                                       const AxisCounts& position) {
-  AxisCounts machine = ctx.machine;
+  AxisCounts machine = ctx.machine.position;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((mask >> axis & 1) != 0) {
       machine[axis] = position[axis];
     }
   }
-  if (machine == ctx.machine) {
+  if (machine == ctx.machine.position) {
     return 0;
   }
   const mbrt_status status =
       moveToMachine(ctx, machineToWork(ctx, machine), machine, true, 0);
-  const AxisCounts programmed = ctx.program;
+  const AxisCounts programmed = ctx.machine.program;
   resyncProgram(ctx);
   if (ctx.compensation.engaged) {
     // The tool stands on its vector: in the plane the program position is
     // still the programmed point.
     const PlaneIndex plane = planeIndex(ctx);
-    ctx.program[plane.p] = programmed[plane.p];
-    ctx.program[plane.q] = programmed[plane.q];
+    ctx.machine.program[plane.p] = programmed[plane.p];
+    ctx.machine.program[plane.q] = programmed[plane.q];
   }
   return status;
 }
@@ -603,7 +613,7 @@ mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
 } // namespace
 
 const AxisCounts& programPosition(const mbrt_ctx& ctx) {
-  return ctx.program;
+  return ctx.machine.program;
 }
 
 void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
@@ -613,7 +623,8 @@ void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
   advanceClock(ctx, length, rapid, length.units, origin,
                rapid ? 0.0
                      : lineTurnMinutes(ctx, origin,
-                                       machineToWork(ctx, ctx.machine), work));
+                                       machineToWork(ctx, ctx.machine.position),
+                                       work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
 }
@@ -621,7 +632,7 @@ void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
 void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
                  bool clockwise, const MoveOrigin& origin) {
   const auto [p, q] = planeIndex(ctx);
-  const AxisCounts workStart = machineToWork(ctx, ctx.machine);
+  const AxisCounts workStart = machineToWork(ctx, ctx.machine.position);
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
   const Point to{static_cast<double>(work[p]), static_cast<double>(work[q])};
@@ -643,38 +654,38 @@ void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle) {
   const AxisCounts work = programToWork(ctx, target);
-  ctx.program = target;
+  ctx.machine.program = target;
   return moveToMachine(ctx, work, workToMachine(ctx, work), rapid, cycle);
 }
 
 mbrt_status moveToFrame(mbrt_ctx& ctx) {
   if (compensating(ctx)) { // a move without motion in the plane
-    return compensateMove(ctx,
-                          straightTo(ctx, ctx.program, ctx.modal.motion == 0));
+    return compensateMove(ctx, straightTo(ctx, ctx.machine.program,
+                                          ctx.machine.modal.motion == 0));
   }
-  const AxisCounts work = programToWork(ctx, ctx.program);
+  const AxisCounts work = programToWork(ctx, ctx.machine.program);
   const AxisCounts machine = workToMachine(ctx, work);
-  if (machine == ctx.machine) {
+  if (machine == ctx.machine.position) {
     return 0;
   }
-  return moveToMachine(ctx, work, machine, ctx.modal.motion == 0, 0);
+  return moveToMachine(ctx, work, machine, ctx.machine.modal.motion == 0, 0);
 }
 
 mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
                               int reference) {
-  const AxisCounts intermediate = workTarget(ctx, words, ctx.program);
+  const AxisCounts intermediate = workTarget(ctx, words, ctx.machine.program);
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((words.axisMask >> axis & 1) != 0) {
-      ctx.intermediate[axis] = intermediate[axis];
+      ctx.machine.intermediate[axis] = intermediate[axis];
     }
   }
-  ctx.intermediateMask |= words.axisMask;
+  ctx.machine.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
   const bool compensated = ctx.compensation.engaged;
   if (const mbrt_status status = leaveOffsetAt(ctx, intermediate)) {
     return status;
   }
-  if (!compensated && workToMachine(ctx, work) != ctx.machine) {
+  if (!compensated && workToMachine(ctx, work) != ctx.machine.position) {
     if (const mbrt_status status = moveStraight(ctx, intermediate, true)) {
       return status;
     }
@@ -691,24 +702,24 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
 }
 
 mbrt_status returnFromReference(mbrt_ctx& ctx, const MotionWords& words) {
-  const std::uint32_t mask = words.axisMask & ctx.intermediateMask;
-  AxisCounts through = ctx.program;
+  const std::uint32_t mask = words.axisMask & ctx.machine.intermediateMask;
+  AxisCounts through = ctx.machine.program;
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((mask >> axis & 1) != 0) {
-      through[axis] = ctx.intermediate[axis];
+      through[axis] = ctx.machine.intermediate[axis];
     }
   }
   if (const mbrt_status status = leaveOffsetAt(ctx, through)) {
     return status;
   }
-  if (through != ctx.program) {
+  if (through != ctx.machine.program) {
     if (const mbrt_status status = moveStraight(ctx, through, true)) {
       return status;
     }
   }
   // In G91 the words count from the intermediate point. Under cutter
   // compensation this move starts it again.
-  return moveLine(ctx, workTarget(ctx, words, ctx.program), true);
+  return moveLine(ctx, workTarget(ctx, words, ctx.machine.program), true);
 }
 
 namespace {
@@ -720,7 +731,7 @@ Point3 tipOf(const mbrt_ctx& ctx, const AxisCounts& machine) {
     const int axis = ctx.axisOf(static_cast<char>('X' + i));
     if (axis >= 0) {
       const Counts length =
-          axis == ctx.frames.lengthAxis ? ctx.frames.length : 0;
+          axis == ctx.machine.frames.lengthAxis ? ctx.machine.frames.length : 0;
       tip[i] = static_cast<double>(machine[axis] - length) / ctx.countsPerMm();
     }
   }
@@ -740,28 +751,30 @@ mbrt_status skipMove(mbrt_ctx& ctx, const MotionWords& words, double p) {
   if (const mbrt_status status = checkFeed(ctx, kSkipCode)) {
     return status;
   }
-  const AxisCounts target = workTarget(ctx, words, ctx.program);
+  const AxisCounts target = workTarget(ctx, words, ctx.machine.program);
   const AxisCounts machine = workToMachine(ctx, programToWork(ctx, target));
-  const std::optional<double> contact = firstContact(
-      ctx.profile.probe, tipOf(ctx, ctx.machine), tipOf(ctx, machine), signal);
+  const std::optional<double> contact =
+      firstContact(ctx.profile.probe, tipOf(ctx, ctx.machine.position),
+                   tipOf(ctx, machine), signal);
   mbrt_status status = 0;
   if (contact) {
-    AxisCounts stop = ctx.machine;
+    AxisCounts stop = ctx.machine.position;
     for (int axis = 0; axis < ctx.axisCount(); ++axis) {
       stop[axis] += static_cast<Counts>(roundHalfAway(
-          *contact * static_cast<double>(machine[axis] - ctx.machine[axis])));
+          *contact *
+          static_cast<double>(machine[axis] - ctx.machine.position[axis])));
     }
     status = moveToMachine(ctx, machineToWork(ctx, stop), stop, false, 0);
     resyncProgram(ctx);
   } else {
     status = moveStraight(ctx, target, false);
   }
-  ctx.skipPosition = localPosition(ctx);
+  ctx.machine.skipPosition = localPosition(ctx);
   return status;
 }
 
 mbrt_status moveInMachineCoordinates(mbrt_ctx& ctx, const MotionWords& words) {
-  if (ctx.modal.incremental) {
+  if (ctx.machine.modal.incremental) {
     return 0;
   }
   if (const mbrt_status status = suspendCompensation(ctx, words.axisMask)) {
@@ -795,7 +808,7 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
 mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
                          const AxisCounts& center, bool clockwise) {
   const PlaneIndex plane = planeIndex(ctx);
-  const PlaneAxes axes = planeAxes(ctx.modal.plane);
+  const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
   MotionWords words;
   words.axisMask =
       (std::uint32_t{1} << plane.p) | (std::uint32_t{1} << plane.q);
@@ -805,40 +818,41 @@ mbrt_status moveArcAbout(mbrt_ctx& ctx, const AxisCounts& end,
     const int index = axes.centerIndex[i];
     words.centerMask |= std::uint32_t{1} << index;
     words.center[static_cast<std::size_t>(index)] =
-        center[axis] - ctx.program[axis];
+        center[axis] - ctx.machine.program[axis];
   }
-  const ModalState modal = ctx.modal;
-  ctx.modal.motion = clockwise ? 2 : 3;
-  ctx.modal.incremental = false;
+  const ModalState modal = ctx.machine.modal;
+  ctx.machine.modal.motion = clockwise ? 2 : 3;
+  ctx.machine.modal.incremental = false;
   const mbrt_status status = executeMotion(ctx, words);
-  ctx.modal.motion = modal.motion;
-  ctx.modal.incremental = modal.incremental;
+  ctx.machine.modal.motion = modal.motion;
+  ctx.machine.modal.incremental = modal.incremental;
   return status;
 }
 
 namespace {
 
-/// G34's K (a length per revolution) into ctx.leadChange; PS0014 when the
-/// lead would shrink to nothing before the thread's end.
+/// G34's K (a length per revolution) into ctx.machine.leadChange; PS0014 when
+/// the lead would shrink to nothing before the thread's end.
 mbrt_status readLeadChange(mbrt_ctx& ctx, const MotionWords& words,
                            const AxisCounts& target) {
   const bool hasK = (words.centerMask >> 2 & 1) != 0;
-  ctx.leadChange =
+  ctx.machine.leadChange =
       hasK ? static_cast<double>(words.center[2]) / ctx.scale() : 0.0;
   double longest = 0.0; // the thread's length along its longer axis
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if (!ctx.isRotary(axis)) {
-      longest = std::max(longest, std::fabs(static_cast<double>(
-                                      target[axis] - ctx.program[axis])) /
-                                      ctx.scale());
+      longest =
+          std::max(longest, std::fabs(static_cast<double>(
+                                target[axis] - ctx.machine.program[axis])) /
+                                ctx.scale());
     }
   }
-  const double lead = ctx.modal.feed;
-  if (lead * lead + 2.0 * ctx.leadChange * longest <= 0.0) {
+  const double lead = ctx.machine.modal.feed;
+  if (lead * lead + 2.0 * ctx.machine.leadChange * longest <= 0.0) {
     return raise(ctx, AlarmId::IllegalLeadCommand,
                  fmt::format("G34 F{} K{}: the lead shrinks to 0 before the "
                              "thread's end, {} long",
-                             lead, ctx.leadChange, longest));
+                             lead, ctx.machine.leadChange, longest));
   }
   return 0;
 }
@@ -846,8 +860,8 @@ mbrt_status readLeadChange(mbrt_ctx& ctx, const MotionWords& words,
 } // namespace
 
 mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
-  const int mode = ctx.modal.motion;
-  const AxisCounts start = ctx.program;
+  const int mode = ctx.machine.modal.motion;
+  const AxisCounts start = ctx.machine.program;
   AxisCounts target = workTarget(ctx, words, start);
   if (words.angle && !(ctx.corner.pending && ctx.corner.openEnd)) {
     if (const mbrt_status status = endAngledLine(ctx, words, start, target)) {

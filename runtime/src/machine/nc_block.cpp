@@ -65,7 +65,7 @@ mbrt_status readMCode(mbrt_ctx& ctx, double value, BlockCodes& codes) {
   codes.m[codes.mCount++] = static_cast<int>(value);
   // The rigid tapping M code (5210, M29) makes the next G84/G74 rigid.
   if (value == ctx.profile.rigidTappingCode) {
-    ctx.modal.rigidTapping = true;
+    ctx.machine.modal.rigidTapping = true;
   }
   return 0;
 }
@@ -147,7 +147,7 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, NcBlock& block) {
       return *status;
     }
   }
-  if (letter == 'K' && ctx.modal.cycle != 0) {
+  if (letter == 'K' && ctx.machine.modal.cycle != 0) {
     block.k = roundHalfAway(numeric(word.value));
     return 0;
   }
@@ -199,9 +199,9 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, NcBlock& block) {
                              numeric(word.value), letter));
   }
   if (letter == 'F') {
-    ctx.feedInBlock = true;
-    ctx.modal.feed = numeric(word.value);
-    ctx.lastWords[lastWordSlot(LastWord::F)] = ctx.modal.feed;
+    ctx.machine.feedInBlock = true;
+    ctx.machine.modal.feed = numeric(word.value);
+    ctx.machine.lastWords[lastWordSlot(LastWord::F)] = ctx.machine.modal.feed;
     return 0;
   }
   if (letter == 'Q') {
@@ -248,10 +248,10 @@ mbrt_status readWord(mbrt_ctx& ctx, const mbrt_word& word, NcBlock& block) {
                  fmt::format("{}{}: at most 8 digits", letter, value));
   }
   if (letter == 'S' && block.frames.code == 920 && ctx.profile.lathe()) {
-    ctx.spindleLimit = value; // G50 S: not a spindle speed
+    ctx.machine.spindleLimit = value; // G50 S: not a spindle speed
     return 0;
   }
-  ctx.lastWords[index] = value;
+  ctx.machine.lastWords[index] = value;
   switch (letter) {
     case 'M':
       return readMCode(ctx, value, block.codes);
@@ -348,7 +348,8 @@ mbrt_status decideFlow(mbrt_ctx& ctx, const NcBlock& block, mbrt_flow* flow) {
 
 /// G00..G03 motion, when the block has any.
 mbrt_status executeBlockMotion(mbrt_ctx& ctx, const MotionWords& motion) {
-  const bool arcMode = ctx.modal.motion == 2 || ctx.modal.motion == 3;
+  const bool arcMode =
+      ctx.machine.modal.motion == 2 || ctx.machine.modal.motion == 3;
   // An arc block may leave out the end point: a full circle (I J K) or, with
   // R, no motion at all.
   if (motion.axisMask != 0 ||
@@ -378,15 +379,16 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const NcBlock& block,
     return w.letter == 'G' && gTenths(w) == 990.0;
   };
   constexpr double kLatheFeed[2] = {10.0, 0.4}; // mm, inch per revolution
-  if (ctx.modal.returnToR && ctx.modal.cycle == 0 && ctx.feedInBlock &&
-      ctx.modal.feed < kLatheFeed[ctx.modal.inch] &&
+  if (ctx.machine.modal.returnToR && ctx.machine.modal.cycle == 0 &&
+      ctx.machine.feedInBlock &&
+      ctx.machine.modal.feed < kLatheFeed[ctx.machine.modal.inch] &&
       std::any_of(words, words + count, isG99)) {
     return raise(ctx, AlarmId::Unsupported,
                  fmt::format("G99 F{}: a lathe's feed per revolution (on a "
                              "mill G99 is the canned cycle's R level and F "
                              "is per minute; G95 feeds per revolution); "
                              "a lathe profile has \"series\": \"T\"",
-                             ctx.modal.feed));
+                             ctx.machine.modal.feed));
   }
   return 0;
 }
@@ -398,18 +400,19 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const NcBlock& block) {
     return raise(ctx, AlarmId::SkipInCrc,
                  "G31 skip in cutter compensation mode (G41/G42)");
   }
-  if (ctx.modal.cycle != 0) {
+  if (ctx.machine.modal.cycle != 0) {
     return refuseUnderCompensation(
-        ctx, fmt::format("canned cycle G{}", ctx.modal.cycle));
+        ctx, fmt::format("canned cycle G{}", ctx.machine.modal.cycle));
   }
   if (ctx.compensation.codeInBlock && ctx.compensation.engaged &&
-      ctx.modal.compensation != 40 && block.motion.centerMask != 0 &&
-      (ctx.modal.motion <= 1 || ctx.modal.motion == kThreadingMotion ||
-       ctx.modal.motion == kVariableLeadMotion)) {
+      ctx.machine.modal.compensation != 40 && block.motion.centerMask != 0 &&
+      (ctx.machine.modal.motion <= 1 ||
+       ctx.machine.modal.motion == kThreadingMotion ||
+       ctx.machine.modal.motion == kVariableLeadMotion)) {
     return refuseUnderCompensation(
         ctx, fmt::format("G{} with I, J or K in offset mode (a vector "
                          "direction)",
-                         ctx.modal.compensation));
+                         ctx.machine.modal.compensation));
   }
   return 0;
 }
@@ -420,14 +423,16 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, NcBlock& block) {
   const MotionWords& motion = block.motion;
   // After a chamfer or corner R only a G01 may come: a cycle, dwell or
   // reference return would run before the alarm (lathe_corners.h).
-  if (ctx.corner.pending && (block.nonModal != 0 || ctx.modal.cycle != 0)) {
+  if (ctx.corner.pending &&
+      (block.nonModal != 0 || ctx.machine.modal.cycle != 0)) {
     ctx.corner.pending = false;
     return raise(ctx, AlarmId::NotG01AfterCorner,
                  fmt::format("the block after a chamfer or corner R (line "
                              "{}) must be G01",
                              ctx.corner.line));
   }
-  if (hasCommaWords(motion) && (block.nonModal != 0 || ctx.modal.cycle != 0)) {
+  if (hasCommaWords(motion) &&
+      (block.nonModal != 0 || ctx.machine.modal.cycle != 0)) {
     return raise(ctx, AlarmId::TooManyAddressCommands,
                  "a chamfer, corner R or ,A belongs to a G00-G03 move, not to "
                  "a cycle, a dwell or a reference return");
@@ -461,7 +466,7 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, NcBlock& block) {
   // G53 positions in machine coordinates whatever G16 says; the
   // intermediate point of G28, G29 and G30 in polar coordinates is not
   // modelled yet.
-  if (ctx.modal.polar && block.nonModal != 530) {
+  if (ctx.machine.modal.polar && block.nonModal != 530) {
     if ((block.nonModal == 280 || block.nonModal == 290 ||
          block.nonModal == 300) &&
         writesPlaneWords(ctx, motion)) {
@@ -502,7 +507,7 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, NcBlock& block) {
   if (block.nonModal == 530) {
     return moveInMachineCoordinates(ctx, motion);
   }
-  if (ctx.modal.cycle != 0) {
+  if (ctx.machine.modal.cycle != 0) {
     if (!block.k && block.hasL) {
       block.k = block.l; // the older controls' L
     }
@@ -583,7 +588,7 @@ void flattenExecuted(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow, NcBlock& block) {
   scanWords(ctx, words, count, block);
-  ctx.feedInBlock = false;
+  ctx.machine.feedInBlock = false;
   ctx.compensation.codeInBlock = false;
   ctx.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
@@ -642,7 +647,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     }
     lengthChanged = lengthChanged || wearChanged;
   }
-  const std::uint64_t movesBefore = ctx.moves;
+  const std::uint64_t movesBefore = ctx.machine.moves;
   const std::uint64_t planeMovesBefore = ctx.compensation.planeMoves;
   // The axis words of G52, G92, G51, G51.1, G50.1 and G68 are their data.
   if (block.frames.code == 0) {
@@ -663,7 +668,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   // Under compensation a move may be held: the block's axis words say
   // whether it moved.
   if (lengthChanged && (compensating(ctx) ? block.motion.axisMask == 0
-                                          : ctx.moves == movesBefore)) {
+                                          : ctx.machine.moves == movesBefore)) {
     if (const mbrt_status status = moveToFrame(ctx)) {
       return status;
     }
@@ -689,12 +694,12 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow) {
   NcBlock block;
-  const std::uint64_t movesBefore = ctx.moves;
+  const std::uint64_t movesBefore = ctx.machine.moves;
   const mbrt_status status = executeWords(ctx, words, count, flow, block);
   // A block that moved before its alarm (a G70 along a shape the tool
   // cannot follow) is in the flattened program too: read back, it moves
   // and alarms alike.
-  if (status != 0 && ctx.moves != movesBefore && !block.flattened &&
+  if (status != 0 && ctx.machine.moves != movesBefore && !block.flattened &&
       ctx.gcodeSink.fn != nullptr) {
     flattenExecuted(ctx, words, count, *flow, block);
   }
@@ -723,7 +728,7 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   if (count > 0 && words[0].letter == 'N') {
     sequence = mbc::numeric(words[0].value);
     ctx->blockSequence = *sequence;
-    ctx->lastWords[lastWordSlot(LastWord::N)] = *sequence;
+    ctx->machine.lastWords[lastWordSlot(LastWord::N)] = *sequence;
     ++words;
     --count;
   }

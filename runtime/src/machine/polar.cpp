@@ -34,7 +34,7 @@ void polarToCartesian(const mbrt_ctx& ctx, MotionWords& words) {
   const double x = static_cast<double>(position[p.p]) / scaleX;
   const double y = static_cast<double>(position[p.q]) / scaleY;
   constexpr double kDegree = std::numbers::pi / 180.0;
-  const bool incremental = ctx.modal.incremental;
+  const bool incremental = ctx.machine.modal.incremental;
   double poleX = 0.0;
   double poleY = 0.0;
   double radius = std::hypot(x, y);

@@ -27,7 +27,7 @@ struct TurnTime {
 };
 
 TurnTime turnTime(const mbrt_ctx& ctx, const MoveOrigin& origin) {
-  const double unitsPerSurfaceUnit = ctx.modal.inch ? 12.0 : 1000.0;
+  const double unitsPerSurfaceUnit = ctx.machine.modal.inch ? 12.0 : 1000.0;
   double limit = origin.spindleLimit;
   if (const double top = ctx.profile.parameter(3772); top > 0.0) {
     limit = limit > 0.0 ? std::min(limit, top) : top;

@@ -46,7 +46,7 @@ void appendFixedText(std::string& out, double value) {
 /// K is the repeat count of a canned cycle.
 bool isCoordinateLetter(const mbrt_ctx& ctx, char letter) {
   return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
-         (letter == 'K' && ctx.modal.cycle == 0) || letter == 'R' ||
+         (letter == 'K' && ctx.machine.modal.cycle == 0) || letter == 'R' ||
          letter == 'Q' || isCommaWord(letter);
 }
 
@@ -111,7 +111,7 @@ bool readsWholeNumber(const mbrt_ctx& ctx, char letter, bool scaling,
                       LatheCycleWords cycle) {
   return isWholeNumberAddress(letter) || letter == 'L' ||
          (letter == 'P' && !scaling) ||
-         (letter == 'K' && ctx.modal.cycle != 0) ||
+         (letter == 'K' && ctx.machine.modal.cycle != 0) ||
          (letter == 'Q' && cycle == LatheCycleWords::AsWritten);
 }
 
@@ -171,8 +171,8 @@ void sendData(mbrt_ctx& ctx, const std::string& data) {
     send(ctx, data + '\n');
     return;
   }
-  send(ctx,
-       fmt::format("G90 {}\n{}", data, ctx.modal.incremental ? "G91\n" : ""));
+  send(ctx, fmt::format("G90 {}\n{}", data,
+                        ctx.machine.modal.incremental ? "G91\n" : ""));
 }
 
 } // namespace
