@@ -30,16 +30,16 @@ mbrt_level* mbrt_current_level(mbrt_ctx* ctx) {
 }
 
 mbrt_num* mbrt_common_base(mbrt_ctx* ctx) {
-  return ctx->commons.data();
+  return ctx->data.commons.data();
 }
 
 mbrt_block_state* mbrt_block_state_of(mbrt_ctx* ctx) {
-  return &ctx->block;
+  return &ctx->run.block;
 }
 
 mbrt_status mbrt_nc_steps(mbrt_ctx* ctx, const mbrt_nc_run* run, size_t first,
                           mbrt_flow* flow, size_t* next) {
-  std::vector<mbrt_word>& words = ctx->stepWords;
+  std::vector<mbrt_word>& words = ctx->run.stepWords;
   for (size_t i = first; i < run->count; ++i) {
     *next = i + 1;
     const int32_t* step = run->steps + 3 * i;

@@ -11,26 +11,26 @@ void bufferMotion(void* user, const mbrt_motion* motion) {
   mbrt_motion copy = *motion;
   // The caller's program name lives in its call record, which is gone
   // after the call returns.
-  copy.program = ctx->bufferedNames.insert(motion->program).first->c_str();
-  ctx->motionBuffer.push_back(copy);
+  copy.program = ctx->host.bufferedNames.insert(motion->program).first->c_str();
+  ctx->host.motionBuffer.push_back(copy);
   mbc::rt::countOutput(*ctx, sizeof copy);
 }
 
 } // namespace
 
 void mbrt_set_alarm_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
-  ctx->alarmSink = {fn, user};
+  ctx->host.alarmSink = {fn, user};
 }
 
 void mbrt_buffer_motions(mbrt_ctx* ctx, int on) {
-  ctx->motionSink = on ? mbc::rt::Sink<mbrt_motion_fn>{bufferMotion, ctx}
-                       : mbc::rt::Sink<mbrt_motion_fn>{};
-  ctx->motionBuffer.clear();
+  ctx->host.motionSink = on ? mbc::rt::Sink<mbrt_motion_fn>{bufferMotion, ctx}
+                            : mbc::rt::Sink<mbrt_motion_fn>{};
+  ctx->host.motionBuffer.clear();
 }
 
 const mbrt_motion* mbrt_buffered_motions(const mbrt_ctx* ctx, size_t* count) {
-  *count = ctx->motionBuffer.size();
-  return ctx->motionBuffer.data();
+  *count = ctx->host.motionBuffer.size();
+  return ctx->host.motionBuffer.data();
 }
 
 /// A run of a compiled program as the main program: mbrt_start, the
@@ -48,7 +48,7 @@ mbrt_status mbrt_run_main(mbrt_ctx* ctx, const mbrt_program* program,
   }
   const mbrt_status st = mbrt_run_body(ctx, program);
   // The run is over: what the host calls next is no block's doing.
-  ctx->block.file = nullptr;
-  ctx->block.line = 0;
+  ctx->run.block.file = nullptr;
+  ctx->run.block.line = 0;
   return st;
 }

@@ -8,9 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <new>
 
 #include "context.h"
@@ -25,24 +23,6 @@ namespace mbc::rt {
 
 namespace {
 
-/// #3011/#3012 are fixed for the whole run. SOURCE_DATE_EPOCH makes them
-/// reproducible (UTC); otherwise they are the local date and time.
-void takeDateAndTime(mbrt_ctx& ctx) {
-  std::tm tm{};
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-  if (epoch != nullptr && *epoch != '\0') {
-    const auto seconds =
-        static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
-    gmtime_r(&seconds, &tm);
-  } else {
-    const std::time_t now = std::time(nullptr);
-    localtime_r(&now, &tm);
-  }
-  ctx.date =
-      (tm.tm_year + 1900) * 10000.0 + (tm.tm_mon + 1) * 100.0 + tm.tm_mday;
-  ctx.timeOfDay = tm.tm_hour * 10000.0 + tm.tm_min * 100.0 + tm.tm_sec;
-}
-
 /// Machine data from the profile: offsets to counts, commons, axes.
 void loadProfile(mbrt_ctx& ctx) {
   const Profile& profile = ctx.profile;
@@ -51,29 +31,29 @@ void loadProfile(mbrt_ctx& ctx) {
     ctx.axisIndex[profile.axes[axis] - 'A'] = static_cast<std::int8_t>(axis);
   }
   ctx.machine.modal.inch = profile.inch;
-  ctx.workOffsets.assign(kWorkOffsetCount, AxisCounts{});
+  ctx.data.workOffsets.assign(kWorkOffsetCount, AxisCounts{});
   for (int index = 0; index < kWorkOffsetCount; ++index) {
     for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
-      ctx.workOffsets[index][axis] = static_cast<Counts>(
+      ctx.data.workOffsets[index][axis] = static_cast<Counts>(
           roundToAxisCounts(ctx, axis, profile.workOffsets[index][axis]));
     }
   }
-  ctx.toolOffsets = profile.toolOffsets;
-  ctx.latheOffsets = profile.latheOffsets;
-  ctx.commons.fill(vacant());
-  ctx.commons98000.fill(vacant());
+  ctx.data.toolOffsets = profile.toolOffsets;
+  ctx.data.latheOffsets = profile.latheOffsets;
+  ctx.data.commons.fill(vacant());
+  ctx.data.commons98000.fill(vacant());
   for (const auto& [number, value] : profile.variables) {
-    ctx.commons[number] = value;
+    ctx.data.commons[number] = value;
   }
-  ctx.partsCount = profile.partsCount;
-  ctx.partsRequired = profile.partsRequired;
-  ctx.inputWords = {};
+  ctx.data.partsCount = profile.partsCount;
+  ctx.data.partsRequired = profile.partsRequired;
+  ctx.data.inputWords = {};
   for (const auto& [number, value] : profile.inputSignals) {
     setInputSignal(ctx, number, value);
   }
   // Call levels never outgrow this, so pushing one does not allocate.
-  ctx.levels.reserve(profile.macroNesting + 2);
-  ctx.calls.reserve(profile.totalNesting + 2);
+  ctx.stack.levels.reserve(profile.macroNesting + 2);
+  ctx.stack.calls.reserve(profile.totalNesting + 2);
 }
 
 /// The machine's power-on state (MachineState::reset), no held moves, the
@@ -84,78 +64,43 @@ void resetMachineState(mbrt_ctx& ctx) {
   ctx.compensation = CompensationState{};
   ctx.corner = CornerInsertion{};
   ctx.lathe.reset();
-  ctx.outputWords = {}; // the output signals #1100+ are off at power-on
+  ctx.data.outputWords = {}; // the output signals #1100+ are off at power-on
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
 }
 
 /// A run begins as a control starts a program after RESET: a new call
 /// stack, locals and counters; the machine stays where the last run left it
-/// (position, modal codes, frames, F), except for what RESET cancels: modal
-/// calls (G66), canned cycles (G80), cutter compensation (G40) and #3003/
-/// #3004. With parameter 3402#6 CLR the modal codes go back to their
-/// power-on values too (the control's clear state); the tool stays.
+/// (MachineState::startRun), and RESET cancels modal calls (G66), held
+/// moves and #3003/#3004.
 void startRun(mbrt_ctx& ctx, const char* mainProgram) {
-  ctx.mainProgram = mainProgram != nullptr ? mainProgram : "MAIN";
-  ctx.mainProgramNumber = parseProgramNumber(ctx.mainProgram.c_str());
-  ctx.entrySequence = 0.0;
-  ctx.parameterInput = false;
-  ctx.calls.clear();
-  ctx.modalCalls.clear();
-  ctx.blockCalls.clear();
-  ctx.macroDepth = 0;
-  ctx.subDepth = 0;
-  ctx.levels.assign(1, LocalLevel{});
+  ctx.stack.startRun(mainProgram);
   ctx.machine.startRun(ctx.profile);
   ctx.compensation = CompensationState{};
   ctx.corner = CornerInsertion{};
   ctx.lathe.startRun();
   resyncProgram(ctx);
-  ctx.singleBlockBits = 0.0;
-  ctx.feedHoldBits = 0.0;
-  ctx.block.file = nullptr;
-  ctx.block.line = 0;
-  ctx.block.blocks = 0;
-  ctx.interrupted = false;
-  ctx.outOfMemory = false;
-  ctx.refusedInSink = nullptr;
   // A main program the machine cannot have alarms at its first block.
-  ctx.illegalMainNumber = ctx.profile.programNumberDigits == 4 &&
-                          ctx.mainProgramNumber > kMaxProgramNumber4Digits;
-  setBlockLimit(ctx, ctx.illegalMainNumber ? 0 : ctx.maxBlocks);
-  ctx.output = OutputBudget{0, ctx.output.limit};
-  ctx.optionalStops = 0;
-  ctx.mainM99 = false;
-  ctx.alarm = PendingAlarm{};
-  ctx.motionBuffer.clear();
-  takeDateAndTime(ctx);
+  ctx.run.startRun(ctx.profile.programNumberDigits == 4 &&
+                   ctx.stack.mainProgramNumber > kMaxProgramNumber4Digits);
+  ctx.host.startRun();
 }
 
 /// A new context's state from its profile: what mbrt_create makes, and
 /// mbrt_reset again.
 void powerOn(mbrt_ctx& ctx, Profile profile) {
-  ctx.profileParameters = profile.parameters;
-  ctx.profileAxisParameters = profile.axisParameters;
+  ctx.data.profileParameters = profile.parameters;
+  ctx.data.profileAxisParameters = profile.axisParameters;
   ctx.profile = std::move(profile);
   loadProfile(ctx);
   resetMachineState(ctx);
   startRun(ctx, "MAIN");
 }
 
-/// What the host set on a context, which a reset keeps: the sinks, the
-/// limits, the block skip switches and the names of the programs loaded.
+/// What the host set on a context, which a reset keeps: where the output
+/// goes, the limits and the block skip switches.
 void keepHostSettings(mbrt_ctx& from, mbrt_ctx& to) {
-  to.alarmSink = from.alarmSink;
-  to.motionSink = from.motionSink;
-  to.printSink = from.printSink;
-  to.messageSink = from.messageSink;
-  to.traceSink = from.traceSink;
-  to.gcodeSink = from.gcodeSink;
-  to.block.tracing = from.block.tracing;
-  to.maxBlocks = from.maxBlocks;
-  to.output.limit = from.output.limit;
-  to.skipMask = from.skipMask;
-  to.programNames = std::move(from.programNames);
-  to.bufferedNames = std::move(from.bufferedNames); // buffered motions' names
+  to.host = std::move(from.host);
+  to.run.keepHostSettings(from.run);
 }
 
 } // namespace
@@ -209,39 +154,39 @@ void mbrt_destroy(mbrt_ctx* ctx) {
 }
 
 void mbrt_set_motion_sink(mbrt_ctx* ctx, mbrt_motion_fn fn, void* user) {
-  ctx->motionSink = {fn, user};
+  ctx->host.motionSink = {fn, user};
 }
 
 void mbrt_set_print_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
-  ctx->printSink = {fn, user};
+  ctx->host.printSink = {fn, user};
 }
 
 void mbrt_set_message_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
-  ctx->messageSink = {fn, user};
+  ctx->host.messageSink = {fn, user};
 }
 
 void mbrt_set_trace_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
-  ctx->traceSink = {fn, user};
-  ctx->block.tracing = fn != nullptr ? 1 : 0;
+  ctx->host.traceSink = {fn, user};
+  ctx->run.block.tracing = fn != nullptr ? 1 : 0;
 }
 
 void mbrt_set_gcode_sink(mbrt_ctx* ctx, mbrt_text_fn fn, void* user) {
-  ctx->gcodeSink = {fn, user};
+  ctx->host.gcodeSink = {fn, user};
 }
 
 void mbrt_interrupt(mbrt_ctx* ctx) {
-  ctx->interrupted = true;
-  setBlockLimit(*ctx, 0);
+  ctx->run.interrupted = true;
+  ctx->run.setBlockLimit(0);
 }
 
 void mbrt_out_of_memory(mbrt_ctx* ctx) {
-  ctx->outOfMemory = true;
-  setBlockLimit(*ctx, 0);
+  ctx->run.outOfMemory = true;
+  ctx->run.setBlockLimit(0);
 }
 
 void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks) {
-  ctx->maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
-  setBlockLimit(*ctx, ctx->maxBlocks);
+  ctx->run.maxBlocks = max_blocks != 0 ? max_blocks : kDefaultMaxBlocks;
+  ctx->run.setBlockLimit(ctx->run.maxBlocks);
 }
 
 double mbrt_parameter(const mbrt_ctx* ctx, int number) {
@@ -257,14 +202,14 @@ int mbrt_block_skip(const mbrt_ctx* ctx) {
 }
 
 void mbrt_set_block_skip(mbrt_ctx* ctx, unsigned mask) {
-  ctx->skipMask = mask;
+  ctx->run.skipMask = mask;
 }
 
 int mbrt_skip_switch(const mbrt_ctx* ctx, int n) {
   if (n == 1 && ctx->profile.blockSkip) {
     return 1;
   }
-  return n > 0 && n < 32 && ((ctx->skipMask >> n) & 1U) != 0;
+  return n > 0 && n < 32 && ((ctx->run.skipMask >> n) & 1U) != 0;
 }
 
 void mbrt_start(mbrt_ctx* ctx, const char* main_program) {
@@ -291,65 +236,65 @@ void mbrt_reset(mbrt_ctx* ctx) {
   mbrt_ctx fresh;
   keepHostSettings(*ctx, fresh);
   Profile profile = std::move(ctx->profile);
-  profile.parameters = std::move(ctx->profileParameters); // undo G10 L52
-  profile.axisParameters = std::move(ctx->profileAxisParameters);
+  profile.parameters = std::move(ctx->data.profileParameters); // undo G10 L52
+  profile.axisParameters = std::move(ctx->data.profileAxisParameters);
   deriveParameterFields(profile);
   powerOn(fresh, std::move(profile));
   *ctx = std::move(fresh);
 }
 
 mbrt_status mbrt_begin_block(mbrt_ctx* ctx, const char* file, int line) {
-  ctx->block.file = file;
-  ctx->block.line = line;
-  if (++ctx->block.blocks >
-      std::atomic_ref(ctx->block.max_blocks).load(std::memory_order_relaxed)) {
+  ctx->run.block.file = file;
+  ctx->run.block.line = line;
+  if (++ctx->run.block.blocks > std::atomic_ref(ctx->run.block.max_blocks)
+                                    .load(std::memory_order_relaxed)) {
     return mbrt_block_limit(ctx);
   }
   return 0;
 }
 
 mbrt_status mbrt_block_limit(mbrt_ctx* ctx) {
-  if (ctx->illegalMainNumber) {
-    return checkProgramNumber(*ctx, ctx->mainProgramNumber);
+  if (ctx->run.illegalMainNumber) {
+    return checkProgramNumber(*ctx, ctx->stack.mainProgramNumber);
   }
-  if (ctx->outOfMemory) {
+  if (ctx->run.outOfMemory) {
     return raise(*ctx, AlarmId::OutOfMemory,
                  "memory ran out; the run was stopped before this block");
   }
-  if (ctx->refusedInSink != nullptr) {
+  if (ctx->run.refusedInSink != nullptr) {
     return raise(*ctx, AlarmId::CalledFromSink,
                  fmt::format("{} was called from inside a sink (a motion, "
                              "text or alarm callback); the run was stopped "
                              "before this block",
-                             ctx->refusedInSink));
+                             ctx->run.refusedInSink));
   }
-  if (ctx->interrupted) {
+  if (ctx->run.interrupted) {
     return raise(*ctx, AlarmId::Interrupted,
                  "the run was stopped before this block");
   }
-  if (ctx->output.passed()) {
+  if (ctx->run.output.passed()) {
     return raiseOutputLimit(*ctx);
   }
   return raise(*ctx, AlarmId::ExecutionLimit,
                fmt::format("more than {} blocks executed (--max-blocks)",
-                           ctx->maxBlocks));
+                           ctx->run.maxBlocks));
 }
 
 void mbrt_finish(mbrt_ctx* ctx, int end_kind) {
   releaseCornerMove(*ctx);       // a chamfer block the run ended after
   releaseHeldMoves(*ctx, false); // the last move of a compensated contour
   if (end_kind == MBRT_END_M02_M30) {
-    ctx->partsCount += 1.0;
+    ctx->data.partsCount += 1.0;
   } else if (end_kind == MBRT_END_MAIN_M99) {
-    ctx->mainM99 = true;
+    ctx->run.mainM99 = true;
   }
 }
 
 void mbrt_get_stats(const mbrt_ctx* ctx, mbrt_stats* out) {
-  out->blocks = ctx->block.blocks;
+  out->blocks = ctx->run.block.blocks;
   out->moves = ctx->machine.moves;
-  out->optional_stops = ctx->optionalStops;
-  out->main_m99 = ctx->mainM99;
+  out->optional_stops = ctx->run.optionalStops;
+  out->main_m99 = ctx->run.mainM99;
   // Lengths are kept in mm, the box in counts: the summary speaks the
   // profile's unit.
   const double unit = ctx->profile.inch ? 25.4 : 1.0;

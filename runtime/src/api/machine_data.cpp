@@ -82,7 +82,7 @@ int mbrt_get_work_offset(const mbrt_ctx* ctx, const char* set, int axis,
   if (index < 0 || axis < 0 || axis >= ctx->axisCount()) {
     return 0;
   }
-  *value = countsToUnits(ctx->workOffsets[index][axis],
+  *value = countsToUnits(ctx->data.workOffsets[index][axis],
                          ctx->axisScale(axis, ctx->profile.inch));
   return 1;
 }
@@ -99,7 +99,7 @@ int mbrt_set_work_offset(mbrt_ctx* ctx, const char* set, int axis,
   if (!counts) {
     return 0;
   }
-  ctx->workOffsets[index][axis] = static_cast<Counts>(*counts);
+  ctx->data.workOffsets[index][axis] = static_cast<Counts>(*counts);
   if (index == ctx->machine.modal.workOffset || index == kExternalOffset) {
     resyncProgram(*ctx); // the machine stays
   }
@@ -123,14 +123,14 @@ int mbrt_get_tool_offset(const mbrt_ctx* ctx, int number, const char* field,
     const LatheOffsetKey* key =
         findField(latheOffsetKeys(ctx->profile.geometryWear), field);
     if (key != nullptr) {
-      *value = ctx->latheOffsets[n].*(key->field);
+      *value = ctx->data.latheOffsets[n].*(key->field);
     }
     return key != nullptr;
   }
   const MillOffsetKey* key =
       findField(millOffsetKeys(ctx->profile.toolOffsetMemory), field);
   if (key != nullptr) {
-    *value = ctx->toolOffsets[n].*(key->field);
+    *value = ctx->data.toolOffsets[n].*(key->field);
   }
   return key != nullptr;
 }
@@ -153,7 +153,7 @@ int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
       return 0;
     }
     const double units = tip ? value : *counts / increments;
-    ctx->latheOffsets[n].*(key->field) = units;
+    ctx->data.latheOffsets[n].*(key->field) = units;
     flattenLatheOffset(*ctx, key->geometry ? 10000 + number : number,
                        key->letter, units);
     return 1;
@@ -164,7 +164,7 @@ int mbrt_set_tool_offset(mbrt_ctx* ctx, int number, const char* field,
     return 0;
   }
   const double units = *counts / increments;
-  ctx->toolOffsets[n].*(key->field) = units;
+  ctx->data.toolOffsets[n].*(key->field) = units;
   flattenToolOffset(*ctx, key->l, number, units);
   return 1;
 }

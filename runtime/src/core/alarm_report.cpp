@@ -40,7 +40,7 @@ std::string locationPrefix(const std::string& file, int line) {
 
 mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
                   int macroNumber) {
-  PendingAlarm& alarm = ctx.alarm;
+  PendingAlarm& alarm = ctx.run.alarm;
   if (alarm.id != AlarmId::None || id == AlarmId::None) {
     return static_cast<mbrt_status>(id);
   }
@@ -50,14 +50,14 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   // Outside any block (before a run's first, or after mbrt_run_main
   // returned) the call came from the host: say so, where a block would
   // have its file and line.
-  if (ctx.block.file == nullptr && id != AlarmId::MacroAlarm) {
+  if (ctx.run.block.file == nullptr && id != AlarmId::MacroAlarm) {
     alarm.detail += alarm.detail.empty()
                         ? "called by the host, outside any block"
                         : " (called by the host, outside any "
                           "block)";
   }
-  alarm.file = ctx.block.file != nullptr ? ctx.block.file : "";
-  alarm.line = ctx.block.line;
+  alarm.file = ctx.run.block.file != nullptr ? ctx.run.block.file : "";
+  alarm.line = ctx.run.block.line;
   alarm.stack.clear();
   const BlockPlace& cycle = ctx.lathe.cycleBlock;
   if (cycle.line != 0 && alarm.line != cycle.line) {
@@ -65,29 +65,31 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
                                    cycle.file != nullptr ? cycle.file : "",
                                    cycle.line});
   }
-  for (auto call = ctx.calls.rbegin(); call != ctx.calls.rend(); ++call) {
+  for (auto call = ctx.stack.calls.rbegin(); call != ctx.stack.calls.rend();
+       ++call) {
     alarm.stack.push_back(CallSite{
         call->program, call->file != nullptr ? call->file : "", call->line});
   }
-  if (ctx.alarmSink.fn != nullptr) {
+  if (ctx.host.alarmSink.fn != nullptr) {
     std::string report(mbrt_alarm_report(&ctx, nullptr, 0), '\0');
     mbrt_alarm_report(&ctx, report.data(), report.size() + 1);
     callSink(ctx, [&] {
-      ctx.alarmSink.fn(ctx.alarmSink.user, report.data(), report.size());
+      ctx.host.alarmSink.fn(ctx.host.alarmSink.user, report.data(),
+                            report.size());
     });
   }
   return static_cast<mbrt_status>(id);
 }
 
 void sendMessage(mbrt_ctx& ctx, std::string_view text) {
-  if (ctx.messageSink.fn == nullptr) {
+  if (ctx.host.messageSink.fn == nullptr) {
     return;
   }
   const std::string line =
-      locationPrefix(ctx.block.file != nullptr ? ctx.block.file : "",
-                     ctx.block.line) +
+      locationPrefix(ctx.run.block.file != nullptr ? ctx.run.block.file : "",
+                     ctx.run.block.line) +
       fmt::format("message: {}\n", text);
-  sendText(ctx, ctx.messageSink, line);
+  sendText(ctx, ctx.host.messageSink, line);
 }
 
 } // namespace mbc::rt
@@ -101,11 +103,11 @@ mbrt_status mbrt_raise(mbrt_ctx* ctx, int alarm_id, const char* detail) {
 }
 
 int mbrt_alarm(const mbrt_ctx* ctx) {
-  return static_cast<int>(ctx->alarm.id);
+  return static_cast<int>(ctx->run.alarm.id);
 }
 
 int mbrt_alarm_number(const mbrt_ctx* ctx) {
-  const PendingAlarm& alarm = ctx->alarm;
+  const PendingAlarm& alarm = ctx->run.alarm;
   if (alarm.id == AlarmId::MacroAlarm) {
     return alarm.macroNumber;
   }
@@ -113,11 +115,12 @@ int mbrt_alarm_number(const mbrt_ctx* ctx) {
 }
 
 size_t mbrt_alarm_code(const mbrt_ctx* ctx, char* buf, size_t size) {
-  return copyText(alarmCode(ctx->alarm.id, ctx->alarm.macroNumber), buf, size);
+  return copyText(alarmCode(ctx->run.alarm.id, ctx->run.alarm.macroNumber), buf,
+                  size);
 }
 
 size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
-  const PendingAlarm& alarm = ctx->alarm;
+  const PendingAlarm& alarm = ctx->run.alarm;
   std::string report;
   if (alarm.id != AlarmId::None) {
     const std::string message = alarmMessage(alarm);
@@ -134,29 +137,30 @@ size_t mbrt_alarm_report(const mbrt_ctx* ctx, char* buf, size_t size) {
 }
 
 size_t mbrt_alarm_message(const mbrt_ctx* ctx, char* buf, size_t size) {
-  return copyText(ctx->alarm.id != AlarmId::None ? alarmMessage(ctx->alarm)
-                                                 : std::string(),
+  return copyText(ctx->run.alarm.id != AlarmId::None
+                      ? alarmMessage(ctx->run.alarm)
+                      : std::string(),
                   buf, size);
 }
 
 const char* mbrt_alarm_file(const mbrt_ctx* ctx) {
-  return ctx->alarm.file.c_str();
+  return ctx->run.alarm.file.c_str();
 }
 
 int mbrt_alarm_line(const mbrt_ctx* ctx) {
-  return ctx->alarm.line;
+  return ctx->run.alarm.line;
 }
 
 size_t mbrt_alarm_depth(const mbrt_ctx* ctx) {
-  return ctx->alarm.stack.size();
+  return ctx->run.alarm.stack.size();
 }
 
 int mbrt_alarm_call(const mbrt_ctx* ctx, size_t level, const char** program,
                     const char** file, int* line) {
-  if (level >= ctx->alarm.stack.size()) {
+  if (level >= ctx->run.alarm.stack.size()) {
     return 0;
   }
-  const CallSite& site = ctx->alarm.stack[level];
+  const CallSite& site = ctx->run.alarm.stack[level];
   *program = site.program.c_str();
   *file = site.file.c_str();
   *line = site.line;

@@ -3,7 +3,32 @@
 // behind when a run ends (api/lifetime.cpp calls them in order).
 #include "context.h"
 
+#include <cstdlib>
+#include <ctime>
+
 namespace mbc::rt {
+
+namespace {
+
+/// #3011/#3012 are fixed for the whole run. SOURCE_DATE_EPOCH makes them
+/// reproducible (UTC); otherwise they are the local date and time.
+void takeDateAndTime(RunControl& run) {
+  std::tm tm{};
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (epoch != nullptr && *epoch != '\0') {
+    const auto seconds =
+        static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
+    gmtime_r(&seconds, &tm);
+  } else {
+    const std::time_t now = std::time(nullptr);
+    localtime_r(&now, &tm);
+  }
+  run.date =
+      (tm.tm_year + 1900) * 10000.0 + (tm.tm_mon + 1) * 100.0 + tm.tm_mday;
+  run.timeOfDay = tm.tm_hour * 10000.0 + tm.tm_min * 100.0 + tm.tm_sec;
+}
+
+} // namespace
 
 void MachineState::clearModalCodes(const Profile& profile) {
   const bool inch = modal.inch;
@@ -47,6 +72,54 @@ void LatheState::reset() {
 
 void LatheState::startRun() {
   shapeReading.code = 0;
+}
+
+void CallStack::startRun(const char* program) {
+  mainProgram = program != nullptr ? program : "MAIN";
+  mainProgramNumber = parseProgramNumber(mainProgram.c_str());
+  entrySequence = 0.0;
+  // Cleared, not replaced: the levels keep the room reserved for the
+  // deepest nesting, so that a call allocates nothing.
+  calls.clear();
+  modalCalls.clear();
+  blockCalls.clear();
+  macroDepth = 0;
+  subDepth = 0;
+  levels.assign(1, LocalLevel{});
+}
+
+void RunControl::keepHostSettings(const RunControl& from) {
+  block.tracing = from.block.tracing;
+  maxBlocks = from.maxBlocks;
+  output.limit = from.output.limit;
+  skipMask = from.skipMask;
+}
+
+void RunControl::startRun(bool illegalMain) {
+  // Field by field, not from a fresh RunControl: another thread or a
+  // signal handler may lower the block limit at any time (mbrt_interrupt),
+  // so the limit is only ever stored atomically.
+  block.file = nullptr;
+  block.line = 0;
+  block.blocks = 0;
+  blockSequence = -1.0;
+  interrupted = false;
+  outOfMemory = false;
+  illegalMainNumber = illegalMain;
+  refusedInSink = nullptr;
+  output = OutputBudget{0, output.limit};
+  optionalStops = 0;
+  mainM99 = false;
+  alarm = PendingAlarm{};
+  parameterInput = false;
+  singleBlockBits = 0.0;
+  feedHoldBits = 0.0;
+  takeDateAndTime(*this);
+  setBlockLimit(illegalMain ? 0 : maxBlocks);
+}
+
+void HostOutputs::startRun() {
+  motionBuffer.clear();
 }
 
 } // namespace mbc::rt

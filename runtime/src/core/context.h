@@ -468,38 +468,36 @@ struct LatheState {
   void startRun();
 };
 
-} // namespace mbc::rt
-
-struct mbrt_ctx {
-  // Machine data from the profile.
-  mbc::rt::Profile profile;
-  std::array<std::int8_t, 26> axisIndex{}; // 'A'..'Z' -> axis or -1
-
-  // Variables.
-  std::vector<mbc::rt::LocalLevel> levels; // back() is the current level
-  std::array<mbc::Num, mbc::rt::kCommonEnd> commons{};
+/// The machine's data, which runs keep and mbrt_reset takes back from the
+/// profile: offsets, common variables, interface signals, part counters,
+/// settings and the parameters as the profile gave them.
+struct MachineData {
+  std::array<Num, kCommonEnd> commons{};
   // #98000-#98499, when the profile has them.
-  std::array<mbc::Num, mbc::kLastCommon98000 - mbc::kFirstCommon98000 + 1>
-      commons98000{};
+  std::array<Num, kLastCommon98000 - kFirstCommon98000 + 1> commons98000{};
   // UO000-UO031 (#1132; bits 0-15 are #1100-#1115) and UO100-UO131 (#1133).
   std::array<std::uint32_t, 4> outputWords{}; // UO000-UO031 ... UO300-UO331
   std::array<std::uint32_t, 4> inputWords{};  // UI000-UI031 ... UI300-UI331
-  std::vector<mbc::rt::ToolOffset> toolOffsets;
-  std::vector<mbc::rt::LatheOffset> latheOffsets; // a lathe's instead
-  std::vector<mbc::rt::AxisCounts> workOffsets;
-  double singleBlockBits = 0.0; // #3003
-  double feedHoldBits = 0.0;    // #3004
-  double settingBits = 0.0;     // #3005
-  double partsCount = 0.0;      // #3901
-  double partsRequired = 0.0;   // #3902
-  double date = 0.0;            // #3011
-  double timeOfDay = 0.0;       // #3012
+  std::vector<ToolOffset> toolOffsets;
+  std::vector<LatheOffset> latheOffsets; // a lathe's instead
+  std::vector<AxisCounts> workOffsets;
+  double settingBits = 0.0;   // #3005
+  double partsCount = 0.0;    // #3901
+  double partsRequired = 0.0; // #3902
+  // The parameters as the profile gave them: a program may set others
+  // (G10 L52), and mbrt_reset brings these back.
+  std::map<int, double> profileParameters;
+  std::map<int, AxisValues> profileAxisParameters;
+};
 
-  // Calls.
-  std::vector<mbc::rt::CallRecord> calls;
-  std::vector<mbc::rt::ModalCall> modalCalls; // G66 in force, innermost last
+/// The programs a run is in: the main program, the call levels with their
+/// locals, the modal calls in force and the calls blocks ask for.
+struct CallStack {
+  std::vector<LocalLevel> levels; // back() is the current level
+  std::vector<CallRecord> calls;
+  std::vector<ModalCall> modalCalls; // G66 in force, innermost last
   int nextModalId = 1;
-  std::deque<mbc::rt::BlockCall> blockCalls; // by call level
+  std::deque<BlockCall> blockCalls; // by call level
   // The M, T, S or B code of the block that called a subprogram ('\0':
   // none), so that the flattened program leaves it out.
   std::pair<char, double> callingCode{'\0', 0.0};
@@ -508,54 +506,96 @@ struct mbrt_ctx {
   std::string mainProgram;
   int mainProgramNumber = 0;
   double entrySequence = 0.0; // mbrt_entry_sequence
-  // G10 L52 ... G11: each block sets a parameter (parameter_input.h).
-  bool parameterInput = false;
-  // The parameters as the profile gave them: a program may set others
-  // (G10 L52), and mbrt_reset brings these back.
-  std::map<int, double> profileParameters;
-  std::map<int, mbc::rt::AxisValues> profileAxisParameters;
-  /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
-  std::map<int, std::string> programNames;
 
-  // The machine, its features' state and the lathe's cycles.
-  mbc::rt::MachineState machine;
-  mbc::rt::CompensationState compensation;
-  mbc::rt::CornerInsertion corner;
-  mbc::rt::LatheState lathe;
-  // The N of the block running, -1 for none: the flattened program keeps
-  // it, for a lathe's shape cycles and a reader's bearings.
-  double blockSequence = -1.0;
+  /// A run of `program` begins: its main program's level and no calls.
+  void startRun(const char* program);
+};
 
-  // The run: the block being executed and the count of blocks.
+/// The run as the host and the control steer it: the block being executed
+/// and the count of blocks, the limits, signals that stop it, the first
+/// alarm, and the switches an operator sets.
+struct RunControl {
   // A signal handler or another thread lowers block.max_blocks to stop the
   // run (mbrt_interrupt, mbrt_out_of_memory), so it is read and written
   // atomically.
-  mbrt_block_state block{nullptr, 0, 0, 0, mbc::rt::kDefaultMaxBlocks};
-  mbc::rt::SignalFlag interrupted;
-  mbc::rt::SignalFlag outOfMemory;
+  mbrt_block_state block{nullptr, 0, 0, 0, kDefaultMaxBlocks};
+  // The N of the block running, -1 for none: the flattened program keeps
+  // it, for a lathe's shape cycles and a reader's bearings.
+  double blockSequence = -1.0;
+  SignalFlag interrupted;
+  SignalFlag outOfMemory;
   bool illegalMainNumber = false; // PS0074 at the first block
   // Sinks being called (motion, text, alarm), and the first call that
   // would have restarted, reset or freed the context from inside one.
   int sinkDepth = 0;
   const char* refusedInSink = nullptr;
-  std::uint64_t maxBlocks = mbc::rt::kDefaultMaxBlocks; // --max-blocks
-  mbc::rt::OutputBudget output;
+  std::uint64_t maxBlocks = kDefaultMaxBlocks; // --max-blocks
+  OutputBudget output;
   unsigned skipMask = 0; // optional block skip switches: bit n for /n
   std::uint64_t optionalStops = 0;
   bool mainM99 = false;
-  mbc::rt::PendingAlarm alarm;
+  PendingAlarm alarm;
+  // G10 L52 ... G11: each block sets a parameter (parameter_input.h).
+  bool parameterInput = false;
+  double singleBlockBits = 0.0;     // #3003
+  double feedHoldBits = 0.0;        // #3004
+  double date = 0.0;                // #3011
+  double timeOfDay = 0.0;           // #3012
   std::string scratch;              // reused output buffer
   std::string gcodeLine;            // the flattened block being written
   std::vector<mbrt_word> stepWords; // mbrt_nc_steps' words of one block
 
-  mbc::rt::Sink<mbrt_text_fn> alarmSink;
+  /// A run begins from nothing run yet: no blocks counted, no alarm, no
+  /// signal to stop, #3003/#3004 off and today's #3011/#3012; what the
+  /// host set (keepHostSettings) and the buffers stay. `illegalMainNumber`: the
+  /// main program's number is one the machine cannot have, so the run alarms at
+  /// its first block.
+  void startRun(bool illegalMainNumber);
+
+  /// Sets the block limit; atomic because mbrt_interrupt may store to it
+  /// from a signal handler or another thread.
+  void setBlockLimit(std::uint64_t blocks) {
+    std::atomic_ref(block.max_blocks).store(blocks, std::memory_order_relaxed);
+  }
+
+  /// Takes what the host set on `from`: tracing, the block and output
+  /// limits and the block skip switches.
+  void keepHostSettings(const RunControl& from);
+};
+
+/// Where a run's output goes, as the host set it: the sinks, the motions
+/// buffered for it, and the names of the programs it loaded.
+struct HostOutputs {
+  Sink<mbrt_text_fn> alarmSink;
   std::vector<mbrt_motion> motionBuffer; // mbrt_buffer_motions
   std::set<std::string> bufferedNames;   // their program names, stable
-  mbc::rt::Sink<mbrt_motion_fn> motionSink;
-  mbc::rt::Sink<mbrt_text_fn> printSink;
-  mbc::rt::Sink<mbrt_text_fn> messageSink;
-  mbc::rt::Sink<mbrt_text_fn> traceSink;
-  mbc::rt::Sink<mbrt_text_fn> gcodeSink; // the flattened program
+  Sink<mbrt_motion_fn> motionSink;
+  Sink<mbrt_text_fn> printSink;
+  Sink<mbrt_text_fn> messageSink;
+  Sink<mbrt_text_fn> traceSink;
+  Sink<mbrt_text_fn> gcodeSink; // the flattened program
+  /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
+  std::map<int, std::string> programNames;
+
+  /// A run begins with no motions buffered.
+  void startRun();
+};
+
+} // namespace mbc::rt
+
+/// A context: the machine's description and the parts of its state, each
+/// with its own life (core/context.cpp, api/lifetime.cpp).
+struct mbrt_ctx {
+  mbc::rt::Profile profile;
+  std::array<std::int8_t, 26> axisIndex{}; // 'A'..'Z' -> axis or -1
+  mbc::rt::MachineData data;
+  mbc::rt::CallStack stack;
+  mbc::rt::MachineState machine;
+  mbc::rt::CompensationState compensation;
+  mbc::rt::CornerInsertion corner;
+  mbc::rt::LatheState lathe;
+  mbc::rt::RunControl run;
+  mbc::rt::HostOutputs host;
 
   int axisCount() const { return static_cast<int>(profile.axes.size()); }
 
@@ -678,14 +718,16 @@ struct mbrt_ctx {
     return (inch ? 10000.0 / 25.4 : 1000.0) * countsPerIncrement();
   }
 
-  mbc::rt::LocalLevel& locals() { return levels.back(); }
+  mbc::rt::LocalLevel& locals() { return stack.levels.back(); }
 
   const char* programName() const {
-    return calls.empty() ? mainProgram.c_str() : calls.back().program.c_str();
+    return stack.calls.empty() ? stack.mainProgram.c_str()
+                               : stack.calls.back().program.c_str();
   }
 
   int programNumber() const {
-    return calls.empty() ? mainProgramNumber : calls.back().programNumber;
+    return stack.calls.empty() ? stack.mainProgramNumber
+                               : stack.calls.back().programNumber;
   }
 };
 
@@ -709,9 +751,9 @@ void countOutput(mbrt_ctx& ctx, std::uint64_t bytes);
 /// Calls a sink of the context: inside it the calls that would restart,
 /// reset or free the context refuse (refuseInSink).
 template <typename Call> void callSink(mbrt_ctx& ctx, Call&& call) {
-  ++ctx.sinkDepth;
+  ++ctx.run.sinkDepth;
   call();
-  --ctx.sinkDepth;
+  --ctx.run.sinkDepth;
 }
 
 /// True when `function` is called from inside one of the context's sinks:
@@ -726,13 +768,6 @@ size_t copyText(std::string_view text, char* buf, size_t size);
 /// Sends text to one of the context's text sinks, if set, and counts it.
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
               std::string_view text);
-
-/// Sets the block limit; atomic because mbrt_interrupt may store to it from
-/// a signal handler or another thread.
-inline void setBlockLimit(mbrt_ctx& ctx, std::uint64_t blocks) {
-  std::atomic_ref(ctx.block.max_blocks)
-      .store(blocks, std::memory_order_relaxed);
-}
 
 /// The alarm of a run whose output passed its limit, at the block that
 /// passed it.

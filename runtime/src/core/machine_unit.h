@@ -31,7 +31,7 @@ inline Counts toOtherUnit(const mbrt_ctx& ctx, int axis, Counts counts,
 /// A work offset (an index of workOffsets) on `axis` in counts of the unit
 /// in force.
 inline Counts workOffsetInForce(const mbrt_ctx& ctx, int index, int axis) {
-  const Counts stored = ctx.workOffsets[index][axis];
+  const Counts stored = ctx.data.workOffsets[index][axis];
   return ctx.machine.modal.inch == ctx.profile.inch
              ? stored
              : toOtherUnit(ctx, axis, stored, ctx.machine.modal.inch);
@@ -39,7 +39,7 @@ inline Counts workOffsetInForce(const mbrt_ctx& ctx, int index, int axis) {
 
 /// Stores a work offset given in counts of the unit in force.
 inline void storeWorkOffset(mbrt_ctx& ctx, int index, int axis, Counts counts) {
-  ctx.workOffsets[index][axis] =
+  ctx.data.workOffsets[index][axis] =
       ctx.machine.modal.inch == ctx.profile.inch
           ? counts
           : toOtherUnit(ctx, axis, counts, ctx.profile.inch);

@@ -10,15 +10,15 @@ using namespace mbc::rt;
 namespace mbc::rt {
 
 void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
-  OutputBudget& output = ctx.output;
+  OutputBudget& output = ctx.run.output;
   const bool within = !output.passed();
   output.written += bytes;
   if (!within || !output.passed()) {
     return;
   }
-  output.file = ctx.block.file;
-  output.line = ctx.block.line;
-  setBlockLimit(ctx, ctx.block.blocks);
+  output.file = ctx.run.block.file;
+  output.line = ctx.run.block.line;
+  ctx.run.setBlockLimit(ctx.run.block.blocks);
 }
 
 void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
@@ -30,17 +30,17 @@ void sendText(mbrt_ctx& ctx, const Sink<mbrt_text_fn>& sink,
 }
 
 mbrt_status raiseOutputLimit(mbrt_ctx& ctx) {
-  ctx.block.file = ctx.output.file;
-  ctx.block.line = ctx.output.line;
+  ctx.run.block.file = ctx.run.output.file;
+  ctx.run.block.line = ctx.run.output.line;
   return raise(ctx, AlarmId::OutputLimit,
                fmt::format("more than {} bytes written (--max-output)",
-                           ctx.output.limit));
+                           ctx.run.output.limit));
 }
 
 } // namespace mbc::rt
 
 void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes) {
-  ctx->output.limit = max_bytes != 0 ? max_bytes : kDefaultMaxOutput;
+  ctx->run.output.limit = max_bytes != 0 ? max_bytes : kDefaultMaxOutput;
 }
 
 void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes) {

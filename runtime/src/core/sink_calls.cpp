@@ -7,13 +7,13 @@
 namespace mbc::rt {
 
 bool refuseInSink(mbrt_ctx& ctx, const char* function) {
-  if (ctx.sinkDepth == 0) {
+  if (ctx.run.sinkDepth == 0) {
     return false;
   }
-  if (ctx.refusedInSink == nullptr) {
-    ctx.refusedInSink = function;
+  if (ctx.run.refusedInSink == nullptr) {
+    ctx.run.refusedInSink = function;
   }
-  setBlockLimit(ctx, 0);
+  ctx.run.setBlockLimit(0);
   return true;
 }
 

@@ -110,7 +110,7 @@ mbrt_status mapArguments(mbrt_ctx& ctx, const mbrt_word* args, size_t count,
 
 /// PS0077 when one more call would exceed the total nesting limit.
 mbrt_status checkTotalNesting(mbrt_ctx& ctx) {
-  if (static_cast<int>(ctx.calls.size()) + 1 > ctx.profile.totalNesting) {
+  if (static_cast<int>(ctx.stack.calls.size()) + 1 > ctx.profile.totalNesting) {
     return raise(
         ctx, AlarmId::TooManySubMacroNesting,
         fmt::format("more than {} nested calls", ctx.profile.totalNesting));
@@ -119,21 +119,21 @@ mbrt_status checkTotalNesting(mbrt_ctx& ctx) {
 }
 
 void pushCall(mbrt_ctx& ctx, const char* program, int kind) {
-  const std::size_t depth = ctx.calls.size();
-  CallRecord& call = ctx.calls.emplace_back();
+  const std::size_t depth = ctx.stack.calls.size();
+  CallRecord& call = ctx.stack.calls.emplace_back();
   call.program = program != nullptr ? program : "";
   call.programNumber = parseProgramNumber(program);
   call.kind = kind;
-  if ((kind & kCallModalBit) != 0 && depth < ctx.blockCalls.size()) {
-    call.modalId = ctx.blockCalls[depth].modalId;
+  if ((kind & kCallModalBit) != 0 && depth < ctx.stack.blockCalls.size()) {
+    call.modalId = ctx.stack.blockCalls[depth].modalId;
   }
-  call.file = ctx.block.file;
-  call.line = ctx.block.line;
+  call.file = ctx.run.block.file;
+  call.line = ctx.run.block.line;
 }
 
 mbrt_status enterMacro(mbrt_ctx& ctx, const char* program, int kind,
                        const mbrt_word* args, size_t count) {
-  if (ctx.macroDepth + 1 > ctx.profile.macroNesting) {
+  if (ctx.stack.macroDepth + 1 > ctx.profile.macroNesting) {
     return raise(ctx, AlarmId::TooManyMacroNesting,
                  fmt::format("more than {} nested macro calls",
                              ctx.profile.macroNesting));
@@ -142,22 +142,23 @@ mbrt_status enterMacro(mbrt_ctx& ctx, const char* program, int kind,
     return status;
   }
   // A G66.1 block's words are its arguments, G, L and P included.
-  const bool everyBlock = (kind & kCallModalBit) != 0 &&
-                          ctx.calls.size() < ctx.blockCalls.size() &&
-                          ctx.blockCalls[ctx.calls.size()].everyBlock;
-  ctx.levels.emplace_back();
+  const bool everyBlock =
+      (kind & kCallModalBit) != 0 &&
+      ctx.stack.calls.size() < ctx.stack.blockCalls.size() &&
+      ctx.stack.blockCalls[ctx.stack.calls.size()].everyBlock;
+  ctx.stack.levels.emplace_back();
   if (const mbrt_status status =
-          mapArguments(ctx, args, count, everyBlock, ctx.levels.back())) {
-    ctx.levels.pop_back();
+          mapArguments(ctx, args, count, everyBlock, ctx.stack.levels.back())) {
+    ctx.stack.levels.pop_back();
     return status;
   }
-  ++ctx.macroDepth;
+  ++ctx.stack.macroDepth;
   pushCall(ctx, program, kind);
   return 0;
 }
 
 mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
-  if (ctx.subDepth + 1 > ctx.profile.subprogramNesting) {
+  if (ctx.stack.subDepth + 1 > ctx.profile.subprogramNesting) {
     return raise(ctx, AlarmId::TooManySubMacroNesting,
                  fmt::format("more than {} nested subprogram calls",
                              ctx.profile.subprogramNesting));
@@ -165,7 +166,7 @@ mbrt_status enterSub(mbrt_ctx& ctx, const char* program, int kind) {
   if (const mbrt_status status = checkTotalNesting(ctx)) {
     return status;
   }
-  ++ctx.subDepth;
+  ++ctx.stack.subDepth;
   pushCall(ctx, program, kind);
   return 0;
 }
@@ -207,20 +208,20 @@ mbrt_status mbrt_call_sub(mbrt_ctx* ctx, const char* program) {
 }
 
 void mbrt_return(mbrt_ctx* ctx) {
-  if (ctx->calls.empty()) {
+  if (ctx->stack.calls.empty()) {
     return;
   }
-  if ((ctx->calls.back().kind & kCallMacroBit) != 0) {
-    ctx->levels.pop_back();
-    --ctx->macroDepth;
+  if ((ctx->stack.calls.back().kind & kCallMacroBit) != 0) {
+    ctx->stack.levels.pop_back();
+    --ctx->stack.macroDepth;
   } else {
-    --ctx->subDepth;
+    --ctx->stack.subDepth;
   }
-  ctx->calls.pop_back();
+  ctx->stack.calls.pop_back();
 }
 
 int mbrt_call_depth(const mbrt_ctx* ctx) {
-  return static_cast<int>(ctx->calls.size());
+  return static_cast<int>(ctx->stack.calls.size());
 }
 
 mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
@@ -239,6 +240,6 @@ mbrt_status mbrt_set_main_args(mbrt_ctx* ctx, const mbrt_word* args,
           mapArguments(*ctx, upper.data(), count, false, level)) {
     return status;
   }
-  ctx->levels.front() = level;
+  ctx->stack.levels.front() = level;
   return 0;
 }

@@ -94,7 +94,7 @@ mbrt_status readLatheOffset(mbrt_ctx& ctx, long n, Num* out) {
   if (const mbrt_status status = findOffset(ctx, n, &found)) {
     return status;
   }
-  *out = ctx.latheOffsets[static_cast<std::size_t>(found.number)].*
+  *out = ctx.data.latheOffsets[static_cast<std::size_t>(found.number)].*
          found.series->field;
   return 0;
 }
@@ -122,7 +122,7 @@ mbrt_status writeLatheOffset(mbrt_ctx& ctx, long n, Num value) {
     }
     units = countsToUnits(static_cast<Counts>(counts), ctx.inputScale());
   }
-  ctx.latheOffsets[static_cast<std::size_t>(found.number)].*series.field =
+  ctx.data.latheOffsets[static_cast<std::size_t>(found.number)].*series.field =
       units;
   flattenLatheOffset(ctx, key.geometry ? 10000 + found.number : found.number,
                      key.letter, units);

@@ -27,7 +27,7 @@ void mbrt_name_programs(mbrt_ctx* ctx, const mbrt_program_table* table) {
   for (size_t i = 0; table != nullptr && i < table->count; ++i) {
     const mbrt_program& p = table->programs[i];
     if (mbc::isNamedProgramNumber(p.number)) {
-      ctx->programNames[p.number] = p.name;
+      ctx->host.programNames[p.number] = p.name;
     }
   }
 }
@@ -42,7 +42,7 @@ mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
     if (st) {
       return st;
     }
-    ctx->entrySequence = start_seq;
+    ctx->stack.entrySequence = start_seq;
     mbrt_flow leave{};
     if ((st = body(ctx, user, &leave))) {
       return st;
@@ -58,11 +58,11 @@ mbrt_status mbrt_run_call(mbrt_ctx* ctx, const char* program, int kind,
 }
 
 double mbrt_entry_sequence(const mbrt_ctx* ctx) {
-  return ctx->entrySequence;
+  return ctx->stack.entrySequence;
 }
 
 mbrt_status mbrt_run_body(mbrt_ctx* ctx, const mbrt_program* program) {
-  ctx->entrySequence = 0;
+  ctx->stack.entrySequence = 0;
   mbrt_flow leave{};
   const mbrt_status st = program->body(ctx, nullptr, &leave);
   return st > 0 ? st : 0;

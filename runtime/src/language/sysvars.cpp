@@ -66,20 +66,21 @@ mbrt_status readConstant(mbrt_ctx&, int index, Num* out) {
 /// #1000 + i is bit i of the word #1032 (spec §6.1): one input signal, 0 or
 /// 1, as the profile or a preset sets it (there is no PMC).
 mbrt_status readInputSignal(mbrt_ctx& ctx, int index, Num* out) {
-  *out = static_cast<double>((ctx.inputWords[0] >> index) & 1U);
+  *out = static_cast<double>((ctx.data.inputWords[0] >> index) & 1U);
   return 0;
 }
 
 /// #1032-#1035: UI000-UI031, UI100-UI131, UI200-UI231, UI300-UI331 as
 /// signed 32-bit numbers.
 mbrt_status readInputWord(mbrt_ctx& ctx, int index, Num* out) {
-  *out = static_cast<double>(static_cast<std::int32_t>(ctx.inputWords[index]));
+  *out = static_cast<double>(
+      static_cast<std::int32_t>(ctx.data.inputWords[index]));
   return 0;
 }
 
 /// #1100 + i is bit i of the word #1132 (spec §6.1): one signal, 0 or 1.
 mbrt_status readOutputSignal(mbrt_ctx& ctx, int index, Num* out) {
-  *out = static_cast<double>((ctx.outputWords[0] >> index) & 1U);
+  *out = static_cast<double>((ctx.data.outputWords[0] >> index) & 1U);
   return 0;
 }
 
@@ -92,14 +93,15 @@ mbrt_status writeOutputSignal(mbrt_ctx& ctx, int index, Num value,
         fmt::format("#{} is one signal: 0 or 1, not {}", 1100 + index, v));
   }
   const std::uint32_t bit = 1U << index;
-  ctx.outputWords[0] =
-      v != 0.0 ? ctx.outputWords[0] | bit : ctx.outputWords[0] & ~bit;
+  ctx.data.outputWords[0] =
+      v != 0.0 ? ctx.data.outputWords[0] | bit : ctx.data.outputWords[0] & ~bit;
   return 0;
 }
 
 /// 32 signals as one signed 32-bit number.
 mbrt_status readOutputWord(mbrt_ctx& ctx, int index, Num* out) {
-  *out = static_cast<double>(static_cast<std::int32_t>(ctx.outputWords[index]));
+  *out = static_cast<double>(
+      static_cast<std::int32_t>(ctx.data.outputWords[index]));
   return 0;
 }
 
@@ -110,7 +112,7 @@ mbrt_status writeOutputWord(mbrt_ctx& ctx, int index, Num value, const char*) {
                  fmt::format("#{} holds 32 signals: {} is no 32-bit number",
                              1132 + index, numeric(value)));
   }
-  ctx.outputWords[index] =
+  ctx.data.outputWords[index] =
       static_cast<std::uint32_t>(static_cast<std::int32_t>(v));
   return 0;
 }
@@ -175,7 +177,7 @@ mbrt_status readToolOffset(mbrt_ctx& ctx, int index, Num* out) {
           findToolOffset<Series, ShortForm>(ctx, index, &field)) {
     return status;
   }
-  *out = ctx.toolOffsets[index + 1].*field;
+  *out = ctx.data.toolOffsets[index + 1].*field;
   return 0;
 }
 
@@ -194,7 +196,7 @@ mbrt_status writeToolOffset(mbrt_ctx& ctx, int index, Num value, const char*) {
   }
   const double units =
       countsToUnits(static_cast<Counts>(counts), ctx.inputScale());
-  ctx.toolOffsets[index + 1].*field = units;
+  ctx.data.toolOffsets[index + 1].*field = units;
   flattenToolOffset(ctx, millOffsetKey(field).l, index + 1, units);
   return 0;
 }
@@ -230,7 +232,7 @@ mbrt_status readCommon98000(mbrt_ctx& ctx, int index, Num* out) {
   if (const mbrt_status status = findCommon98000(ctx, index)) {
     return status;
   }
-  *out = ctx.commons98000[static_cast<std::size_t>(index)];
+  *out = ctx.data.commons98000[static_cast<std::size_t>(index)];
   return 0;
 }
 
@@ -238,7 +240,7 @@ mbrt_status writeCommon98000(mbrt_ctx& ctx, int index, Num value, const char*) {
   if (const mbrt_status status = findCommon98000(ctx, index)) {
     return status;
   }
-  ctx.commons98000[static_cast<std::size_t>(index)] = value;
+  ctx.data.commons98000[static_cast<std::size_t>(index)] = value;
   return 0;
 }
 
@@ -285,32 +287,34 @@ mbrt_status writeClockHours(mbrt_ctx& ctx, int, Num value, const char*) {
 }
 
 /// A plain read/write number of the context.
-template <double mbrt_ctx::*Field>
+/// A number a part of the context holds: `Part` of the context, `Field`
+/// of the part.
+template <auto Part, auto Field>
 mbrt_status readField(mbrt_ctx& ctx, int, Num* out) {
-  *out = ctx.*Field;
+  *out = (ctx.*Part).*Field;
   return 0;
 }
 
-template <double mbrt_ctx::*Field>
+template <auto Part, auto Field>
 mbrt_status writeField(mbrt_ctx& ctx, int, Num value, const char*) {
-  ctx.*Field = numeric(value);
+  (ctx.*Part).*Field = numeric(value);
   return 0;
 }
 
 /// #3003 and #3004 hold bit patterns 0..Max.
-template <double mbrt_ctx::*Field, int Max>
+template <auto Part, auto Field, int Max>
 mbrt_status writeBits(mbrt_ctx& ctx, int, Num value, const char*) {
   const double bits = roundHalfAway(numeric(value));
   if (bits < 0.0 || bits > Max) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
                  fmt::format("{} (0 to {})", bits, Max));
   }
-  ctx.*Field = bits;
+  (ctx.*Part).*Field = bits;
   return 0;
 }
 
 mbrt_status readMainProgram(mbrt_ctx& ctx, int, Num* out) {
-  *out = ctx.mainProgramNumber;
+  *out = ctx.stack.mainProgramNumber;
   return 0;
 }
 
@@ -472,30 +476,32 @@ constexpr std::array kSystemVariables = {
     SysVarRange{3002, 3002, "clock 2, hours", readClockHours, writeClockHours,
                 false, "the run's modelled time"},
     SysVarRange{3003, 3003, "single block and FIN wait control",
-                readField<&mbrt_ctx::singleBlockBits>,
-                writeBits<&mbrt_ctx::singleBlockBits, 3>},
+                readField<&mbrt_ctx::run, &RunControl::singleBlockBits>,
+                writeBits<&mbrt_ctx::run, &RunControl::singleBlockBits, 3>},
     SysVarRange{3004, 3004, "feed hold, override and exact stop control",
-                readField<&mbrt_ctx::feedHoldBits>,
-                writeBits<&mbrt_ctx::feedHoldBits, 7>},
-    SysVarRange{3005, 3005, "setting data", readField<&mbrt_ctx::settingBits>,
-                writeField<&mbrt_ctx::settingBits>},
+                readField<&mbrt_ctx::run, &RunControl::feedHoldBits>,
+                writeBits<&mbrt_ctx::run, &RunControl::feedHoldBits, 7>},
+    SysVarRange{3005, 3005, "setting data",
+                readField<&mbrt_ctx::data, &MachineData::settingBits>,
+                writeField<&mbrt_ctx::data, &MachineData::settingBits>},
     SysVarRange{3006, 3006, "message stop #3006=1 (MESSAGE)", readZero,
                 writeMessage, false, "the run goes on"},
     SysVarRange{3007, 3007, "mirror image state", readZero, nullptr, false,
                 "0: no external mirror image signals"},
     SysVarRange{3008, 3008, "program restart in progress", readZero, nullptr,
                 false, "0: a run never restarts"},
-    SysVarRange{3011, 3011, "date YYYYMMDD", readField<&mbrt_ctx::date>,
-                nullptr},
-    SysVarRange{3012, 3012, "time HHMMSS", readField<&mbrt_ctx::timeOfDay>,
-                nullptr},
+    SysVarRange{3011, 3011, "date YYYYMMDD",
+                readField<&mbrt_ctx::run, &RunControl::date>, nullptr},
+    SysVarRange{3012, 3012, "time HHMMSS",
+                readField<&mbrt_ctx::run, &RunControl::timeOfDay>, nullptr},
     SysVarRange{3100, 3102, "system constants: vacant, pi, e", readConstant,
                 nullptr},
-    SysVarRange{3901, 3901, "machined parts", readField<&mbrt_ctx::partsCount>,
-                writeField<&mbrt_ctx::partsCount>},
+    SysVarRange{3901, 3901, "machined parts",
+                readField<&mbrt_ctx::data, &MachineData::partsCount>,
+                writeField<&mbrt_ctx::data, &MachineData::partsCount>},
     SysVarRange{3902, 3902, "required parts",
-                readField<&mbrt_ctx::partsRequired>,
-                writeField<&mbrt_ctx::partsRequired>},
+                readField<&mbrt_ctx::data, &MachineData::partsRequired>,
+                writeField<&mbrt_ctx::data, &MachineData::partsRequired>},
     SysVarRange{4000, 4000, "main program number", readMainProgram, nullptr},
     // Execution is sequential (Part A), so the "executing block" variables
     // #4201.. and #4301.. read the same as #4001.. and #4101...
@@ -590,13 +596,13 @@ bool setInputSignal(mbrt_ctx& ctx, int number, double value) {
       return false;
     }
     const std::uint32_t bit = 1U << (number - kFirstInputSignal);
-    ctx.inputWords[0] =
-        value != 0.0 ? ctx.inputWords[0] | bit : ctx.inputWords[0] & ~bit;
+    ctx.data.inputWords[0] = value != 0.0 ? ctx.data.inputWords[0] | bit
+                                          : ctx.data.inputWords[0] & ~bit;
     return true;
   }
   if (number >= kFirstInputWord && number <= kLastInputWord &&
       isSignalWord(value)) {
-    ctx.inputWords[number - kFirstInputWord] =
+    ctx.data.inputWords[number - kFirstInputWord] =
         static_cast<std::uint32_t>(static_cast<std::int32_t>(value));
     return true;
   }

@@ -58,7 +58,7 @@ mbrt_status mbrt_read_var(mbrt_ctx* ctx, double number, mbrt_num* out) {
     return 0;
   }
   if (isCommon(*ctx, n)) {
-    *out = ctx->commons[n];
+    *out = ctx->data.commons[n];
     return 0;
   }
   if (n == 0) {
@@ -81,7 +81,7 @@ mbrt_status mbrt_write_var(mbrt_ctx* ctx, double number, mbrt_num value,
     return 0;
   }
   if (isCommon(*ctx, n)) {
-    ctx->commons[n] = value;
+    ctx->data.commons[n] = value;
     return 0;
   }
   if (n == 0) {
@@ -145,7 +145,7 @@ size_t mbrt_set_commons(const mbrt_ctx* ctx, int* numbers, mbrt_num* values,
     }
   };
   const auto commons = [&](int first, int last) {
-    scan(first, last, &ctx->commons[static_cast<std::size_t>(first)]);
+    scan(first, last, &ctx->data.commons[static_cast<std::size_t>(first)]);
   };
   commons(kFirstCommon, kLastCommon);
   if (ctx->profile.extendedCommon) {
@@ -153,7 +153,7 @@ size_t mbrt_set_commons(const mbrt_ctx* ctx, int* numbers, mbrt_num* values,
   }
   commons(kFirstNonvolatile, kLastNonvolatile);
   if (ctx->profile.commons98000) {
-    scan(kFirstCommon98000, kLastCommon98000, ctx->commons98000.data());
+    scan(kFirstCommon98000, kLastCommon98000, ctx->data.commons98000.data());
   }
   return count;
 }
@@ -162,12 +162,13 @@ int mbrt_peek_common(const mbrt_ctx* ctx, int number, mbrt_num* out) {
   if (ctx->profile.commons98000 && number >= kFirstCommon98000 &&
       number <= kLastCommon98000) {
     *out =
-        ctx->commons98000[static_cast<std::size_t>(number - kFirstCommon98000)];
+        ctx->data
+            .commons98000[static_cast<std::size_t>(number - kFirstCommon98000)];
     return 1;
   }
   if (!isCommon(*ctx, number)) {
     return 0;
   }
-  *out = ctx->commons[number];
+  *out = ctx->data.commons[number];
   return 1;
 }

@@ -49,12 +49,12 @@ int findCode(const mbrt_ctx& ctx, const CodeTable& table, double code,
 
 bool insideCodeCall(const mbrt_ctx& ctx) {
   return std::any_of(
-      ctx.calls.begin(), ctx.calls.end(),
+      ctx.stack.calls.begin(), ctx.stack.calls.end(),
       [](const CallRecord& c) { return (c.kind & kCallCodeBit) != 0; });
 }
 
 bool insideModalCall(const mbrt_ctx& ctx, int id) {
-  return std::any_of(ctx.calls.begin(), ctx.calls.end(),
+  return std::any_of(ctx.stack.calls.begin(), ctx.stack.calls.end(),
                      [id](const CallRecord& c) { return c.modalId == id; });
 }
 
@@ -62,7 +62,8 @@ bool insideModalCall(const mbrt_ctx& ctx, int id) {
 /// G66.1 in force that is not already running, so that with two in force
 /// the moves of the later one's macro call the earlier one's (spec §5.6).
 const ModalCall* activeModalCall(const mbrt_ctx& ctx) {
-  for (auto it = ctx.modalCalls.rbegin(); it != ctx.modalCalls.rend(); ++it) {
+  for (auto it = ctx.stack.modalCalls.rbegin();
+       it != ctx.stack.modalCalls.rend(); ++it) {
     if (!insideModalCall(ctx, it->id)) {
       return &*it;
     }
@@ -110,11 +111,11 @@ std::vector<mbrt_word> argumentsOf(const mbrt_word* words, size_t count,
 void askCall(mbrt_ctx& ctx, mbrt_flow* flow, int kind, int program, long repeat,
              std::vector<mbrt_word> args, int modalId = 0,
              bool everyBlock = false) {
-  const std::size_t depth = ctx.calls.size();
-  if (ctx.blockCalls.size() <= depth) {
-    ctx.blockCalls.resize(depth + 1);
+  const std::size_t depth = ctx.stack.calls.size();
+  if (ctx.stack.blockCalls.size() <= depth) {
+    ctx.stack.blockCalls.resize(depth + 1);
   }
-  BlockCall& call = ctx.blockCalls[depth];
+  BlockCall& call = ctx.stack.blockCalls[depth];
   call.args = std::move(args);
   call.modalId = modalId;
   call.everyBlock = everyBlock;
@@ -129,8 +130,8 @@ void askCall(mbrt_ctx& ctx, mbrt_flow* flow, int kind, int program, long repeat,
 
 void pushModalCall(mbrt_ctx& ctx, int program, long repeat, bool everyBlock,
                    std::vector<mbrt_word> args) {
-  ModalCall& call = ctx.modalCalls.emplace_back();
-  call.id = ctx.nextModalId++;
+  ModalCall& call = ctx.stack.modalCalls.emplace_back();
+  call.id = ctx.stack.nextModalId++;
   call.program = program;
   call.repeat = repeat;
   call.everyBlock = everyBlock;
@@ -170,7 +171,8 @@ mbrt_status setModalCall(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   }
   const bool everyBlock = gTenths(g) == 661;
   if (everyBlock) {
-    const int id = ctx.nextModalId; // the call below is the modal call's own
+    const int id =
+        ctx.stack.nextModalId; // the call below is the modal call's own
     askCall(ctx, flow, MBRT_CALL_MODAL, *program, repeatOf(words, count), args,
             id);
   }
@@ -269,8 +271,8 @@ mbrt_status callInsteadOfBlock(mbrt_ctx& ctx, const mbrt_word* words,
       *taken = true;
       return setModalCall(ctx, words, count, words[i], flow);
     }
-    if (tenths == 670 && !ctx.modalCalls.empty()) {
-      ctx.modalCalls.pop_back(); // the rest of the block executes
+    if (tenths == 670 && !ctx.stack.modalCalls.empty()) {
+      ctx.stack.modalCalls.pop_back(); // the rest of the block executes
       return 0;
     }
   }
@@ -307,9 +309,9 @@ mbrt_status callAfterBlock(mbrt_ctx& ctx, const BlockCodes& codes,
                              wanted[0].what, second));
   }
   const Wanted& call = wanted[0];
-  ctx.callingCode = {call.letter, call.value};
+  ctx.stack.callingCode = {call.letter, call.value};
   if (call.common != 0) {
-    ctx.commons[call.common] = call.value;
+    ctx.data.commons[call.common] = call.value;
   }
   if (call.kind == MBRT_CALL_MODAL) {
     askCall(ctx, flow, call.kind, call.program, modal->repeat, modal->args,

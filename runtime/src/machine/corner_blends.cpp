@@ -380,8 +380,8 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
   held.from = start;
   held.corner = target;
   held.amount = words.blendAmount;
-  held.file = ctx.block.file;
-  held.line = ctx.block.line;
+  held.file = ctx.run.block.file;
+  held.line = ctx.run.block.line;
   held.block = captureBlock(ctx);
   held.blend = words.blend;
   held.rapid = ctx.machine.modal.motion == 0;

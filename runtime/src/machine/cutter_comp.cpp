@@ -259,13 +259,13 @@ bool interferes(const mbrt_ctx& ctx, const HeldMove& move, PlanePoint from,
 
 mbrt_status raiseAt(mbrt_ctx& ctx, const HeldMove& move, AlarmId id,
                     std::string_view detail) {
-  const char* file = ctx.block.file;
-  const int line = ctx.block.line;
-  ctx.block.file = move.origin.file;
-  ctx.block.line = move.origin.line;
+  const char* file = ctx.run.block.file;
+  const int line = ctx.run.block.line;
+  ctx.run.block.file = move.origin.file;
+  ctx.run.block.line = move.origin.line;
   const mbrt_status status = raise(ctx, id, detail);
-  ctx.block.file = file;
-  ctx.block.line = line;
+  ctx.run.block.file = file;
+  ctx.run.block.line = line;
   return status;
 }
 
@@ -370,7 +370,7 @@ mbrt_status readOffset(mbrt_ctx& ctx, HeldMove& move) {
                  fmt::format("D{} (the machine has {})", d,
                              ctx.profile.toolOffsetCount));
   }
-  const ToolOffset& offset = ctx.toolOffsets[static_cast<std::size_t>(d)];
+  const ToolOffset& offset = ctx.data.toolOffsets[static_cast<std::size_t>(d)];
   double value = 0.0;
   switch (ctx.profile.toolOffsetMemory) {
     case 'A':

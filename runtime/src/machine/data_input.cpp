@@ -65,7 +65,8 @@ mbrt_status setToolOffset(mbrt_ctx& ctx, const FrameWords& words, int l) {
   static constexpr double ToolOffset::*kFields[] = {
       &ToolOffset::hGeometry, &ToolOffset::hWear, &ToolOffset::dGeometry,
       &ToolOffset::dWear};
-  double& field = ctx.toolOffsets[static_cast<std::size_t>(p)].*kFields[l - 10];
+  double& field =
+      ctx.data.toolOffsets[static_cast<std::size_t>(p)].*kFields[l - 10];
   const double value = countsToUnits(words.axes->r, ctx.scale());
   field = ctx.machine.modal.incremental ? field + value : value;
   return 0;

@@ -210,8 +210,8 @@ mbrt_status setToolLength(mbrt_ctx& ctx, int mode) {
   }
   const auto number = static_cast<std::size_t>(h);
   const double value = number == 0 ? 0.0
-                                   : ctx.toolOffsets[number].hGeometry +
-                                         ctx.toolOffsets[number].hWear;
+                                   : ctx.data.toolOffsets[number].hGeometry +
+                                         ctx.data.toolOffsets[number].hWear;
   const auto counts = static_cast<Counts>(roundToLengthCounts(ctx, value));
   frames.lengthMode = mode;
   frames.lengthAxis = axis;

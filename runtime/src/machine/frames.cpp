@@ -194,22 +194,23 @@ void resyncProgram(mbrt_ctx& ctx) {
 }
 
 Placement placementOf(const mbrt_ctx& ctx) {
-  return {ctx.machine.frames, ctx.workOffsets[ctx.machine.modal.workOffset],
-          ctx.workOffsets[kExternalOffset]};
+  return {ctx.machine.frames,
+          ctx.data.workOffsets[ctx.machine.modal.workOffset],
+          ctx.data.workOffsets[kExternalOffset]};
 }
 
 PlacedAs::PlacedAs(mbrt_ctx& ctx, const Placement& placement)
     : ctx_(ctx), own_(placementOf(ctx)),
       workOffset_(ctx.machine.modal.workOffset) {
   ctx.machine.frames = placement.frames;
-  ctx.workOffsets[workOffset_] = placement.workOffset;
-  ctx.workOffsets[kExternalOffset] = placement.external;
+  ctx.data.workOffsets[workOffset_] = placement.workOffset;
+  ctx.data.workOffsets[kExternalOffset] = placement.external;
 }
 
 PlacedAs::~PlacedAs() {
   ctx_.machine.frames = own_.frames;
-  ctx_.workOffsets[kExternalOffset] = own_.external;
-  ctx_.workOffsets[workOffset_] = own_.workOffset;
+  ctx_.data.workOffsets[kExternalOffset] = own_.external;
+  ctx_.data.workOffsets[workOffset_] = own_.workOffset;
 }
 
 ArcFrame arcFrame(const mbrt_ctx& ctx, int firstAxis, int secondAxis) {

@@ -405,9 +405,9 @@ int modalCode(const mbrt_ctx& ctx, ModalField field) {
     case ModalField::Scaling:
       return ctx.machine.frames.scaling ? 510 : 500;
     case ModalField::ModalCall:
-      return ctx.modalCalls.empty()             ? 670
-             : ctx.modalCalls.back().everyBlock ? 661
-                                                : 660;
+      return ctx.stack.modalCalls.empty()             ? 670
+             : ctx.stack.modalCalls.back().everyBlock ? 661
+                                                      : 660;
     case ModalField::SurfaceSpeed:
       return modal.surfaceSpeed ? 960 : 970;
     case ModalField::WorkOffset:

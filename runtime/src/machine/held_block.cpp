@@ -18,16 +18,16 @@ BlockState captureBlock(const mbrt_ctx& ctx) {
 }
 
 InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
-    : ctx_(ctx), own_(captureBlock(ctx)), file_(ctx.block.file),
-      line_(ctx.block.line) {
+    : ctx_(ctx), own_(captureBlock(ctx)), file_(ctx.run.block.file),
+      line_(ctx.run.block.line) {
   const BlockState& block = held.block;
   ctx.machine.modal = block.modal;
   ctx.machine.lastWords[lastWordSlot(LastWord::D)] = block.dWord;
   ctx.machine.lastWords[lastWordSlot(LastWord::S)] = block.sWord;
   ctx.compensation.codeInBlock = block.codeInBlock;
   ctx.machine.feedInBlock = block.feedInBlock;
-  ctx.block.file = held.file;
-  ctx.block.line = held.line;
+  ctx.run.block.file = held.file;
+  ctx.run.block.line = held.line;
   placed_.emplace(ctx, block.placement);
 }
 
@@ -38,8 +38,8 @@ InHeldBlock::~InHeldBlock() {
   ctx_.machine.lastWords[lastWordSlot(LastWord::S)] = own_.sWord;
   ctx_.compensation.codeInBlock = own_.codeInBlock;
   ctx_.machine.feedInBlock = own_.feedInBlock;
-  ctx_.block.file = file_;
-  ctx_.block.line = line_;
+  ctx_.run.block.file = file_;
+  ctx_.run.block.line = line_;
 }
 
 mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what) {

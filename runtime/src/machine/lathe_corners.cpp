@@ -121,9 +121,17 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
                     static_cast<double>(std::abs(amount)) / ctx.scale()));
   }
   CornerInsertion& held = ctx.corner;
-  held = CornerInsertion{
-      true,   true,   words.hasR,     start,          target,           along,
-      toward, amount, ctx.block.file, ctx.block.line, captureBlock(ctx)};
+  held = CornerInsertion{true,
+                         true,
+                         words.hasR,
+                         start,
+                         target,
+                         along,
+                         toward,
+                         amount,
+                         ctx.run.block.file,
+                         ctx.run.block.line,
+                         captureBlock(ctx)};
   ctx.machine.program = target;
   return 0;
 }

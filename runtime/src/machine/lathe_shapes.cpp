@@ -120,9 +120,9 @@ void recordMove(void* user, const mbrt_motion* motion) {
   move.compensation = compensation != reading.before.machine.modal.compensation
                           ? compensation
                           : 0;
-  move.line = ctx.block.line;
-  if (reading.shape.moves.empty() && ctx.block.file != nullptr) {
-    reading.shape.file = ctx.block.file;
+  move.line = ctx.run.block.line;
+  if (reading.shape.moves.empty() && ctx.run.block.file != nullptr) {
+    reading.shape.file = ctx.run.block.file;
   }
   reading.shape.moves.push_back(move);
 }
@@ -141,14 +141,14 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
   const bool codeInBlock = ctx.compensation.codeInBlock;
   ctx.compensation.codeInBlock = false;
   ctx.lathe.cycleLabel = writtenCode(ctx, code);
-  const BlockPlace cycle{ctx.block.file, ctx.block.line};
+  const BlockPlace cycle{ctx.run.block.file, ctx.run.block.line};
   ctx.lathe.cycleBlock = cycle;
   ctx.machine.modal.incremental = false;
   mbrt_status status = 0;
   for (const ShapeMove& move : moves) {
     const bool ofShape = file != nullptr && move.line != 0;
-    ctx.block.file = ofShape ? file->c_str() : cycle.file;
-    ctx.block.line = ofShape ? move.line : cycle.line;
+    ctx.run.block.file = ofShape ? file->c_str() : cycle.file;
+    ctx.run.block.line = ofShape ? move.line : cycle.line;
     ctx.machine.modal.feed = move.feed > 0.0 ? move.feed : feed;
     ctx.machine.modal.compensation =
         move.compensation != 0 ? move.compensation : compensation;
@@ -168,8 +168,8 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
       break;
     }
   }
-  ctx.block.file = cycle.file;
-  ctx.block.line = cycle.line;
+  ctx.run.block.file = cycle.file;
+  ctx.run.block.line = cycle.line;
   ctx.lathe.cycleBlock = BlockPlace{};
   ctx.lathe.cycleLabel = 0;
   ctx.compensation.codeInBlock = codeInBlock;
@@ -196,12 +196,12 @@ mbrt_status finish(mbrt_ctx& ctx, const Shape& shape) {
 }
 
 DryRunState takeSnapshot(const mbrt_ctx& ctx) {
-  return {ctx.machine, ctx.motionSink};
+  return {ctx.machine, ctx.host.motionSink};
 }
 
 void restoreSnapshot(mbrt_ctx& ctx, const DryRunState& snapshot) {
   ctx.machine = snapshot.machine;
-  ctx.motionSink = snapshot.motionSink;
+  ctx.host.motionSink = snapshot.motionSink;
 }
 
 /// Whether a shape runs under tool nose radius compensation, in part or
@@ -235,7 +235,7 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
   const CompensationState compensation = ctx.compensation;
   path = Shape{shape.start, {}, {}};
   PathCollector collector{&ctx, &path.moves};
-  ctx.motionSink = {collectMove, &collector};
+  ctx.host.motionSink = {collectMove, &collector};
   mbrt_status status = runMoves(ctx, shape.moves, code, ctx.machine.modal.feed,
                                 ctx.machine.modal.compensation, &shape.file);
   if (status == 0) {
@@ -309,7 +309,7 @@ void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
   reading.shape.start = {static_cast<double>(ctx.machine.program[x]),
                          static_cast<double>(ctx.machine.program[z])};
   reading.before = takeSnapshot(ctx);
-  reading.cycleBlock = {ctx.block.file, ctx.block.line};
+  reading.cycleBlock = {ctx.run.block.file, ctx.run.block.line};
 }
 
 } // namespace
@@ -401,14 +401,14 @@ mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
     }
     reading.started = true;
   }
-  ctx.motionSink = {recordMove, &ctx};
+  ctx.host.motionSink = {recordMove, &ctx};
   return 0;
 }
 
 mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
                             const mbrt_flow& flow, mbrt_status status) {
   ShapeReading& reading = ctx.lathe.shapeReading;
-  ctx.motionSink = reading.before.motionSink;
+  ctx.host.motionSink = reading.before.motionSink;
   // A shape that cannot be read leaves the machine where the cycle found
   // it, for a context that runs again.
   const auto stop = [&] {
@@ -447,12 +447,12 @@ mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
   }
   // The cycle's moves are its block's, as the blocks of the shape were
   // read on the way.
-  const BlockPlace nf{ctx.block.file, ctx.block.line};
-  ctx.block.file = reading.cycleBlock.file;
-  ctx.block.line = reading.cycleBlock.line;
+  const BlockPlace nf{ctx.run.block.file, ctx.run.block.line};
+  ctx.run.block.file = reading.cycleBlock.file;
+  ctx.run.block.line = reading.cycleBlock.line;
   const mbrt_status cycleStatus = runCycle(ctx);
-  ctx.block.file = nf.file;
-  ctx.block.line = nf.line;
+  ctx.run.block.file = nf.file;
+  ctx.run.block.line = nf.line;
   return cycleStatus;
 }
 

@@ -45,7 +45,7 @@ mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved) {
     frames.toolWear = AxisCounts{};
   } else {
     const LatheOffset& offset =
-        ctx.latheOffsets[static_cast<std::size_t>(number)];
+        ctx.data.latheOffsets[static_cast<std::size_t>(number)];
     const AxisCounts geometry =
         offsetCounts(ctx, offset.xGeometry, offset.yGeometry, offset.zGeometry);
     const bool newGeometry = geometry != frames.toolGeometry;
@@ -129,9 +129,10 @@ char axisOfLetter(char letter) {
 NoseTool noseTool(const mbrt_ctx& ctx) {
   const Frames& frames = ctx.machine.frames;
   const LatheOffset& geometry =
-      ctx.latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
+      ctx.data
+          .latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
   const LatheOffset& wear =
-      ctx.latheOffsets[static_cast<std::size_t>(frames.toolWearNumber)];
+      ctx.data.latheOffsets[static_cast<std::size_t>(frames.toolWearNumber)];
   const double radius =
       geometry.rGeometry + (frames.toolWearNumber != 0 ? wear.rWear : 0.0);
   NoseTool tool{static_cast<Counts>(roundToLengthCounts(ctx, radius)), {}};
@@ -166,7 +167,7 @@ mbrt_status writeLatheOffsets(mbrt_ctx& ctx, const FrameWords& words) {
                                  ? " or 10001 and up (geometry)"
                                  : ""));
   }
-  LatheOffset& offset = ctx.latheOffsets[static_cast<std::size_t>(number)];
+  LatheOffset& offset = ctx.data.latheOffsets[static_cast<std::size_t>(number)];
   for (std::size_t i = 0; i < words.count; ++i) {
     const mbrt_word& word = words.words[i];
     if (word.letter == 'Q') {

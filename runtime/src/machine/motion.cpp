@@ -37,8 +37,8 @@ PlaneAxes planeAxes(int plane) {
 }
 
 MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
-  MoveOrigin origin{ctx.block.file,
-                    ctx.block.line,
+  MoveOrigin origin{ctx.run.block.file,
+                    ctx.run.block.line,
                     ctx.programName(),
                     ctx.machine.modal.feed,
                     ctx.machine.modal.feedMode,
@@ -180,7 +180,7 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
             const AxisCounts& machine, Point center, const MoveOrigin& origin) {
   widenBox(ctx, work);
   ++ctx.machine.moves;
-  if (ctx.motionSink.fn == nullptr) {
+  if (ctx.host.motionSink.fn == nullptr) {
     ctx.machine.position = machine;
     return;
   }
@@ -218,7 +218,8 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
   motion.line = origin.line;
   motion.program = origin.program;
   motion.cycle = origin.cycle;
-  callSink(ctx, [&] { ctx.motionSink.fn(ctx.motionSink.user, &motion); });
+  callSink(ctx,
+           [&] { ctx.host.motionSink.fn(ctx.host.motionSink.user, &motion); });
 }
 
 /// R > 0 takes the arc of at most 180 degrees, R < 0 the longer one; an R

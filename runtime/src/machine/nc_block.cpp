@@ -318,7 +318,7 @@ mbrt_status decideFlow(mbrt_ctx& ctx, const NcBlock& block, mbrt_flow* flow) {
     switch (block.codes.m[i]) {
       case 0:
       case 1:
-        ++ctx.optionalStops;
+        ++ctx.run.optionalStops;
         sendMessage(ctx, block.codes.m[i] == 0
                              ? "M00 program stop (the run goes on)"
                              : "M01 optional stop (the run goes on)");
@@ -590,14 +590,14 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   scanWords(ctx, words, count, block);
   ctx.machine.feedInBlock = false;
   ctx.compensation.codeInBlock = false;
-  ctx.callingCode = {'\0', 0.0};
+  ctx.stack.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
   block.frames.words = words;
   block.frames.count = count;
   // G66, G66.1 and G67 make a block GCodes::Other, and nothing else calls
   // instead of a block unless a modal call or a code call is set up.
   const bool mayCall = block.gCodes == GCodes::Other ||
-                       !ctx.modalCalls.empty() || ctx.profile.codeCalls;
+                       !ctx.stack.modalCalls.empty() || ctx.profile.codeCalls;
   bool taken = false;
   if (const mbrt_status status =
           mayCall ? callInsteadOfBlock(ctx, words, count, flow, &taken) : 0;
@@ -680,11 +680,12 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                       !isLookAheadCode(block.nonModal);
   // A block whose calls alarm still moved: it goes to the flattened program.
   // Most runs neither call codes nor flatten: no calls to say so.
-  const mbrt_status status = ctx.profile.codeCalls || !ctx.modalCalls.empty()
-                                 ? callAfterBlock(ctx, block.codes, flow)
-                                 : 0;
+  const mbrt_status status =
+      ctx.profile.codeCalls || !ctx.stack.modalCalls.empty()
+          ? callAfterBlock(ctx, block.codes, flow)
+          : 0;
   // A G10 L52 block is flattened with each parameter it lets a block set.
-  if (ctx.gcodeSink.fn != nullptr && !ctx.parameterInput) {
+  if (ctx.host.gcodeSink.fn != nullptr && !ctx.run.parameterInput) {
     flattenExecuted(ctx, words, count, *flow, block);
     block.flattened = true;
   }
@@ -700,7 +701,7 @@ mbrt_status executeBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
   // cannot follow) is in the flattened program too: read back, it moves
   // and alarms alike.
   if (status != 0 && ctx.machine.moves != movesBefore && !block.flattened &&
-      ctx.gcodeSink.fn != nullptr) {
+      ctx.host.gcodeSink.fn != nullptr) {
     flattenExecuted(ctx, words, count, *flow, block);
   }
   return status;
@@ -715,8 +716,8 @@ using namespace mbc::rt;
 mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
                           mbrt_flow* flow) {
   *flow = mbrt_flow{};
-  if (ctx->parameterInput) {
-    if (ctx->traceSink.fn != nullptr && count > 0) {
+  if (ctx->run.parameterInput) {
+    if (ctx->host.traceSink.fn != nullptr && count > 0) {
       mbrt_trace_words(ctx, "", words, count);
     }
     return parameterInputBlock(*ctx, words, count);
@@ -724,10 +725,10 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   // The N number comes first: it only sets #4114, and a block of nothing
   // else does nothing more (it is no block G66.1 calls for, nor traced).
   std::optional<double> sequence;
-  ctx->blockSequence = -1.0;
+  ctx->run.blockSequence = -1.0;
   if (count > 0 && words[0].letter == 'N') {
     sequence = mbc::numeric(words[0].value);
-    ctx->blockSequence = *sequence;
+    ctx->run.blockSequence = *sequence;
     ctx->machine.lastWords[lastWordSlot(LastWord::N)] = *sequence;
     ++words;
     --count;
@@ -738,7 +739,7 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   if (count == 0 && !shape) {
     return 0;
   }
-  if (ctx->traceSink.fn != nullptr && count > 0) {
+  if (ctx->host.traceSink.fn != nullptr && count > 0) {
     mbrt_trace_words(ctx, "", words, count);
   }
   mbrt_status status = shape ? enterShapeBlock(*ctx, sequence) : 0;

@@ -71,7 +71,7 @@ bool startsParameterInput(const FrameWords& words) {
 }
 
 mbrt_status startParameterInput(mbrt_ctx& ctx, const FrameWords&) {
-  ctx.parameterInput = true;
+  ctx.run.parameterInput = true;
   return 0;
 }
 
@@ -79,7 +79,7 @@ mbrt_status parameterInputBlock(mbrt_ctx& ctx, const mbrt_word* words,
                                 size_t count) {
   if (const mbrt_word* g = findWord(words, count, 'G')) {
     if (numeric(g->value) == 11.0) {
-      ctx.parameterInput = false;
+      ctx.run.parameterInput = false;
       return 0;
     }
     return raise(ctx, AlarmId::IllegalExpressionFormat,

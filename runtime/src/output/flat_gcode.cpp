@@ -161,7 +161,7 @@ bool transfers(const mbrt_word* words, size_t count) {
 }
 
 void send(mbrt_ctx& ctx, const std::string& line) {
-  sendText(ctx, ctx.gcodeSink, line);
+  sendText(ctx, ctx.host.gcodeSink, line);
 }
 
 /// G10 writes in G90; a run in G91 goes back to it after. In a lathe's G
@@ -184,14 +184,14 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                      hasOtherMeanings(ctx, words, count);
   const bool increments = cycle == LatheCycleWords::Increments;
   const bool scaling = hasCode(words, count, 510.0);
-  const auto [callLetter, callValue] = ctx.callingCode;
+  const auto [callLetter, callValue] = ctx.stack.callingCode;
   const bool codeCall =
       flow.kind == MBRT_FLOW_CALL && (flow.call_kind & kCallCodeBit) != 0;
-  std::string& line = ctx.gcodeLine;
+  std::string& line = ctx.run.gcodeLine;
   line.clear();
-  if (ctx.blockSequence >= 0.0) {
+  if (ctx.run.blockSequence >= 0.0) {
     line += 'N';
-    appendInteger(line, static_cast<long long>(ctx.blockSequence));
+    appendInteger(line, static_cast<long long>(ctx.run.blockSequence));
   }
   for (size_t i = 0; i < count; ++i) {
     const mbrt_word& word = words[i];
@@ -226,14 +226,14 @@ void flattenBlock(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
 }
 
 void flattenProgramStart(mbrt_ctx& ctx) {
-  if (ctx.gcodeSink.fn == nullptr || ctx.mainProgramNumber <= 0) {
+  if (ctx.host.gcodeSink.fn == nullptr || ctx.stack.mainProgramNumber <= 0) {
     return;
   }
-  send(ctx, fmt::format("O{:04}\n", ctx.mainProgramNumber));
+  send(ctx, fmt::format("O{:04}\n", ctx.stack.mainProgramNumber));
 }
 
 void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
-  if (ctx.gcodeSink.fn == nullptr) {
+  if (ctx.host.gcodeSink.fn == nullptr) {
     return;
   }
   std::string data =
@@ -252,7 +252,7 @@ void flattenWorkOffset(mbrt_ctx& ctx, int offset) {
 }
 
 void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
-  if (ctx.gcodeSink.fn == nullptr) {
+  if (ctx.host.gcodeSink.fn == nullptr) {
     return;
   }
   std::string data = fmt::format("G10 L{} P{} R", l, number);
@@ -261,7 +261,7 @@ void flattenToolOffset(mbrt_ctx& ctx, int l, int number, double value) {
 }
 
 void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value) {
-  if (ctx.gcodeSink.fn == nullptr) {
+  if (ctx.host.gcodeSink.fn == nullptr) {
     return;
   }
   std::string data = fmt::format("G10 P{} {}", p, letter);
@@ -274,7 +274,7 @@ void flattenLatheOffset(mbrt_ctx& ctx, int p, char letter, double value) {
 }
 
 void flattenParameter(mbrt_ctx& ctx, int number, int axis, double value) {
-  if (ctx.gcodeSink.fn == nullptr) {
+  if (ctx.host.gcodeSink.fn == nullptr) {
     return;
   }
   send(ctx, fmt::format("G10 L52\nN{}{} R{}\nG11\n", number,
@@ -282,7 +282,7 @@ void flattenParameter(mbrt_ctx& ctx, int number, int axis, double value) {
 }
 
 void flattenLookAheadStop(mbrt_ctx& ctx, int blocks) {
-  if (ctx.gcodeSink.fn == nullptr) {
+  if (ctx.host.gcodeSink.fn == nullptr) {
     return;
   }
   for (int i = 0; i < blocks; ++i) {

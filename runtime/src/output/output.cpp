@@ -12,8 +12,8 @@ using namespace mbc::rt;
 namespace {
 
 void sendLine(mbrt_ctx& ctx) {
-  ctx.scratch += '\n';
-  sendText(ctx, ctx.printSink, ctx.scratch);
+  ctx.run.scratch += '\n';
+  sendText(ctx, ctx.host.printSink, ctx.run.scratch);
 }
 
 } // namespace
@@ -21,11 +21,11 @@ void sendLine(mbrt_ctx& ctx) {
 mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
                        size_t count) {
   mbrt_trace(ctx, "DPRNT");
-  if (ctx->printSink.fn == nullptr) {
+  if (ctx->host.printSink.fn == nullptr) {
     return 0; // nothing in DPRNT can fail, so skip the formatting
   }
   const bool prt = ctx->profile.prt;
-  std::string& line = ctx->scratch;
+  std::string& line = ctx->run.scratch;
   line.clear();
   for (size_t i = 0; i < count; ++i) {
     const mbrt_print_item& item = items[i];
@@ -40,7 +40,7 @@ mbrt_status mbrt_dprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
 mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
                        size_t count) {
   mbrt_trace(ctx, "BPRNT");
-  std::string& line = ctx->scratch;
+  std::string& line = ctx->run.scratch;
   line.clear();
   for (size_t i = 0; i < count; ++i) {
     const mbrt_print_item& item = items[i];
@@ -52,7 +52,7 @@ mbrt_status mbrt_bprnt(mbrt_ctx* ctx, const mbrt_print_item* items,
                                numeric(item.value)));
     }
   }
-  if (ctx->printSink.fn != nullptr) {
+  if (ctx->host.printSink.fn != nullptr) {
     sendLine(*ctx);
   }
   return 0;

@@ -24,8 +24,8 @@ const std::string* calledName(const mbrt_ctx& ctx, mbrt_num value) {
   if (!n || !isNamedProgramNumber(*n)) {
     return nullptr;
   }
-  const auto it = ctx.programNames.find(*n);
-  return it == ctx.programNames.end() ? nullptr : &it->second;
+  const auto it = ctx.host.programNames.find(*n);
+  return it == ctx.host.programNames.end() ? nullptr : &it->second;
 }
 
 /// Whether the block's P names a program.
@@ -56,7 +56,7 @@ void appendWords(const mbrt_ctx& ctx, std::string& out, const mbrt_word* words,
 
 void mbrt_trace_values(mbrt_ctx* ctx, const char* tmpl, const mbrt_num* values,
                        size_t count) {
-  if (ctx->traceSink.fn == nullptr) {
+  if (ctx->host.traceSink.fn == nullptr) {
     return;
   }
   std::string text;
@@ -86,7 +86,7 @@ void mbrt_trace_values(mbrt_ctx* ctx, const char* tmpl, const mbrt_num* values,
 
 void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
                       size_t count) {
-  if (ctx->traceSink.fn == nullptr) {
+  if (ctx->host.traceSink.fn == nullptr) {
     return;
   }
   std::string text = head != nullptr ? head : "";
@@ -96,7 +96,7 @@ void mbrt_trace_words(mbrt_ctx* ctx, const char* head, const mbrt_word* words,
 
 void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
                      const mbrt_word* words, size_t count) {
-  if (ctx->traceSink.fn == nullptr) {
+  if (ctx->host.traceSink.fn == nullptr) {
     return;
   }
   const std::string* name = calledName(*ctx, program);
@@ -108,16 +108,16 @@ void mbrt_trace_call(mbrt_ctx* ctx, mbrt_num program, mbrt_num repeat,
 }
 
 int mbrt_tracing(const mbrt_ctx* ctx) {
-  return ctx->traceSink.fn != nullptr;
+  return ctx->host.traceSink.fn != nullptr;
 }
 
 void mbrt_trace(mbrt_ctx* ctx, const char* text) {
-  if (ctx->traceSink.fn == nullptr) {
+  if (ctx->host.traceSink.fn == nullptr) {
     return;
   }
   const std::string line =
-      locationPrefix(ctx->block.file != nullptr ? ctx->block.file : "",
-                     ctx->block.line) +
+      locationPrefix(ctx->run.block.file != nullptr ? ctx->run.block.file : "",
+                     ctx->run.block.line) +
       (text != nullptr ? text : "") + "\n";
-  sendText(*ctx, ctx->traceSink, line);
+  sendText(*ctx, ctx->host.traceSink, line);
 }
