@@ -12,10 +12,13 @@
 #include <new>
 
 #include "context.h"
+#include "corner_state.h"
 #include "cutter_comp.h"
+#include "cutter_comp_state.h"
 #include "flat_gcode.h"
 #include "frames.h"
 #include "lathe_corners.h"
+#include "lathe_state.h"
 #include "motion.h"
 #include "sysvars.h"
 
@@ -61,9 +64,9 @@ void loadProfile(mbrt_ctx& ctx) {
 /// (commons, offsets, part counters, #3002, settings) stays.
 void resetMachineState(mbrt_ctx& ctx) {
   ctx.machine.reset(ctx.profile);
-  ctx.compensation = CompensationState{};
-  ctx.corner = CornerInsertion{};
-  ctx.lathe.reset();
+  *ctx.compensation = CompensationState{};
+  *ctx.corner = CornerInsertion{};
+  ctx.lathe->reset();
   ctx.data.outputWords = {}; // the output signals #1100+ are off at power-on
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
 }
@@ -75,9 +78,9 @@ void resetMachineState(mbrt_ctx& ctx) {
 void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.stack.startRun(mainProgram);
   ctx.machine.startRun(ctx.profile);
-  ctx.compensation = CompensationState{};
-  ctx.corner = CornerInsertion{};
-  ctx.lathe.startRun();
+  *ctx.compensation = CompensationState{};
+  *ctx.corner = CornerInsertion{};
+  ctx.lathe->startRun();
   resyncProgram(ctx);
   // A main program the machine cannot have alarms at its first block.
   ctx.run.startRun(ctx.profile.programNumberDigits == 4 &&
@@ -109,6 +112,16 @@ void keepHostSettings(mbrt_ctx& from, mbrt_ctx& to) {
 
 using namespace mbc;
 using namespace mbc::rt;
+
+mbrt_ctx::mbrt_ctx()
+    : compensation(std::make_unique<CompensationState>()),
+      corner(std::make_unique<CornerInsertion>()),
+      lathe(std::make_unique<LatheState>()) {
+}
+
+mbrt_ctx::~mbrt_ctx() = default;
+mbrt_ctx::mbrt_ctx(mbrt_ctx&&) noexcept = default;
+mbrt_ctx& mbrt_ctx::operator=(mbrt_ctx&&) noexcept = default;
 
 mbrt_ctx* mbrt_create(const char* profile_json, char* err, size_t err_size) {
   try {

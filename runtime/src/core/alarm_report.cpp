@@ -59,9 +59,9 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   alarm.file = ctx.run.block.file != nullptr ? ctx.run.block.file : "";
   alarm.line = ctx.run.block.line;
   alarm.stack.clear();
-  const BlockPlace& cycle = ctx.lathe.cycleBlock;
+  const BlockPlace& cycle = ctx.run.cycleBlock;
   if (cycle.line != 0 && alarm.line != cycle.line) {
-    alarm.stack.push_back(CallSite{fmt::format("G{}", ctx.lathe.cycleLabel),
+    alarm.stack.push_back(CallSite{fmt::format("G{}", ctx.run.cycleLabel),
                                    cycle.file != nullptr ? cycle.file : "",
                                    cycle.line});
   }

@@ -66,14 +66,6 @@ void MachineState::startRun(const Profile& profile) {
   stats = RunStats{};
 }
 
-void LatheState::reset() {
-  *this = LatheState{};
-}
-
-void LatheState::startRun() {
-  shapeReading.code = 0;
-}
-
 void CallStack::startRun(const char* program) {
   mainProgram = program != nullptr ? program : "MAIN";
   mainProgramNumber = parseProgramNumber(mainProgram.c_str());
@@ -103,6 +95,8 @@ void RunControl::startRun(bool illegalMain) {
   block.line = 0;
   block.blocks = 0;
   blockSequence = -1.0;
+  cycleLabel = 0;
+  cycleBlock = BlockPlace{};
   interrupted = false;
   outOfMemory = false;
   illegalMainNumber = illegalMain;

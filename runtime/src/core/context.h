@@ -17,13 +17,13 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "last_words.h"
-#include "lathe_shape.h"
 #include "profile.h"
 
 namespace mbc::rt {
@@ -164,79 +164,10 @@ struct Frames {
   bool operator==(const Frames&) const = default;
 };
 
-/// Where a block's points go on the machine: its frames (G52, G92, mirror,
-/// scaling, rotation, the tool length offset, a lathe's tool offsets) and
-/// the values of its work offset and of the external offset. A move that
-/// waits for later blocks keeps the placement of its own block, whatever
-/// they change (frames.h PlacedAs).
-struct Placement {
-  Frames frames;
-  AxisCounts workOffset{};
-  AxisCounts external{};
-};
-
 /// A block's place in the program text.
 struct BlockPlace {
   const char* file = nullptr;
   int line = 0;
-};
-
-/// Where a move was programmed and how fast it goes: the block's data, kept
-/// with a move that cutter compensation holds while later blocks run.
-struct MoveOrigin {
-  const char* file = nullptr;
-  int line = 0;
-  const char* program = "";
-  double feed = 0.0;  // modal F
-  int feedMode = 94;  // G93 G94 G95
-  double spindle = 0; // S, for G95
-  int cycle = 0;      // the canned cycle a move belongs to
-  // The block's programmed end point (workpiece frame) when the move's end
-  // is elsewhere: cutter compensation's tool centre.
-  const AxisCounts* programmed = nullptr;
-  // A lathe's spindle: in G96 `spindle` is the surface speed and the speed
-  // at each X follows from it, capped at `spindleLimit` (0: none); a G32
-  // thread's F is its lead along its longer axis.
-  bool surfaceSpeed = false;
-  double spindleLimit = 0.0;
-  bool threading = false;
-  double leadChange = 0.0; // G34 K: the lead grows by it per revolution
-};
-
-/// A programmed move as cutter compensation holds it (cutter_comp.h), in
-/// the workpiece frame. `still`: no motion in the compensation plane (a Z
-/// move, or a block without motion, which is not held).
-struct HeldMove {
-  bool still = false;
-  bool arc = false;
-  bool clockwise = false; // as it turns in the workpiece frame
-  bool rapid = false;
-  bool startUp =
-      false;          // the first move with the offset: no vector at its start
-  AxisCounts start{}; // programmed, workpiece frame
-  AxisCounts end{};
-  double center[2] = {0.0, 0.0}; // arcs: in the plane, workpiece counts
-  bool hasDirection = false;     // G40/G41/G42 I J K: a virtual path
-  double direction[2] = {0.0, 0.0};
-  double offset = 0.0; // the offset value, counts (0 or more)
-  int side = 1;        // 1: tool left of the path, -1: right
-  MoveOrigin origin;   // origin.program is set from `program` as it leaves
-  std::string program; // the program it was read in
-  Placement placement; // of the block it was read in
-  // A lathe's imaginary tip vector, added to the move's points so that
-  // the offset path is the tip's (cutter_comp.cpp followTip).
-  AxisCounts tipShift{};
-};
-
-/// Cutter compensation C: the move whose end vector waits for the next move
-/// in the plane, and the moves without plane motion read after it.
-struct CompensationState {
-  bool engaged = false;          // the tool is offset from the programmed path
-  std::vector<HeldMove> held;    // held.front() moves in the plane
-  std::vector<HeldMove> leaving; // the moves leaving now (cutter_comp.cpp)
-  int stillBlocks = 0;           // blocks without plane motion since it
-  std::uint64_t planeMoves = 0;  // moves in the plane read so far
-  bool codeInBlock = false;      // the block has G40, G41 or G42
 };
 
 /// The toolpath's box in workpiece counts of one input unit (G20 and G21
@@ -297,19 +228,6 @@ template <class Fn> struct Sink {
   void* user = nullptr;
 };
 
-/// The state of the block a held chamfer or corner R was read in, which
-/// its moves run in while the next block is read: the modal codes (F,
-/// G94/G95, the plane, G40-G42...), the placement, the D and S in force,
-/// and whether the block gave G40-G42 or F (held_block.h).
-struct BlockState {
-  ModalState modal;
-  Placement placement;
-  double dWord = 0.0; // #4107
-  double sWord = 0.0; // #4119
-  bool codeInBlock = false;
-  bool feedInBlock = false;
-};
-
 /// A flag a signal handler or another thread sets while the run reads it.
 /// It copies as a value, so that mbrt_reset can replace a whole context.
 class SignalFlag {
@@ -332,38 +250,6 @@ public:
 
 private:
   std::atomic<bool> value_{false};
-};
-
-/// Chamfering and corner R (lathe_corners.h): the G01 block with I, K
-/// (C) or R holds its move until the next block tells where the corner
-/// goes. Program coordinates; `amount` signed along `toward`.
-struct CornerInsertion {
-  bool pending = false;
-  bool fresh = false;  // held by the block running now
-  bool round = false;  // corner R, else a chamfer
-  AxisCounts from{};   // the held move's start (a)
-  AxisCounts corner{}; // its end (b), where the next block starts
-  int along = -1;      // the axis the held move runs on
-  int toward = -1;     // the axis of the next move
-  Counts amount = 0;
-  const char* file = nullptr; // the held block's
-  int line = 0;
-  BlockState block; // the held block's state, which its moves run in
-  // ,C or ,R (corner_blends.h): 'C' or 'R', at any angle, after a line or
-  // an arc about `center` (the plane's axes, counts); 0 for the 90 degree
-  // forms above.
-  char blend = 0;
-  bool rapid = false; // a G00 ,A line
-  bool arc = false;
-  bool clockwise = false;
-  std::array<double, 2> center{};
-  // ,A without an end point: the line's angle; the next block's end point
-  // and ,A give the corner.
-  bool openEnd = false;
-  double angle = 0.0;
-
-  /// ,C ,R or an open ,A (corner_blends.h), not a 90 degree form.
-  bool anyAngle() const { return blend != 0 || openEnd; }
 };
 
 /// Where the tool is and what its next move starts from: its positions,
@@ -423,51 +309,6 @@ struct DryRunState {
   Sink<mbrt_motion_fn> motionSink;
 };
 
-/// A lathe's shape cycle (G70-G73) reading the blocks ns to nf of its
-/// shape program as they run (lathe_shapes.h): they move nothing, their
-/// moves make the shape, and the state before them comes back after nf.
-struct ShapeReading {
-  int code = 0; // the cycle (lathe_codes.h) while reading, else 0
-  double ns = 0.0;
-  double nf = 0.0;
-  bool started = false;        // block ns has run
-  bool feedSet = false;        // a block of the shape gave F
-  bool firstWordsRead = false; // block ns's axis words have been seen
-  bool typeTwo = false;        // block ns wrote the cut axis too (G71 Z, G72 X)
-  Shape shape;
-  // The cycle's settings: the finishing allowance (G71-G73), G71/G72's
-  // depth of cut and escape, G73's relief and divisions, all in counts, x
-  // a radius.
-  ShapePoint allowance;
-  Counts depth = 0;
-  Counts escape = 0;
-  ShapePoint relief;
-  int divisions = 1;
-  DryRunState before;    // the state the shape's blocks run over
-  BlockPlace cycleBlock; // the block of the cycle
-};
-
-/// A lathe's multiple repetitive cycles: their settings, the shape being
-/// read and those read so far.
-struct LatheState {
-  // The parameters of a lathe's multiple repetitive cycles (5130-5143)
-  // that a cycle's first block set, until power-off (lengths in mm).
-  std::map<int, double> cycleSettings;
-  ShapeReading shapeReading;
-  // The shapes read so far by (ns, nf), for G70.
-  std::map<std::pair<double, double>, Shape> shapes;
-  int cycleLabel = 0; // the cycle a lathe's shape cycle moves belong to
-  // While a shape cycle runs the moves of its shape's blocks, each at its
-  // block's line, the cycle's block: an alarm names it as the caller.
-  BlockPlace cycleBlock;
-
-  /// Power-on: no settings and no shapes.
-  void reset();
-
-  /// A run begins reading no shape (an interrupted run may have been).
-  void startRun();
-};
-
 /// The machine's data, which runs keep and mbrt_reset takes back from the
 /// profile: offsets, common variables, interface signals, part counters,
 /// settings and the parameters as the profile gave them.
@@ -522,6 +363,12 @@ struct RunControl {
   // The N of the block running, -1 for none: the flattened program keeps
   // it, for a lathe's shape cycles and a reader's bearings.
   double blockSequence = -1.0;
+  // The cycle whose moves run now (a lathe's single and shape cycles): the
+  // label its moves carry, 0 for none, and while a shape cycle runs the
+  // moves of its shape's blocks, each at its block's line, the cycle's
+  // block, which an alarm names as the caller.
+  int cycleLabel = 0;
+  BlockPlace cycleBlock;
   SignalFlag interrupted;
   SignalFlag outOfMemory;
   bool illegalMainNumber = false; // PS0074 at the first block
@@ -581,19 +428,34 @@ struct HostOutputs {
   void startRun();
 };
 
+// The parts of a context that a feature of the machine owns, declared
+// where the feature lives (machine/): the context holds them, and only code
+// that includes their header reads them.
+struct CompensationState; // cutter_comp_state.h
+struct CornerInsertion;   // corner_state.h
+struct LatheState;        // lathe_state.h
+
 } // namespace mbc::rt
 
 /// A context: the machine's description and the parts of its state, each
-/// with its own life (core/context.cpp, api/lifetime.cpp).
+/// with its own life (core/context.cpp, api/lifetime.cpp). Its special
+/// members are defined where every part is complete (api/lifetime.cpp).
 struct mbrt_ctx {
+  mbrt_ctx();
+  ~mbrt_ctx();
+  mbrt_ctx(const mbrt_ctx&) = delete;
+  mbrt_ctx& operator=(const mbrt_ctx&) = delete;
+  mbrt_ctx(mbrt_ctx&&) noexcept;
+  mbrt_ctx& operator=(mbrt_ctx&&) noexcept;
+
   mbc::rt::Profile profile;
   std::array<std::int8_t, 26> axisIndex{}; // 'A'..'Z' -> axis or -1
   mbc::rt::MachineData data;
   mbc::rt::CallStack stack;
   mbc::rt::MachineState machine;
-  mbc::rt::CompensationState compensation;
-  mbc::rt::CornerInsertion corner;
-  mbc::rt::LatheState lathe;
+  std::unique_ptr<mbc::rt::CompensationState> compensation;
+  std::unique_ptr<mbc::rt::CornerInsertion> corner;
+  std::unique_ptr<mbc::rt::LatheState> lathe;
   mbc::rt::RunControl run;
   mbc::rt::HostOutputs host;
 

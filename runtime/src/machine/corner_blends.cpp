@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "corner_state.h"
 #include "lathe_corners.h"
 
 namespace mbc::rt {
@@ -373,7 +374,7 @@ mbrt_status closeAngledLine(mbrt_ctx& ctx, CornerInsertion& held,
 /// for the next block; `open`: a ,A line without its end point.
 void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
               const AxisCounts& target, const PlaneMove& move, bool open) {
-  CornerInsertion& held = ctx.corner;
+  CornerInsertion& held = *ctx.corner;
   held = CornerInsertion{};
   held.pending = true;
   held.fresh = true;
@@ -470,8 +471,8 @@ mbrt_status holdBlendMove(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status moveAfterBlend(mbrt_ctx& ctx, const MotionWords& words,
                            const AxisCounts& target) {
-  CornerInsertion held = ctx.corner;
-  ctx.corner.pending = false;
+  CornerInsertion held = *ctx.corner;
+  ctx.corner->pending = false;
   const PlaneIndex plane = planeIndex(ctx);
   if (ctx.machine.modal.plane != held.block.modal.plane) {
     return raise(ctx, AlarmId::MissingMoveAfterCorner,

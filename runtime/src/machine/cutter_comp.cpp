@@ -17,6 +17,8 @@
 #include <optional>
 #include <vector>
 
+#include "corner_state.h"
+#include "cutter_comp_state.h"
 #include "flat_gcode.h"
 #include "frames.h"
 #include "lathe_tools.h"
@@ -307,7 +309,7 @@ void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
 /// interferes (`check`), the tool standing at the end of the move before.
 mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
                   bool check = true) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   // Swapped, not moved: both vectors keep their storage from move to move.
   std::vector<HeldMove>& held = state.leaving;
   held.clear();
@@ -410,7 +412,7 @@ bool offsetOn(const mbrt_ctx& ctx) {
 }
 
 void followTip(const mbrt_ctx& ctx, HeldMove& move) {
-  if (!ctx.compensation.engaged && !offsetOn(ctx)) {
+  if (!ctx.compensation->engaged && !offsetOn(ctx)) {
     return;
   }
   move.tipShift = noseTool(ctx).tip;
@@ -481,7 +483,7 @@ mbrt_status refuseFs15Restoration(mbrt_ctx& ctx) {
 
 /// The cancel move: from where the tool is straight to the programmed end.
 mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   if (move.arc) {
     return raise(ctx, AlarmId::NoCircleAtStartOrCancel,
                  "the move that cancels cutter compensation must be G00 or "
@@ -515,7 +517,7 @@ mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
 } // namespace
 
 mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   const PlaneIndex plane = planeIndex(ctx);
   if (plane.p < 0 || plane.q < 0) {
     const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
@@ -633,7 +635,7 @@ mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
   const PlanePoint start = pointOf(move.start, plane);
   const PlanePoint end = pointOf(move.end, plane);
   if (start.x != end.x || start.y != end.y) {
-    ++ctx.compensation.planeMoves;
+    ++ctx.compensation->planeMoves;
     return cancel(ctx, move);
   }
   // Other axes alone: the plane's axes stay on the vector the move before
@@ -646,7 +648,7 @@ mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
 }
 
 mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask) {
-  if (!ctx.compensation.engaged || mask == 0) {
+  if (!ctx.compensation->engaged || mask == 0) {
     return 0;
   }
   if (const mbrt_status status = refuseFs15Restoration(ctx)) {
@@ -664,12 +666,12 @@ mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask) {
   if (const mbrt_status status = releaseHeldMoves(ctx)) {
     return status;
   }
-  ctx.compensation.engaged = planeAxes == 0;
+  ctx.compensation->engaged = planeAxes == 0;
   return 0;
 }
 
 mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   if (state.held.empty()) {
     return 0;
   }
@@ -677,7 +679,7 @@ mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check) {
 }
 
 mbrt_status cancelVectorHere(mbrt_ctx& ctx) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   if (!state.engaged) {
     return 0;
   }
@@ -696,7 +698,7 @@ mbrt_status cancelVectorHere(mbrt_ctx& ctx) {
 }
 
 mbrt_status stopLookAhead(mbrt_ctx& ctx) {
-  if (ctx.compensation.held.empty()) {
+  if (ctx.compensation->held.empty()) {
     return 0;
   }
   flattenLookAheadStop(ctx, stillBlocksAllowed(ctx) + 1);
@@ -704,11 +706,11 @@ mbrt_status stopLookAhead(mbrt_ctx& ctx) {
 }
 
 mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   if (state.planeMoves != planeMovesBefore || !state.engaged) {
     return 0;
   }
-  if (ctx.corner.pending && ctx.corner.fresh) {
+  if (ctx.corner->pending && ctx.corner->fresh) {
     return 0; // a move in the plane, held for its chamfer or corner R
   }
   // G40 alone: the vector goes with the next move in the plane. G41/G42
@@ -723,7 +725,7 @@ mbrt_status compensateBlockEnd(mbrt_ctx& ctx, std::uint64_t planeMovesBefore) {
 }
 
 mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
-  CompensationState& state = ctx.compensation;
+  CompensationState& state = *ctx.compensation;
   if (!state.engaged || !offsetOn(ctx)) {
     return raise(ctx, AlarmId::ImproperGCode,
                  "G39 corner arc outside cutter compensation (G41/G42)");

@@ -11,6 +11,8 @@
 #include <string_view>
 
 #include "context.h"
+#include "cutter_comp_state.h"
+#include "lathe_state.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -20,8 +22,9 @@ namespace mbc::rt {
 /// lathe's shape cycle reads its shape program: its moves are the
 /// programmed shape, which the cycle compensates as a whole.
 inline bool compensating(const mbrt_ctx& ctx) {
-  return ctx.lathe.shapeReading.code == 0 &&
-         (ctx.machine.modal.compensation != 40 || ctx.compensation.engaged);
+  // The modal code first: most blocks of most programs are in G40.
+  return (ctx.machine.modal.compensation != 40 || ctx.compensation->engaged) &&
+         ctx.lathe->shapeReading.code == 0;
 }
 
 /// A programmed move (G00-G03, start and end in the workpiece frame;

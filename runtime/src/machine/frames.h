@@ -8,6 +8,7 @@
 #pragma once
 
 #include "context.h"
+#include "move_state.h"
 
 namespace mbc::rt {
 

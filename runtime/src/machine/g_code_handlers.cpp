@@ -187,7 +187,7 @@ mbrt_status selectPolar(mbrt_ctx&, ModalState& next, NcBlock&, int code) {
 mbrt_status selectCompensation(mbrt_ctx& ctx, ModalState& next, NcBlock&,
                                int code) {
   next.compensation = code / 10;
-  ctx.compensation.codeInBlock = true;
+  ctx.compensation->codeInBlock = true;
   return 0;
 }
 

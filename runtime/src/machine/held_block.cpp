@@ -3,7 +3,9 @@
 
 #include <fmt/format.h>
 
+#include "corner_state.h"
 #include "cutter_comp.h"
+#include "cutter_comp_state.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -13,7 +15,7 @@ BlockState captureBlock(const mbrt_ctx& ctx) {
           placementOf(ctx),
           ctx.machine.lastWords[lastWordSlot(LastWord::D)],
           ctx.machine.lastWords[lastWordSlot(LastWord::S)],
-          ctx.compensation.codeInBlock,
+          ctx.compensation->codeInBlock,
           ctx.machine.feedInBlock};
 }
 
@@ -24,7 +26,7 @@ InHeldBlock::InHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held)
   ctx.machine.modal = block.modal;
   ctx.machine.lastWords[lastWordSlot(LastWord::D)] = block.dWord;
   ctx.machine.lastWords[lastWordSlot(LastWord::S)] = block.sWord;
-  ctx.compensation.codeInBlock = block.codeInBlock;
+  ctx.compensation->codeInBlock = block.codeInBlock;
   ctx.machine.feedInBlock = block.feedInBlock;
   ctx.run.block.file = held.file;
   ctx.run.block.line = held.line;
@@ -36,20 +38,20 @@ InHeldBlock::~InHeldBlock() {
   ctx_.machine.modal = own_.modal;
   ctx_.machine.lastWords[lastWordSlot(LastWord::D)] = own_.dWord;
   ctx_.machine.lastWords[lastWordSlot(LastWord::S)] = own_.sWord;
-  ctx_.compensation.codeInBlock = own_.codeInBlock;
+  ctx_.compensation->codeInBlock = own_.codeInBlock;
   ctx_.machine.feedInBlock = own_.feedInBlock;
   ctx_.run.block.file = file_;
   ctx_.run.block.line = line_;
 }
 
 mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what) {
-  if (!ctx.corner.pending) {
+  if (!ctx.corner->pending) {
     return 0;
   }
   return raise(ctx, AlarmId::Unsupported,
                fmt::format("{} between a chamfer, corner R or ,A line (line "
                            "{}) and the move that makes its corner",
-                           what, ctx.corner.line));
+                           what, ctx.corner->line));
 }
 
 mbrt_status refuseUnderHeldMoves(mbrt_ctx& ctx, std::string_view what) {

@@ -8,7 +8,9 @@
 #include <optional>
 
 #include "context.h"
+#include "corner_state.h"
 #include "frames.h"
+#include "move_state.h"
 
 namespace mbc::rt {
 

@@ -6,6 +6,8 @@
 #include <cstdlib>
 
 #include "corner_blends.h"
+#include "corner_state.h"
+#include "cutter_comp_state.h"
 
 namespace mbc::rt {
 
@@ -61,7 +63,7 @@ bool angleByA(const mbrt_ctx& ctx) {
 }
 
 bool insertsCorner(const mbrt_ctx& ctx, const MotionWords& words) {
-  if (ctx.compensation.codeInBlock) {
+  if (ctx.compensation->codeInBlock) {
     return false; // G41/G42 I K: the direction of the start-up (mill)
   }
   const PlaneAxes axes = planeAxes(ctx.machine.modal.plane);
@@ -120,7 +122,7 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
                     letterOf(ctx, along), words.hasR ? "corner R" : "chamfer",
                     static_cast<double>(std::abs(amount)) / ctx.scale()));
   }
-  CornerInsertion& held = ctx.corner;
+  CornerInsertion& held = *ctx.corner;
   held = CornerInsertion{true,
                          true,
                          words.hasR,
@@ -138,11 +140,11 @@ mbrt_status holdCornerMove(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
                             const AxisCounts& target) {
-  if (ctx.corner.anyAngle()) {
+  if (ctx.corner->anyAngle()) {
     return moveAfterBlend(ctx, words, target);
   }
-  CornerInsertion held = ctx.corner;
-  ctx.corner.pending = false;
+  CornerInsertion held = *ctx.corner;
+  ctx.corner->pending = false;
   const std::string toward = letterOf(ctx, held.toward);
   if (ctx.machine.modal.motion != 1) {
     return raise(ctx, AlarmId::NotG01AfterCorner,
@@ -204,7 +206,7 @@ mbrt_status moveAfterCorner(mbrt_ctx& ctx, const MotionWords& words,
 }
 
 mbrt_status checkCornerTaken(mbrt_ctx& ctx) {
-  CornerInsertion& held = ctx.corner;
+  CornerInsertion& held = *ctx.corner;
   if (held.fresh) {
     held.fresh = false;
     return 0;
@@ -226,11 +228,11 @@ mbrt_status checkCornerTaken(mbrt_ctx& ctx) {
 }
 
 void releaseCornerMove(mbrt_ctx& ctx) {
-  const CornerInsertion held = ctx.corner;
+  const CornerInsertion held = *ctx.corner;
   if (!held.pending) {
     return;
   }
-  ctx.corner.pending = false;
+  ctx.corner->pending = false;
   if (held.anyAngle()) {
     runHeldAsProgrammed(ctx, held);
     return;

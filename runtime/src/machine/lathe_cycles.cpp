@@ -108,7 +108,7 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
                {&p.back, p.rapidBack, side},
                {&p.start, true, 40}};
 
-  ctx.lathe.cycleLabel =
+  ctx.run.cycleLabel =
       static_cast<int>(writtenLatheCode(ctx, kLatheOwnCode + cycle * 10));
   mbrt_status status = 0;
   for (const auto& move : moves) {
@@ -119,7 +119,7 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
     }
   }
   ctx.machine.modal.compensation = programmed;
-  ctx.lathe.cycleLabel = 0;
+  ctx.run.cycleLabel = 0;
   return status;
 }
 

@@ -32,6 +32,7 @@
 #include "lathe_codes.h"
 #include "lathe_cycles.h"
 #include "lathe_settings.h"
+#include "lathe_state.h"
 
 namespace mbc::rt {
 
@@ -217,9 +218,9 @@ mbrt_status threadCycle(mbrt_ctx& ctx, const CycleWords& words) {
       const auto p = static_cast<long>(*words.p);
       const double tenths = static_cast<double>(p / 100 % 100);
       const double angle = static_cast<double>(p % 100);
-      ctx.lathe.cycleSettings[5142] = static_cast<double>(p / 10000);
-      ctx.lathe.cycleSettings[5130] = tenths;
-      ctx.lathe.cycleSettings[5143] = angle;
+      ctx.lathe->cycleSettings[5142] = static_cast<double>(p / 10000);
+      ctx.lathe->cycleSettings[5130] = tenths;
+      ctx.lathe->cycleSettings[5143] = angle;
     }
     if (words.q) {
       keepCycleLength(ctx, 5140, *words.q);

@@ -6,13 +6,15 @@
 #include <mbc/arith.h>
 
 #include "context.h"
+#include "lathe_state.h"
 
 namespace mbc::rt {
 
 inline double cycleSetting(const mbrt_ctx& ctx, int parameter) {
-  const auto it = ctx.lathe.cycleSettings.find(parameter);
-  return it != ctx.lathe.cycleSettings.end() ? it->second
-                                             : ctx.profile.parameter(parameter);
+  const auto it = ctx.lathe->cycleSettings.find(parameter);
+  return it != ctx.lathe->cycleSettings.end()
+             ? it->second
+             : ctx.profile.parameter(parameter);
 }
 
 /// A length setting in counts.
@@ -35,7 +37,7 @@ inline Counts incrementCounts(const mbrt_ctx& ctx, double increments) {
 }
 
 inline void keepCycleLength(mbrt_ctx& ctx, int parameter, Counts counts) {
-  ctx.lathe.cycleSettings[parameter] =
+  ctx.lathe->cycleSettings[parameter] =
       static_cast<double>(counts) / ctx.countsPerMm();
 }
 

@@ -8,10 +8,13 @@
 
 #include <algorithm>
 
+#include "corner_state.h"
 #include "cutter_comp.h"
+#include "cutter_comp_state.h"
 #include "lathe_codes.h"
 #include "lathe_roughing.h"
 #include "lathe_settings.h"
+#include "lathe_state.h"
 #include "motion.h"
 
 namespace mbc::rt {
@@ -70,7 +73,7 @@ void keepSettings(mbrt_ctx& ctx, int code, const FrameWords& words) {
     keepLength(ctx, 5135, lengthWord(ctx, words, 'U'));
     keepLength(ctx, 5136, lengthWord(ctx, words, 'W'));
     if (const auto divisions = wholeWord(words, 'R')) {
-      ctx.lathe.cycleSettings[5137] = *divisions;
+      ctx.lathe->cycleSettings[5137] = *divisions;
     }
     return;
   }
@@ -111,7 +114,7 @@ ShapeMove shapeMoveOf(const mbrt_ctx& ctx, const mbrt_motion& motion) {
 /// with the G40/G41/G42 a block of the shape gave (0: the cycle's).
 void recordMove(void* user, const mbrt_motion* motion) {
   auto& ctx = *static_cast<mbrt_ctx*>(user);
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   reading.feedSet = reading.feedSet || ctx.machine.feedInBlock;
   ShapeMove move = shapeMoveOf(ctx, *motion);
   move.feed =
@@ -138,11 +141,11 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   const ModalState modal = ctx.machine.modal;
-  const bool codeInBlock = ctx.compensation.codeInBlock;
-  ctx.compensation.codeInBlock = false;
-  ctx.lathe.cycleLabel = writtenCode(ctx, code);
+  const bool codeInBlock = ctx.compensation->codeInBlock;
+  ctx.compensation->codeInBlock = false;
+  ctx.run.cycleLabel = writtenCode(ctx, code);
   const BlockPlace cycle{ctx.run.block.file, ctx.run.block.line};
-  ctx.lathe.cycleBlock = cycle;
+  ctx.run.cycleBlock = cycle;
   ctx.machine.modal.incremental = false;
   mbrt_status status = 0;
   for (const ShapeMove& move : moves) {
@@ -170,9 +173,9 @@ mbrt_status runMoves(mbrt_ctx& ctx, const std::vector<ShapeMove>& moves,
   }
   ctx.run.block.file = cycle.file;
   ctx.run.block.line = cycle.line;
-  ctx.lathe.cycleBlock = BlockPlace{};
-  ctx.lathe.cycleLabel = 0;
-  ctx.compensation.codeInBlock = codeInBlock;
+  ctx.run.cycleBlock = BlockPlace{};
+  ctx.run.cycleLabel = 0;
+  ctx.compensation->codeInBlock = codeInBlock;
   const double lastFeed = ctx.machine.modal.feed;
   ctx.machine.modal = modal;
   ctx.machine.modal.feed = code == kG70 ? lastFeed : modal.feed;
@@ -232,7 +235,7 @@ void collectMove(void* user, const mbrt_motion* motion) {
 mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
                             Shape& path) {
   const DryRunState before = takeSnapshot(ctx);
-  const CompensationState compensation = ctx.compensation;
+  const CompensationState compensation = *ctx.compensation;
   path = Shape{shape.start, {}, {}};
   PathCollector collector{&ctx, &path.moves};
   ctx.host.motionSink = {collectMove, &collector};
@@ -241,23 +244,23 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
   if (status == 0) {
     status = releaseHeldMoves(ctx);
   }
-  ctx.compensation = compensation;
+  *ctx.compensation = compensation;
   restoreSnapshot(ctx, before);
   return status;
 }
 
 /// After nf: the cycle runs over the shape read.
 mbrt_status runCycle(mbrt_ctx& ctx) {
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   const int code = reading.code;
   const Shape shape = reading.shape;
   const ShapePoint allowance = reading.allowance;
   const ShapePoint relief = reading.relief;
   const int divisions = reading.divisions;
   restoreSnapshot(ctx, reading.before);
-  ctx.lathe.shapeReading.code = 0;
+  ctx.lathe->shapeReading.code = 0;
   // G70 runs the kept shape: its moves' file lives as long as it.
-  const Shape& kept = ctx.lathe.shapes[{reading.ns, reading.nf}] = shape;
+  const Shape& kept = ctx.lathe->shapes[{reading.ns, reading.nf}] = shape;
   if (code == kG70) {
     return finish(ctx, kept);
   }
@@ -299,7 +302,7 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
 
 /// Reading starts: the state the shape's blocks will run over is kept.
 void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   reading = ShapeReading{};
   reading.code = code;
   reading.ns = ns;
@@ -340,13 +343,13 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
     return status;
   }
   if (code == kG70) {
-    if (const auto shape = ctx.lathe.shapes.find({*ns, *nf});
-        shape != ctx.lathe.shapes.end()) {
+    if (const auto shape = ctx.lathe->shapes.find({*ns, *nf});
+        shape != ctx.lathe->shapes.end()) {
       return finish(ctx, shape->second);
     }
   }
   startReading(ctx, code, *ns, *nf);
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   const int x = ctx.axisOf('X');
   const int z = ctx.axisOf('Z');
   if (const auto u = lengthWord(ctx, words, 'U')) {
@@ -364,7 +367,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
         static_cast<double>(lengthSetting(ctx, words, oneBlock, 'K', 5136))};
     reading.divisions = static_cast<int>(d.value_or(cycleSetting(ctx, 5137)));
     if (reading.divisions < 1) {
-      ctx.lathe.shapeReading.code = 0;
+      ctx.lathe->shapeReading.code = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: {} divisions", writtenCode(ctx, code),
                                reading.divisions));
@@ -377,7 +380,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
 }
 
 void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   if (reading.firstWordsRead) {
     return;
   }
@@ -388,7 +391,7 @@ void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
 }
 
 mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   if (!reading.started) {
     if (n != reading.ns) {
       const int code = reading.code;
@@ -407,7 +410,7 @@ mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
 
 mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
                             const mbrt_flow& flow, mbrt_status status) {
-  ShapeReading& reading = ctx.lathe.shapeReading;
+  ShapeReading& reading = ctx.lathe->shapeReading;
   ctx.host.motionSink = reading.before.motionSink;
   // A shape that cannot be read leaves the machine where the cycle found
   // it, for a context that runs again.
@@ -424,8 +427,8 @@ mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
     return raise(ctx, AlarmId::ShapeCommand,
                  "a call, return or end in the shape program");
   }
-  if (n == reading.nf && ctx.corner.pending) {
-    ctx.corner.pending = false;
+  if (n == reading.nf && ctx.corner->pending) {
+    ctx.corner->pending = false;
     stop();
     return raise(ctx, AlarmId::MissingMoveAfterCorner,
                  fmt::format("N{}: the shape's last block ends with a "

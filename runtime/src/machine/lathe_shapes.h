@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "frame_codes.h"
+#include "lathe_state.h"
 
 namespace mbc::rt {
 
@@ -23,7 +24,7 @@ namespace mbc::rt {
 mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words);
 
 inline bool readingShape(const mbrt_ctx& ctx) {
-  return ctx.lathe.shapeReading.code != 0;
+  return ctx.lathe->shapeReading.code != 0;
 }
 
 /// The axis words of an NC block of the shape (bit a: axis a written):

@@ -13,7 +13,9 @@
 #include <numbers>
 
 #include "corner_blends.h"
+#include "corner_state.h"
 #include "cutter_comp.h"
+#include "cutter_comp_state.h"
 #include "frames.h"
 #include "lathe_codes.h"
 #include "lathe_corners.h"
@@ -43,7 +45,7 @@ MoveOrigin blockOrigin(const mbrt_ctx& ctx, int cycle) {
                     ctx.machine.modal.feed,
                     ctx.machine.modal.feedMode,
                     ctx.machine.lastWords[lastWordSlot(LastWord::S)],
-                    cycle != 0 ? cycle : ctx.lathe.cycleLabel};
+                    cycle != 0 ? cycle : ctx.run.cycleLabel};
   origin.surfaceSpeed = ctx.machine.modal.surfaceSpeed;
   origin.spindleLimit = ctx.machine.spindleLimit;
   origin.threading = cutsThread(ctx.machine.modal.motion);
@@ -324,7 +326,7 @@ HeldMove straightTo(mbrt_ctx& ctx, const AxisCounts& target, bool rapid) {
 /// on its way to the intermediate point `target` (program coordinates), as
 /// a cancel move does; the next move in the plane starts it again.
 mbrt_status leaveOffsetAt(mbrt_ctx& ctx, const AxisCounts& target) {
-  if (!ctx.compensation.engaged) {
+  if (!ctx.compensation->engaged) {
     return 0;
   }
   return cancelCompensation(ctx, straightTo(ctx, target, true));
@@ -601,7 +603,7 @@ mbrt_status rapidInMachineCoordinates(mbrt_ctx& ctx, std::uint32_t mask,
       moveToMachine(ctx, machineToWork(ctx, machine), machine, true, 0);
   const AxisCounts programmed = ctx.machine.program;
   resyncProgram(ctx);
-  if (ctx.compensation.engaged) {
+  if (ctx.compensation->engaged) {
     // The tool stands on its vector: in the plane the program position is
     // still the programmed point.
     const PlaneIndex plane = planeIndex(ctx);
@@ -682,7 +684,7 @@ mbrt_status returnToReference(mbrt_ctx& ctx, const MotionWords& words,
   }
   ctx.machine.intermediateMask |= words.axisMask;
   const AxisCounts work = programToWork(ctx, intermediate);
-  const bool compensated = ctx.compensation.engaged;
+  const bool compensated = ctx.compensation->engaged;
   if (const mbrt_status status = leaveOffsetAt(ctx, intermediate)) {
     return status;
   }
@@ -800,7 +802,7 @@ mbrt_status moveLine(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
   }
   HeldMove move = straightTo(ctx, target, rapid);
   if (words != nullptr && words->centerMask != 0 &&
-      ctx.compensation.codeInBlock) {
+      ctx.compensation->codeInBlock) {
     readVectorDirection(ctx, *words, move);
   }
   return compensateMove(ctx, std::move(move));
@@ -864,12 +866,12 @@ mbrt_status executeMotion(mbrt_ctx& ctx, const MotionWords& words) {
   const int mode = ctx.machine.modal.motion;
   const AxisCounts start = ctx.machine.program;
   AxisCounts target = workTarget(ctx, words, start);
-  if (words.angle && !(ctx.corner.pending && ctx.corner.openEnd)) {
+  if (words.angle && !(ctx.corner->pending && ctx.corner->openEnd)) {
     if (const mbrt_status status = endAngledLine(ctx, words, start, target)) {
       return status;
     }
   }
-  if (ctx.corner.pending) {
+  if (ctx.corner->pending) {
     return moveAfterCorner(ctx, words, target);
   }
   if (hasCommaWords(words) && holdsForNextBlock(ctx, words)) {

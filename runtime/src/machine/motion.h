@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "context.h"
+#include "move_state.h"
 #include "plane_geometry.h"
 
 namespace mbc::rt {

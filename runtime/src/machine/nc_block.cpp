@@ -10,7 +10,9 @@
 #include "block_calls.h"
 #include "canned_cycles.h"
 #include "corner_blends.h"
+#include "corner_state.h"
 #include "cutter_comp.h"
+#include "cutter_comp_state.h"
 #include "flat_gcode.h"
 #include "frame_codes.h"
 #include "frames.h"
@@ -404,7 +406,7 @@ mbrt_status checkUnderCompensation(mbrt_ctx& ctx, const NcBlock& block) {
     return refuseUnderCompensation(
         ctx, fmt::format("canned cycle G{}", ctx.machine.modal.cycle));
   }
-  if (ctx.compensation.codeInBlock && ctx.compensation.engaged &&
+  if (ctx.compensation->codeInBlock && ctx.compensation->engaged &&
       ctx.machine.modal.compensation != 40 && block.motion.centerMask != 0 &&
       (ctx.machine.modal.motion <= 1 ||
        ctx.machine.modal.motion == kThreadingMotion ||
@@ -423,13 +425,13 @@ mbrt_status executeMotionWords(mbrt_ctx& ctx, NcBlock& block) {
   const MotionWords& motion = block.motion;
   // After a chamfer or corner R only a G01 may come: a cycle, dwell or
   // reference return would run before the alarm (lathe_corners.h).
-  if (ctx.corner.pending &&
+  if (ctx.corner->pending &&
       (block.nonModal != 0 || ctx.machine.modal.cycle != 0)) {
-    ctx.corner.pending = false;
+    ctx.corner->pending = false;
     return raise(ctx, AlarmId::NotG01AfterCorner,
                  fmt::format("the block after a chamfer or corner R (line "
                              "{}) must be G01",
-                             ctx.corner.line));
+                             ctx.corner->line));
   }
   if (hasCommaWords(motion) &&
       (block.nonModal != 0 || ctx.machine.modal.cycle != 0)) {
@@ -589,7 +591,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
                          mbrt_flow* flow, NcBlock& block) {
   scanWords(ctx, words, count, block);
   ctx.machine.feedInBlock = false;
-  ctx.compensation.codeInBlock = false;
+  ctx.compensation->codeInBlock = false;
   ctx.stack.callingCode = {'\0', 0.0};
   block.frames.axes = &block.motion;
   block.frames.words = words;
@@ -648,7 +650,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     lengthChanged = lengthChanged || wearChanged;
   }
   const std::uint64_t movesBefore = ctx.machine.moves;
-  const std::uint64_t planeMovesBefore = ctx.compensation.planeMoves;
+  const std::uint64_t planeMovesBefore = ctx.compensation->planeMoves;
   // The axis words of G52, G92, G51, G51.1, G50.1 and G68 are their data.
   if (block.frames.code == 0) {
     if (const mbrt_status status = executeMotionWords(ctx, block)) {
@@ -660,7 +662,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  if (ctx.corner.pending) {
+  if (ctx.corner->pending) {
     if (const mbrt_status status = checkCornerTaken(ctx)) {
       return status;
     }

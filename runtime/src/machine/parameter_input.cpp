@@ -12,6 +12,7 @@
 
 #include "flat_gcode.h"
 #include "lathe_settings.h"
+#include "lathe_state.h"
 #include "parameters.h"
 
 namespace mbc::rt {
@@ -160,7 +161,7 @@ mbrt_status parameterInputBlock(mbrt_ctx& ctx, const mbrt_word* words,
   flattenParameter(ctx, parameter, 0, newValue);
   // A cycle's first block keeps its settings in place of 5130-5143; the
   // parameter set now is the newer.
-  ctx.lathe.cycleSettings.erase(parameter);
+  ctx.lathe->cycleSettings.erase(parameter);
   deriveParameterFields(profile);
   return 0;
 }

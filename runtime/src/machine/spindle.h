@@ -5,6 +5,7 @@
 #pragma once
 
 #include "context.h"
+#include "move_state.h"
 #include "plane_geometry.h"
 
 namespace mbc::rt {
