@@ -82,7 +82,7 @@ bench: build
 
 # The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer;
 # any report fails its test. A Debug build: assertions on, and the IR
-# verified after every pass of every compile (driver/ir_pipeline.cpp).
+# verified after every pass of every compile (toolchain/ir_pipeline.cpp).
 ASAN_BUILD_DIR ?= build-asan
 test-asan: deps
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"

@@ -1,6 +1,6 @@
 // What the code generator is asked for, apart from LLVM: the driver fills
 // these in without LLVM's headers (it loads the code generator only when
-// code must be generated, driver/code_generator.h).
+// code must be generated, toolchain/code_generator.h).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // The code generator as a plugin: libmbc_codegen.so holds LLVM's half of
 // mbc and is loaded only by commands that must generate code
-// (driver/code_generator.h), so that the rest start without loading
+// (toolchain/code_generator.h), so that the rest start without loading
 // libLLVM. Both sides are built from the same tree with the same compiler:
 // the interface passes C++ objects.
 #pragma once

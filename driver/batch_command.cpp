@@ -69,9 +69,9 @@ int batchCommand(const Options& o) {
     rows.push_back(all[i]);
   }
   PhaseTimes phases;
-  PreparedProgram program;
-  if (int status = program.prepare(o, phases)) {
-    return status == PreparedProgram::kNothingToRun ? 0 : status;
+  toolchain::PreparedProgram program;
+  if (int status = program.prepare(toolchainRequest(o), phases)) {
+    return status == toolchain::PreparedProgram::kNothingToRun ? 0 : status;
   }
   std::error_code ec;
   fs::create_directories(o.outDir, ec);

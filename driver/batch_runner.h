@@ -7,7 +7,6 @@
 
 #include "driver/batch_table.h"
 #include "driver/options.h"
-#include "driver/prepared_program.h"
 #include "driver/run_session.h"
 
 #include <atomic>
@@ -17,6 +16,8 @@
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include "toolchain/prepared_program.h"
 
 namespace mbc::driver {
 
@@ -39,7 +40,7 @@ public:
 
   /// Rows write their files under o.outDir, or with o.combined make their
   /// line of the combined JSONL.
-  BatchRunner(const Options& o, const PreparedProgram& program,
+  BatchRunner(const Options& o, const toolchain::PreparedProgram& program,
               std::vector<BatchRow> rows)
       : o_(o), program_(program), rows_(std::move(rows)),
         results_(rows_.size()) {}
@@ -59,7 +60,7 @@ private:
   RowResult runRow(const BatchRow& row, mbrt_ctx* ctx) const;
 
   const Options& o_;
-  const PreparedProgram& program_;
+  const toolchain::PreparedProgram& program_;
   std::vector<BatchRow> rows_;
   std::vector<RowResult> results_;
   std::atomic<std::size_t> next_{0};

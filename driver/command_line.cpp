@@ -51,11 +51,11 @@ void addDiagnosticOptions(CLI::App& cmd, Reader& r) {
                  "of JSON or as a SARIF 2.1.0 log",
                  r.error,
                  [&r](const std::string& v) -> std::string {
-                   DiagnosticFormat& f = r.o.diagnostics.format;
+                   toolchain::DiagnosticFormat& f = r.o.diagnostics.format;
                    if (v == "text" || v == "json" || v == "sarif") {
-                     f = v == "text"   ? DiagnosticFormat::Text
-                         : v == "json" ? DiagnosticFormat::Json
-                                       : DiagnosticFormat::Sarif;
+                     f = v == "text"   ? toolchain::DiagnosticFormat::Text
+                         : v == "json" ? toolchain::DiagnosticFormat::Json
+                                       : toolchain::DiagnosticFormat::Sarif;
                      return "";
                    }
                    return fmt::format("unknown diagnostics format '{}' (text, "
@@ -193,15 +193,16 @@ void addPassOptions(CLI::App& cmd, Reader& r) {
 }
 
 void addEngineOptions(CLI::App& cmd, Reader& r) {
-  addValueOption(cmd, "--engine", engineList("|", "|"),
+  addValueOption(cmd, "--engine", toolchain::engineList("|", "|"),
                  "what runs the program: native code (default), the "
                  "interpreter of the source or the IR evaluator",
                  r.error,
                  [&r](const std::string& v) -> std::string {
-                   const std::optional<EngineKind> engine = engineNamed(v);
+                   const std::optional<toolchain::Engine> engine =
+                       toolchain::engineNamed(v);
                    if (!engine) {
                      return fmt::format("unknown engine '{}' ({})", v,
-                                        engineList(", ", " or "));
+                                        toolchain::engineList(", ", " or "));
                    }
                    r.o.engine = *engine;
                    return "";

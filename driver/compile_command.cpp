@@ -5,11 +5,8 @@
 #include "driver/compile_command.h"
 
 #include "codegen/c_header.h"
-#include "driver/code_generator.h"
-#include "driver/ir_pipeline.h"
+#include "driver/emit_ir_command.h"
 #include "driver/output_files.h"
-#include "driver/own_libraries.h"
-#include "driver/run_process.h"
 #include "ir/printer.h"
 
 #include <fmt/format.h>
@@ -22,6 +19,9 @@
 #include <unistd.h>
 
 #include "build_paths.h" // MBC_SANITIZE
+#include "toolchain/code_generator.h"
+#include "toolchain/own_libraries.h"
+#include "toolchain/run_process.h"
 
 namespace mbc::driver {
 
@@ -72,7 +72,8 @@ int compileAndLink(const ir::Module& module, const codegen::ObjectOptions& opts,
   std::string error;
   std::vector<std::string> link;
   int status = 0;
-  if (!writeCompiled(module, opts, codegen::FileKind::Object, object, error)) {
+  if (!toolchain::writeCompiled(module, opts, codegen::FileKind::Object, object,
+                                error)) {
     status = reportFailure(error);
   } else if (link = inputs(object, dir); link.empty()) {
     status = reportFailure("cannot write the linker's inputs in " + dir);
@@ -90,7 +91,7 @@ int compileAndLink(const ir::Module& module, const codegen::ObjectOptions& opts,
       std::fprintf(stderr, "%s\n",
                    fmt::format("{}", fmt::join(link, " ")).c_str());
     }
-    const int linked = runProcess(link);
+    const int linked = toolchain::runProcess(link);
     if (linked != 0) {
       std::remove(tmp.c_str());
       status = reportFailure(
@@ -119,18 +120,15 @@ int compileCommand(const Options& o) {
                 ? "mbc_programs"
                 : "mbc_programs_" + identifierStem(o.outputPath);
   }
-  codegen::ObjectOptions opts;
+  codegen::ObjectOptions opts =
+      toolchain::objectOptions(toolchainRequest(o).code, o.cpu);
   opts.emit.tableName = table;
-  opts.emit.debugInfo = o.debugInfo;
-  opts.optLevel = o.optLevel;
-  opts.sizeLevel = o.sizeLevel;
-  opts.cpu = o.cpu;
   int status = 0;
   if (o.shared) {
     // The whole runtime goes in, since a ctypes user calls any of it; only
     // the C ABI is exported, so that the runtime's C++ symbols cannot clash
     // with the host process's.
-    const std::string runtime = ownLibraries().runtime;
+    const std::string runtime = toolchain::ownLibraries().runtime;
     status = compileAndLink(
         module, opts, o,
         [&](const std::string& object, const std::string& dir) {
@@ -153,7 +151,8 @@ int compileCommand(const Options& o) {
     }
   } else {
     std::string error;
-    if (!writeCompiled(module, opts, fileKind(o.emit), o.outputPath, error)) {
+    if (!toolchain::writeCompiled(module, opts, fileKind(o.emit), o.outputPath,
+                                  error)) {
       status = reportFailure(error);
     }
   }
@@ -178,14 +177,11 @@ int buildCommand(const Options& options) {
   if (!loadModule(o, module)) {
     return 1;
   }
-  codegen::ObjectOptions opts;
+  codegen::ObjectOptions opts =
+      toolchain::objectOptions(toolchainRequest(o).code, o.cpu);
   opts.emit.entryPoints = false;
   opts.emit.aotMain = true;
-  opts.emit.debugInfo = o.debugInfo;
-  opts.optLevel = o.optLevel;
-  opts.sizeLevel = o.sizeLevel;
-  opts.cpu = o.cpu;
-  const OwnLibraries& libs = ownLibraries();
+  const toolchain::OwnLibraries& libs = toolchain::ownLibraries();
   return compileAndLink(
       module, opts, o, [&](const std::string& object, const std::string&) {
         return std::vector<std::string>{object, libs.runner, libs.runtime};

@@ -5,8 +5,7 @@
 #include "driver/batch_command.h"
 #include "driver/command_line.h"
 #include "driver/compile_command.h"
-#include "driver/compile_unit.h"
-#include "driver/ir_pipeline.h"
+#include "driver/emit_ir_command.h"
 #include "driver/run_command.h"
 #include "driver/run_session.h"
 #include <mbc/engine.h>
@@ -15,6 +14,8 @@
 #include <exception>
 #include <new>
 #include <string_view>
+
+#include "toolchain/compile_unit.h"
 
 namespace {
 
@@ -38,9 +39,9 @@ int dispatch(int argc, char** argv) {
     return buildCommand(*options);
   }
   if (options->command == "check") {
-    CompiledUnit cu;
+    mbc::toolchain::CompiledUnit cu;
     // A profile given is checked too, and the checks defer to it.
-    LoadOptions load = loadOptions(*options);
+    mbc::toolchain::LoadOptions load = loadOptions(*options);
     if (!options->run.machinePath.empty()) {
       const CtxPtr machine = createContext(options->run);
       if (!machine) {
@@ -54,7 +55,7 @@ int dispatch(int argc, char** argv) {
           (static_cast<long>(mbrt_parameter(machine.get(), 3401)) & 1) != 0;
     }
     load.checkWarnings = true;
-    return loadUnit(options->files, load, cu) ? 0 : 1;
+    return mbc::toolchain::loadUnit(options->files, load, cu) ? 0 : 1;
   }
   return runCommand(*options);
 }

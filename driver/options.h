@@ -2,8 +2,6 @@
 // emit-ir`, `mbc compile` and `mbc build`.
 #pragma once
 
-#include "driver/compile_unit.h"
-#include "driver/engine_kind.h"
 #include "driver/run_options.h"
 
 #include <optional>
@@ -11,13 +9,17 @@
 #include <utility>
 #include <vector>
 
+#include "toolchain/compile_unit.h"
+#include "toolchain/engine.h"
+#include "toolchain/request.h"
+
 namespace mbc::driver {
 
 struct Options {
   std::string command; // run, check, emit-ir, compile, build
   std::vector<std::string> files;
   RunOptions run;
-  EngineKind engine = EngineKind::Jit;
+  toolchain::Engine engine = toolchain::Engine::Jit;
   int optLevel = 2;        // -O0 ... -O3: the LLVM pipeline
   int sizeLevel = 0;       // -Os 1, -Oz 2: smaller code
   bool debugInfo = false;  // -g
@@ -45,13 +47,19 @@ struct Options {
   // their blocks alarm when they run (loadOptions()).
   std::optional<bool> strict;
   std::vector<std::string> includeDirs; // -I DIR: where called programs are
-  DiagnosticOutput diagnostics; // --diagnostics-format, --color, -w, -Werror
+  toolchain::DiagnosticOutput
+      diagnostics; // --diagnostics-format, --color, -w, -Werror
 };
 
 /// How the commands read their input (compile_unit.h). Errors in the input:
 /// run and batch run it and alarm where the control would; check, emit-ir,
 /// compile and build refuse it (a build should fail loudly); --strict and
 /// --no-strict choose.
-LoadOptions loadOptions(const Options& o);
+toolchain::LoadOptions loadOptions(const Options& o);
+
+/// What the toolchain compiles for a command: the files, how they are
+/// read, the engine, the main program and the options that change the
+/// code.
+toolchain::Request toolchainRequest(const Options& o);
 
 } // namespace mbc::driver

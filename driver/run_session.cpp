@@ -210,7 +210,7 @@ CtxPtr createContext(const RunOptions& o) {
 }
 
 int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
-               const Engine& engine, SessionLog& log,
+               const MainRun& engine, SessionLog& log,
                const PhaseTimes& phases) {
   std::FILE* text = log.text;
   MotionOutputs motions;
@@ -321,7 +321,7 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
 }
 
 int runOnce(const RunOptions& o, const std::string& mainName,
-            const Engine& engine, const PhaseTimes& phases) {
+            const MainRun& engine, const PhaseTimes& phases) {
   CtxPtr ctx = createContext(o);
   if (!ctx) {
     return 2;

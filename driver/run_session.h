@@ -18,7 +18,7 @@
 namespace mbc::driver {
 
 /// Runs the main program in a context that is set up and started.
-using Engine = std::function<mbrt_status(mbrt_ctx*)>;
+using MainRun = std::function<mbrt_status(mbrt_ctx*)>;
 
 /// Wall-clock milliseconds of the phases before the run, by name, for
 /// --time.
@@ -51,7 +51,7 @@ struct SessionLog {
 /// `mbc run`: 0, 2 (bad state or output file), 3 (an alarm stopped the run)
 /// or 128 + the signal that stopped it.
 int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
-               const Engine& engine, SessionLog& log,
+               const MainRun& engine, SessionLog& log,
                const PhaseTimes& phases = {});
 
 /// The presets (mbrt_preset_var) then the main program's arguments (as G65
@@ -61,7 +61,7 @@ mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx);
 /// `mbc run`'s session: a context, the signal handlers, one run reporting to
 /// stderr. 2 for a bad machine profile.
 int runOnce(const RunOptions& o, const std::string& mainName,
-            const Engine& engine, const PhaseTimes& phases = {});
+            const MainRun& engine, const PhaseTimes& phases = {});
 
 /// Milliseconds since `start`.
 double millisecondsSince(std::chrono::steady_clock::time_point start);

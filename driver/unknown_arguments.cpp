@@ -1,10 +1,10 @@
 #include "driver/unknown_arguments.h"
 
-#include "driver/closest_match.h"
-
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+
+#include "toolchain/closest_match.h"
 
 namespace mbc::driver {
 
@@ -65,9 +65,9 @@ std::string unknownOptionMessage(const CLI::App& root, const CLI::App& command,
   }
   // A one-letter option is too short to guess from; "-toolpath" is
   // "--toolpath" with a dash missing.
-  const std::string guess =
-      closestMatch(arg.starts_with("--") ? name : arg.substr(0, arg.find('=')),
-                   optionNames(command));
+  const std::string guess = toolchain::closestMatch(
+      arg.starts_with("--") ? name : arg.substr(0, arg.find('=')),
+      optionNames(command));
   return fmt::format(
       "unknown option '{}' for mbc {}{}", arg, self,
       guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess));
@@ -79,7 +79,7 @@ std::string unknownCommandMessage(const CLI::App& root,
   for (const CLI::App* command : root.get_subcommands({})) {
     names.push_back(command->get_name());
   }
-  const std::string guess = closestMatch(name, names);
+  const std::string guess = toolchain::closestMatch(name, names);
   if (!guess.empty()) {
     return fmt::format("unknown command '{}'; did you mean '{}'?", name, guess);
   }

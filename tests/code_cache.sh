@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The cache of compiled code (driver/code_cache.h): a second run loads the
+# The cache of compiled code (toolchain/code_cache.h): a second run loads the
 # code instead of generating it, and never loads libLLVM; a damaged or
 # truncated entry is built again, never loaded; a change of source or
 # options is a new entry; the cache keeps to its size; concurrent runs

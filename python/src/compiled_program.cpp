@@ -1,7 +1,8 @@
 #include "compiled_program.h"
 
-#include "driver/options.h"
 #include "frontend/diagnostics.h"
+
+#include "toolchain/request.h"
 
 namespace py = pybind11;
 
@@ -44,17 +45,17 @@ std::unique_ptr<CompiledProgram>
 CompiledProgram::compile(const CompileRequest& request, py::list& diagnostics,
                          std::string& message) {
   auto compiled = std::make_unique<CompiledProgram>();
-  driver::Options o;
-  o.engine = driver::EngineKind::Jit;
-  o.optLevel = request.opt;
-  o.noCache = !request.cache;
-  o.strict = request.strict;
-  o.files = request.files;
-  o.includeDirs = request.includeDirs;
-  o.run.mainProgram = request.main;
-  driver::LoadOptions load = driver::loadOptions(o);
-  load.defaultMachine = request.defaultMachine;
-  driver::PreparedProgram& prepared = compiled->prepared_;
+  toolchain::Request r;
+  r.files = request.files;
+  r.load.errors = request.strict ? ErrorMode::Refuse : ErrorMode::Alarm;
+  r.load.includeDirs = request.includeDirs;
+  r.load.defaultMachine = request.defaultMachine;
+  r.engine = toolchain::Engine::Jit;
+  r.mainProgram = request.main;
+  r.code.optLevel = request.opt;
+  r.useCache = request.cache;
+  const toolchain::LoadOptions& load = r.load;
+  toolchain::PreparedProgram& prepared = compiled->prepared_;
   DiagnosticEngine diags(prepared.sources());
   if (!prepared.parse(request.texts, request.files, load, diags, message)) {
     return nullptr;
@@ -67,7 +68,7 @@ CompiledProgram::compile(const CompileRequest& request, py::list& diagnostics,
     return nullptr;
   }
   driver::PhaseTimes phases;
-  if (prepared.build(o, phases, message) != 0) {
+  if (prepared.build(r, phases, message) != 0) {
     return nullptr;
   }
   return compiled;

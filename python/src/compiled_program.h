@@ -1,20 +1,20 @@
 // mbc.compile's C++ side: the input parsed, checked and compiled for the
-// JIT (through the compiled-code cache) by the driver's PreparedProgram,
+// JIT (through the compiled-code cache) by the toolchain's PreparedProgram,
 // its diagnostics as Python data.
 #pragma once
-
-#include "driver/prepared_program.h"
 
 #include <memory>
 #include <pybind11/pybind11.h>
 #include <string>
 #include <vector>
 
+#include "toolchain/prepared_program.h"
+
 namespace mbc::python {
 
 /// What mbc.compile asks for.
 struct CompileRequest {
-  std::vector<driver::SourceText> texts;
+  std::vector<toolchain::SourceText> texts;
   std::vector<std::string> files;
   std::string main; // "" = the first program
   int opt = 2;
@@ -34,7 +34,7 @@ public:
                                                   pybind11::list& diagnostics,
                                                   std::string& message);
 
-  const driver::PreparedProgram& prepared() const { return prepared_; }
+  const toolchain::PreparedProgram& prepared() const { return prepared_; }
 
   const std::string& mainName() const { return prepared_.mainName(); }
 
@@ -42,7 +42,7 @@ public:
   pybind11::list programs() const;
 
 private:
-  driver::PreparedProgram prepared_;
+  toolchain::PreparedProgram prepared_;
 };
 
 } // namespace mbc::python

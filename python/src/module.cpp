@@ -21,7 +21,7 @@ using namespace mbc::python;
 
 namespace {
 
-/// Code the JIT loads calls the runtime by name (driver/native_code.h);
+/// Code the JIT loads calls the runtime by name (toolchain/native_code.h);
 /// Python loads extensions with their symbols private, so this module
 /// makes its own (the runtime's C ABI, src/exports.map) global once.
 void exportRuntime() {

@@ -19,20 +19,22 @@
 #include <unistd.h>
 #include <utility>
 
+#include "toolchain/engine.h"
+
 using namespace mbc::driver;
 
 namespace {
 
 struct Config {
-  EngineKind engine;
+  mbc::toolchain::Engine engine;
   int optLevel;
 };
 
-constexpr Config kConfigs[] = {{EngineKind::Interp, 2},
-                               {EngineKind::Ir, 2},
-                               {EngineKind::Jit, 0},
-                               {EngineKind::Jit, 1},
-                               {EngineKind::Jit, 2}};
+constexpr Config kConfigs[] = {{mbc::toolchain::Engine::Interp, 2},
+                               {mbc::toolchain::Engine::Ir, 2},
+                               {mbc::toolchain::Engine::Jit, 0},
+                               {mbc::toolchain::Engine::Jit, 1},
+                               {mbc::toolchain::Engine::Jit, 2}};
 
 // One run as `mbc run` makes it, standard error going to `dir/stderr`.
 int runConfig(const Config& c, const std::string& file, RunOptions run,

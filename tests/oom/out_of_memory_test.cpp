@@ -7,7 +7,7 @@
 // a spread of the allocations of an object file's compile and of a whole
 // `mbc run`, in a child process of its own.
 #include "codegen/object_file.h"
-#include "driver/ir_pipeline.h"
+#include "driver/emit_ir_command.h"
 #include "driver/run_command.h"
 #include <mbc/read_file.h>
 
@@ -245,7 +245,7 @@ std::vector<std::string> outputsOf(const driver::Options& o) {
 
 driver::Options runOptions(const std::filesystem::path& dir,
                            const std::string& program,
-                           driver::EngineKind engine) {
+                           toolchain::Engine engine) {
   driver::Options o;
   o.command = "run";
   o.files = {(dir / program).string()};
@@ -272,7 +272,7 @@ bool endedForLackOfMemory(int status) {
 // got syntax errors.
 TEST_F(OutOfMemory, InterpreterRunSaysOutOfMemory) {
   const driver::Options o =
-      runOptions(dir_, "oom.nc", driver::EngineKind::Interp);
+      runOptions(dir_, "oom.nc", toolchain::Engine::Interp);
   const std::vector<std::string> reference = outputsOf(o);
   failEachSample([&] { driver::runCommand(o); },
                  [&] { runAsMbc(o, reference); }, 1000, endedForLackOfMemory);
@@ -293,8 +293,7 @@ END1
 M30
 %
 )";
-  const driver::Options o =
-      runOptions(dir_, "long.nc", driver::EngineKind::Jit);
+  const driver::Options o = runOptions(dir_, "long.nc", toolchain::Engine::Jit);
   const std::vector<std::string> reference = outputsOf(o);
   failEachSample([&] { driver::runCommand(o); },
                  [&] { runAsMbc(o, reference); }, 80, endedForLackOfMemory);

@@ -4,9 +4,9 @@
 
 #include <cstddef>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 /// Writes all `size` bytes; false on an error.
 bool writeAll(int fd, const char* data, std::size_t size);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

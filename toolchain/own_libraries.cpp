@@ -1,7 +1,7 @@
 // The installed libraries win over the build tree's: an installed mbc must
 // not depend on a build directory that may be gone or rebuilt with other
 // options.
-#include "driver/own_libraries.h"
+#include "toolchain/own_libraries.h"
 
 #include <dlfcn.h>
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include "build_paths.h"
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 namespace {
 
@@ -59,4 +59,4 @@ const OwnLibraries& ownLibraries() {
   return libraries;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

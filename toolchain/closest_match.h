@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 /// The candidate closest to `word` by edit distance (insertions, deletions,
 /// substitutions and swaps of two neighbours, case-insensitive), if it is
@@ -15,4 +15,4 @@ namespace mbc::driver {
 std::string closestMatch(std::string_view word,
                          const std::vector<std::string>& candidates);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

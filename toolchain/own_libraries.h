@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 struct OwnLibraries {
   std::string runner;  // the run support of `mbc build` executables
@@ -17,4 +17,4 @@ struct OwnLibraries {
 
 const OwnLibraries& ownLibraries();
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,8 +1,7 @@
 // Reads the input files and the programs they call, parses and checks them,
 // and prints diagnostics.
-#include "driver/compile_unit.h"
+#include "toolchain/compile_unit.h"
 
-#include "driver/program_search.h"
 #include "frontend/parser.h"
 #include "frontend/sema.h"
 #include <mbc/read_file.h>
@@ -14,7 +13,9 @@
 #include <set>
 #include <utility>
 
-namespace mbc::driver {
+#include "toolchain/program_search.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -156,4 +157,4 @@ bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
   return true;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,9 +1,9 @@
-#include "driver/file_bytes.h"
+#include "toolchain/file_bytes.h"
 
 #include <cerrno>
 #include <unistd.h>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 bool writeAll(int fd, const char* data, std::size_t size) {
   while (size > 0) {
@@ -20,4 +20,4 @@ bool writeAll(int fd, const char* data, std::size_t size) {
   return true;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

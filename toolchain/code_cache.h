@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <string>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 class CodeCache {
 public:
@@ -50,4 +50,4 @@ private:
   std::uint64_t sizeLimit_ = 0;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

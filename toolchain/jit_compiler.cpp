@@ -1,13 +1,13 @@
-#include "driver/jit_compiler.h"
-
-#include "driver/code_generator.h"
-#include "driver/code_key.h"
+#include "toolchain/jit_compiler.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
-namespace mbc::driver {
+#include "toolchain/code_generator.h"
+#include "toolchain/code_key.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -17,9 +17,9 @@ void warn(const std::string& message) {
 
 } // namespace
 
-JitCompiler::JitCompiler(const Options& o, const SourceManager& sources)
-    : options_(o) {
-  if (o.noCache) {
+JitCompiler::JitCompiler(const Request& r, const SourceManager& sources)
+    : code_(r.code) {
+  if (!r.useCache) {
     return;
   }
   std::string warning;
@@ -28,7 +28,7 @@ JitCompiler::JitCompiler(const Options& o, const SourceManager& sources)
     warn(warning);
   }
   if (cache_.enabled()) {
-    key_ = codeKey(o, sources);
+    key_ = codeKey(r, sources);
   }
 }
 
@@ -53,13 +53,9 @@ std::unique_ptr<NativeCode> JitCompiler::compile(const ir::Module& module,
     error = "cannot create a temporary directory";
     return nullptr;
   }
-  codegen::ObjectOptions opts;
+  codegen::ObjectOptions opts = objectOptions(code_, "native");
   opts.emit.tableName = kLoadedTableName;
   opts.emit.entryPoints = false;
-  opts.emit.debugInfo = options_.debugInfo;
-  opts.optLevel = options_.optLevel;
-  opts.sizeLevel = options_.sizeLevel;
-  opts.cpu = "native";
   const std::string object = dir + "/code.o";
   std::string path = dir + "/code.so";
   std::unique_ptr<NativeCode> code;
@@ -81,4 +77,4 @@ std::unique_ptr<NativeCode> JitCompiler::compile(const ir::Module& module,
   return code;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

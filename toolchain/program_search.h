@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 /// A program a call names: by O number, or by name (`number` -1).
 struct CalledProgram {
@@ -34,4 +34,4 @@ std::optional<std::string>
 findProgramFile(const CalledProgram& program,
                 const std::vector<std::string>& dirs);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -2,12 +2,12 @@
 // repeated edits of a substring). LLVM has one (StringRef::edit_distance),
 // but the driver does not link LLVM: it loads the code generator only when
 // code must be generated (code_generator.h).
-#include "driver/closest_match.h"
+#include "toolchain/closest_match.h"
 
 #include <algorithm>
 #include <cctype>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 namespace {
 
@@ -56,4 +56,4 @@ std::string closestMatch(std::string_view word,
   return best;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,4 +1,4 @@
-#include "driver/diagnostic_formats.h"
+#include "toolchain/diagnostic_formats.h"
 
 #include "frontend/utf8.h"
 #include <mbc/version.h>
@@ -8,7 +8,7 @@
 
 #include <map>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 namespace {
 
@@ -217,4 +217,4 @@ std::string diagnosticsSarif(const DiagnosticEngine& engine,
   return log.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

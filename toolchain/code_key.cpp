@@ -1,6 +1,4 @@
-#include "driver/code_key.h"
-
-#include "driver/own_libraries.h"
+#include "toolchain/code_key.h"
 
 #include <fmt/format.h>
 
@@ -14,7 +12,9 @@
 #include <sys/utsname.h>
 #include <xxhash.h>
 
-namespace mbc::driver {
+#include "toolchain/own_libraries.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -132,25 +132,25 @@ void addCpu(Hasher& h) {
 
 } // namespace
 
-std::string codeKey(const Options& o, const SourceManager& sources) {
+std::string codeKey(const Request& r, const SourceManager& sources) {
   Hasher h;
   h.add("mbc compiled code 1");
   addBuild(h);
   addCpu(h);
-  h.addRaw(o.optLevel);
-  h.addRaw(o.sizeLevel);
-  h.addRaw(o.debugInfo);
-  if (o.debugInfo) {
+  h.addRaw(r.code.optLevel);
+  h.addRaw(r.code.sizeLevel);
+  h.addRaw(r.code.debugInfo);
+  if (r.code.debugInfo) {
     std::error_code ec;
     h.add(std::filesystem::current_path(ec).string());
   }
-  h.addRaw(o.noOpt);
-  h.addRaw(o.disabledPasses.size());
-  for (const std::string& pass : o.disabledPasses) {
+  h.addRaw(!r.passes.run);
+  h.addRaw(r.passes.disabled.size());
+  for (const std::string& pass : r.passes.disabled) {
     h.add(pass);
   }
-  h.addRaw(o.run.trace);
-  h.addRaw(loadOptions(o).errors);
+  h.addRaw(r.trace);
+  h.addRaw(r.load.errors);
   h.addRaw(sources.fileCount());
   for (std::uint32_t f = 0; f < sources.fileCount(); ++f) {
     h.add(sources.name(f));
@@ -159,4 +159,4 @@ std::string codeKey(const Options& o, const SourceManager& sources) {
   return h.hex();
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

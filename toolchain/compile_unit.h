@@ -2,7 +2,6 @@
 // every mbc command.
 #pragma once
 
-#include "driver/diagnostic_formats.h"
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 #include "frontend/source.h"
@@ -10,7 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace mbc::driver {
+#include "toolchain/diagnostic_formats.h"
+
+namespace mbc::toolchain {
 
 struct CompiledUnit {
   SourceManager sources;
@@ -57,4 +58,4 @@ bool parseInputs(const std::vector<SourceText>& texts,
 bool loadUnit(const std::vector<std::string>& files, const LoadOptions& options,
               CompiledUnit& out);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,14 +1,15 @@
-#include "driver/native_code.h"
+#include "toolchain/native_code.h"
 
-#include "driver/file_bytes.h"
-#include "driver/run_process.h"
 #include <mbc/read_file.h>
 
 #include <dlfcn.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
-namespace mbc::driver {
+#include "toolchain/file_bytes.h"
+#include "toolchain/run_process.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -72,4 +73,4 @@ std::unique_ptr<NativeCode> NativeCode::open(const std::string& path,
   return code;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 /// The program table of loaded code takes this name.
 inline constexpr char kLoadedTableName[] = "mbc_programs";
@@ -41,4 +41,4 @@ private:
   const mbrt_program_table* table_ = nullptr;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,11 +1,12 @@
-#include "driver/code_generator.h"
+#include "toolchain/code_generator.h"
 
 #include "codegen/plugin.h"
-#include "driver/own_libraries.h"
 
 #include <dlfcn.h>
 
-namespace mbc::driver {
+#include "toolchain/own_libraries.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -39,6 +40,16 @@ Loaded load() {
 
 } // namespace
 
+codegen::ObjectOptions objectOptions(const CodeLevel& code,
+                                     const std::string& cpu) {
+  codegen::ObjectOptions opts;
+  opts.emit.debugInfo = code.debugInfo;
+  opts.optLevel = code.optLevel;
+  opts.sizeLevel = code.sizeLevel;
+  opts.cpu = cpu;
+  return opts;
+}
+
 bool writeCompiled(const ir::Module& module,
                    const codegen::ObjectOptions& options,
                    codegen::FileKind kind, const std::string& path,
@@ -51,4 +62,4 @@ bool writeCompiled(const ir::Module& module,
   return loaded.plugin->writeCompiled(module, options, kind, path, error);
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

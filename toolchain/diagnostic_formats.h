@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 enum class DiagnosticFormat { Text, Json, Sarif };
 
@@ -31,4 +31,4 @@ std::string diagnosticsJson(const DiagnosticEngine& engine,
 std::string diagnosticsSarif(const DiagnosticEngine& engine,
                              const DiagnosticView& view);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

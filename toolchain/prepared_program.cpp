@@ -1,9 +1,6 @@
 // The phases of `mbc run` before the run (see prepared_program.h).
-#include "driver/prepared_program.h"
+#include "toolchain/prepared_program.h"
 
-#include "driver/closest_match.h"
-#include "driver/ir_pipeline.h"
-#include "driver/jit_compiler.h"
 #include "interp/interpreter.h"
 #include "ir/evaluator.h"
 #include <mbc/addresses.h>
@@ -13,7 +10,11 @@
 #include <cstdio>
 #include <optional>
 
-namespace mbc::driver {
+#include "toolchain/closest_match.h"
+#include "toolchain/ir_pipeline.h"
+#include "toolchain/jit_compiler.h"
+
+namespace mbc::toolchain {
 
 namespace {
 
@@ -47,18 +48,18 @@ std::string missingMainMessage(const Unit& unit, const std::string& wanted) {
 
 } // namespace
 
-int PreparedProgram::prepare(const Options& o, PhaseTimes& phases) {
+int PreparedProgram::prepare(const Request& r, driver::PhaseTimes& phases) {
   const auto start = std::chrono::steady_clock::now();
-  if (!loadUnit(o.files, loadOptions(o), cu_)) {
+  if (!loadUnit(r.files, r.load, cu_)) {
     return 1;
   }
-  phases.emplace_back("front end", millisecondsSince(start));
-  if (cu_.unit.programs.empty() && o.run.mainProgram.empty()) {
+  phases.emplace_back("front end", driver::millisecondsSince(start));
+  if (cu_.unit.programs.empty() && r.mainProgram.empty()) {
     std::fprintf(stderr, "mbc: warning: the input has no blocks to run\n");
     return kNothingToRun;
   }
   std::string error;
-  const int status = build(o, phases, error);
+  const int status = build(r, phases, error);
   if (status != 0) {
     std::fprintf(stderr, "mbc: error: %s\n", error.c_str());
   }
@@ -72,14 +73,13 @@ bool PreparedProgram::parse(const std::vector<SourceText>& texts,
   return parseInputs(texts, files, load, cu_, diags, failure);
 }
 
-int PreparedProgram::build(const Options& o, PhaseTimes& phases,
+int PreparedProgram::build(const Request& r, driver::PhaseTimes& phases,
                            std::string& error) {
-  engine_ = o.engine;
-  mainIndex_ = findMain(cu_.unit, o.run.mainProgram);
+  engine_ = r.engine;
+  mainIndex_ = findMain(cu_.unit, r.mainProgram);
   if (mainIndex_ < 0) {
-    error = o.run.mainProgram.empty()
-                ? "the input has no programs"
-                : missingMainMessage(cu_.unit, o.run.mainProgram);
+    error = r.mainProgram.empty() ? "the input has no programs"
+                                  : missingMainMessage(cu_.unit, r.mainProgram);
     return 2;
   }
   for (const Program& p : cu_.unit.programs) {
@@ -89,19 +89,20 @@ int PreparedProgram::build(const Options& o, PhaseTimes& phases,
   }
   auto start = std::chrono::steady_clock::now();
   std::optional<JitCompiler> jit;
-  if (engine_ == EngineKind::Jit) {
-    jit.emplace(o, cu_.sources);
+  if (engine_ == Engine::Jit) {
+    jit.emplace(r, cu_.sources);
     if ((code_ = jit->cached())) {
-      phases.emplace_back("cache", millisecondsSince(start));
+      phases.emplace_back("cache", driver::millisecondsSince(start));
       return 0;
     }
   }
-  if (engine_ != EngineKind::Interp) {
-    if (!buildModule(cu_, o, module_) || !optimizeModule(module_, o)) {
+  if (engine_ != Engine::Interp) {
+    if (!buildModule(cu_, r.trace, module_) ||
+        !optimizeModule(module_, r.passes)) {
       error = "internal error: the IR of the input could not be built";
       return 4;
     }
-    phases.emplace_back("IR", millisecondsSince(start));
+    phases.emplace_back("IR", driver::millisecondsSince(start));
   }
   start = std::chrono::steady_clock::now();
   if (jit) {
@@ -109,7 +110,7 @@ int PreparedProgram::build(const Options& o, PhaseTimes& phases,
     if (!code_) {
       return 4;
     }
-    phases.emplace_back("code generation", millisecondsSince(start));
+    phases.emplace_back("code generation", driver::millisecondsSince(start));
   }
   return 0;
 }
@@ -120,11 +121,11 @@ mbrt_status PreparedProgram::run(mbrt_ctx* ctx) const {
   if (code_) {
     return mbrt_run_body(ctx, &code_->programs()->programs[mainIndex_]);
   }
-  if (engine_ == EngineKind::Ir) {
+  if (engine_ == Engine::Ir) {
     return ir::evaluate(module_, mainIndex_, ctx);
   }
   Interpreter interp(cu_.unit, cu_.sources, ctx);
   return interp.run(mainIndex_);
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

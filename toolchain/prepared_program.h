@@ -5,9 +5,6 @@
 // it once, `mbc batch` once per row of its table.
 #pragma once
 
-#include "driver/compile_unit.h"
-#include "driver/native_code.h"
-#include "driver/options.h"
 #include "driver/run_session.h"
 #include "ir/ir.h"
 
@@ -15,17 +12,21 @@
 #include <string>
 #include <vector>
 
-namespace mbc::driver {
+#include "toolchain/compile_unit.h"
+#include "toolchain/native_code.h"
+#include "toolchain/request.h"
+
+namespace mbc::toolchain {
 
 class PreparedProgram {
 public:
   /// prepare()'s result for an input without blocks (a warning, status 0).
   static constexpr int kNothingToRun = -1;
 
-  /// Compiles `o.files` for `o.engine`, timing the phases. 0 when ready,
+  /// Compiles `r.files` for `r.engine`, timing the phases. 0 when ready,
   /// kNothingToRun, or an exit status: 1 source errors, 2 no such main
   /// program (--main), 4 internal error. Messages go to stderr.
-  int prepare(const Options& o, PhaseTimes& phases);
+  int prepare(const Request& r, driver::PhaseTimes& phases);
   /// prepare() in two steps, for inputs given as text too (the Python
   /// package): parse() leaves the diagnostics in `diags`, made for
   /// sources(); false when a file could not be read (`failure` says why).
@@ -34,7 +35,7 @@ public:
              DiagnosticEngine& diags, std::string& failure);
   /// Then build() finds the main program and makes the engine's code:
   /// 0, or prepare()'s exit status with the reason in `error`.
-  int build(const Options& o, PhaseTimes& phases, std::string& error);
+  int build(const Request& r, driver::PhaseTimes& phases, std::string& error);
 
   const SourceManager& sources() const { return cu_.sources; }
 
@@ -48,7 +49,7 @@ public:
   }
 
 private:
-  EngineKind engine_ = EngineKind::Jit;
+  Engine engine_ = Engine::Jit;
   CompiledUnit cu_;
   ir::Module module_;
   std::unique_ptr<NativeCode> code_;
@@ -56,4 +57,4 @@ private:
   int mainIndex_ = -1;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -1,4 +1,4 @@
-#include "driver/run_process.h"
+#include "toolchain/run_process.h"
 
 #include <cerrno>
 #include <spawn.h>
@@ -6,7 +6,7 @@
 
 extern char** environ;
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 int runProcess(const std::vector<std::string>& args) {
   std::vector<char*> argv;
@@ -27,4 +27,4 @@ int runProcess(const std::vector<std::string>& args) {
   return done == pid && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -3,22 +3,23 @@
 // compiled code (code_cache.h) unless --no-cache.
 #pragma once
 
-#include "driver/code_cache.h"
-#include "driver/native_code.h"
-#include "driver/options.h"
 #include "frontend/source.h"
 #include "ir/ir.h"
 
 #include <memory>
 #include <string>
 
-namespace mbc::driver {
+#include "toolchain/code_cache.h"
+#include "toolchain/native_code.h"
+#include "toolchain/request.h"
+
+namespace mbc::toolchain {
 
 class JitCompiler {
 public:
-  /// For the input read into `sources` under the options `o`. A cache that
-  /// cannot be used is a warning on standard error, not a failure.
-  JitCompiler(const Options& o, const SourceManager& sources);
+  /// For the input of `r` read into `sources`. A cache that cannot be used
+  /// is a warning on standard error, not a failure.
+  JitCompiler(const Request& r, const SourceManager& sources);
 
   /// The cached code of the input, or nullptr.
   std::unique_ptr<NativeCode> cached() const;
@@ -29,9 +30,9 @@ public:
                                       std::string& error) const;
 
 private:
-  const Options& options_;
+  CodeLevel code_;
   CodeCache cache_{"", 0};
   std::string key_;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

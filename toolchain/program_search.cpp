@@ -1,5 +1,5 @@
 // The program search path (see program_search.h).
-#include "driver/program_search.h"
+#include "toolchain/program_search.h"
 
 #include <mbc/addresses.h>
 #include <mbc/calling_codes.h>
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
 namespace {
 
@@ -135,4 +135,4 @@ findProgramFile(const CalledProgram& program,
   return std::nullopt;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

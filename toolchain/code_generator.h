@@ -8,7 +8,14 @@
 
 #include <string>
 
-namespace mbc::driver {
+#include "toolchain/request.h"
+
+namespace mbc::toolchain {
+
+/// The options of an object of `code`'s levels for `cpu` ("": generic,
+/// "native": this machine's, or a name).
+codegen::ObjectOptions objectOptions(const CodeLevel& code,
+                                     const std::string& cpu);
 
 /// codegen::writeCompiled (codegen/object_file.h) through the plugin. False
 /// with the reason in `error`, also when the plugin cannot be loaded.
@@ -17,4 +24,4 @@ bool writeCompiled(const ir::Module& module,
                    codegen::FileKind kind, const std::string& path,
                    std::string& error);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -2,12 +2,13 @@
 // the code depends on, so that equal keys mean interchangeable code.
 #pragma once
 
-#include "driver/options.h"
 #include "frontend/source.h"
 
 #include <string>
 
-namespace mbc::driver {
+#include "toolchain/request.h"
+
+namespace mbc::toolchain {
 
 /// 32 hex digits (XXH3, 128 bits) of: the bytes and names of every source
 /// file the unit was read from (the names are in alarm messages), the
@@ -17,6 +18,6 @@ namespace mbc::driver {
 /// build ID and the code generator plugin's file), and this machine's CPU
 /// (the code is compiled for it). The machine profile is not in it: code
 /// reads its machine when it runs.
-std::string codeKey(const Options& o, const SourceManager& sources);
+std::string codeKey(const Request& r, const SourceManager& sources);
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

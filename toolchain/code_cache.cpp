@@ -1,6 +1,5 @@
-#include "driver/code_cache.h"
+#include "toolchain/code_cache.h"
 
-#include "driver/file_bytes.h"
 #include "driver/run_options.h"
 #include <mbc/read_file.h>
 
@@ -17,7 +16,9 @@
 #include <vector>
 #include <xxhash.h>
 
-namespace mbc::driver {
+#include "toolchain/file_bytes.h"
+
+namespace mbc::toolchain {
 
 namespace fs = std::filesystem;
 
@@ -65,7 +66,7 @@ bool isWhole(const std::string& bytes) {
 CodeCache CodeCache::fromEnvironment(std::string& warning) {
   std::uint64_t limit = kDefaultSizeLimit;
   if (const char* size = std::getenv("MBC_CACHE_SIZE"); size && *size) {
-    if (!parseSize(size, limit)) {
+    if (!driver::parseSize(size, limit)) {
       warning = std::string("MBC_CACHE_SIZE '") + size +
                 "' is not a size such as 512M or 2G; the cache keeps to 512M";
       limit = kDefaultSizeLimit;
@@ -180,4 +181,4 @@ void CodeCache::keepToSize(const std::string& keep) const {
   }
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain

@@ -8,21 +8,20 @@
 #include <string_view>
 #include <utility>
 
-namespace mbc::driver {
+namespace mbc::toolchain {
 
-enum class EngineKind {
+enum class Engine {
   Jit,    // native code of the JIT (or the compiled-code cache)
   Interp, // the reference interpreter over the AST
   Ir,     // the IR evaluator
 };
 
-inline constexpr std::array<std::pair<EngineKind, std::string_view>, 3>
-    kEngineNames = {{{EngineKind::Jit, "jit"},
-                     {EngineKind::Interp, "interp"},
-                     {EngineKind::Ir, "ir"}}};
+inline constexpr std::array<std::pair<Engine, std::string_view>, 3>
+    kEngineNames = {
+        {{Engine::Jit, "jit"}, {Engine::Interp, "interp"}, {Engine::Ir, "ir"}}};
 
 /// The engine of an `--engine` value; none for another word.
-inline std::optional<EngineKind> engineNamed(std::string_view name) {
+inline std::optional<Engine> engineNamed(std::string_view name) {
   for (const auto& [engine, engineName] : kEngineNames) {
     if (engineName == name) {
       return engine;
@@ -41,4 +40,4 @@ inline std::string engineList(std::string_view sep, std::string_view last) {
   return out;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::toolchain
