@@ -19,8 +19,8 @@
 #include "frames.h"
 #include "lathe_corners.h"
 #include "lathe_state.h"
-#include "motion.h"
 #include "sysvars.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 

@@ -24,8 +24,8 @@
 #include "held_block.h"
 #include "lathe_offset_vars.h"
 #include "machine_unit.h"
-#include "motion.h"
 #include "offset_keys.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 

@@ -22,6 +22,9 @@
 
 #include <cmath>
 
+#include "programmed_moves.h"
+#include "tool_moves.h"
+
 namespace mbc::rt {
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "motion.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
 

@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "corner_state.h"
-#include "lathe_corners.h"
+#include "held_block.h"
+#include "programmed_moves.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 
@@ -397,6 +399,13 @@ void holdMove(mbrt_ctx& ctx, const MotionWords& words, const AxisCounts& start,
 }
 
 } // namespace
+
+mbrt_status missingPlaneAxis(mbrt_ctx& ctx) {
+  return raise(ctx, AlarmId::IllegalPlaneSelect,
+               fmt::format("chamfering, corner R and ,A in G{} need both "
+                           "axes of the plane",
+                           ctx.machine.modal.plane));
+}
 
 bool holdsForNextBlock(const mbrt_ctx& ctx, const MotionWords& words) {
   return words.blend != 0 || opensAngledLine(words, planeIndex(ctx));

@@ -15,9 +15,13 @@
 #pragma once
 
 #include "context.h"
-#include "motion.h"
+#include "motion_words.h"
+#include "programmed_moves.h"
 
 namespace mbc::rt {
+
+/// PS0021 for a corner or ,A line in a plane the machine lacks an axis of.
+mbrt_status missingPlaneAxis(mbrt_ctx& ctx);
 
 /// Whether a block's words hold ,C ,R or ,A.
 inline bool hasCommaWords(const MotionWords& words) {

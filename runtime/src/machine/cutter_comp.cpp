@@ -23,6 +23,7 @@
 #include "frames.h"
 #include "lathe_tools.h"
 #include "plane_geometry.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 
@@ -796,16 +797,6 @@ void readVectorDirection(const mbrt_ctx& ctx, const MotionWords& words,
     move.direction[0] = direction.x;
     move.direction[1] = direction.y;
   }
-}
-
-mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what) {
-  if (!compensating(ctx)) {
-    return 0;
-  }
-  return raise(ctx, AlarmId::Unsupported,
-               fmt::format("{} in cutter compensation mode (G41/G42); "
-                           "give it after G40",
-                           what));
 }
 
 } // namespace mbc::rt

@@ -13,19 +13,9 @@
 #include "context.h"
 #include "cutter_comp_state.h"
 #include "lathe_state.h"
-#include "motion.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
-
-/// Whether moves go through compensation: G41 or G42 in force, or the tool
-/// still offset after G40 until the next move in the plane. Not while a
-/// lathe's shape cycle reads its shape program: its moves are the
-/// programmed shape, which the cycle compensates as a whole.
-inline bool compensating(const mbrt_ctx& ctx) {
-  // The modal code first: most blocks of most programs are in G40.
-  return (ctx.machine.modal.compensation != 40 || ctx.compensation->engaged) &&
-         ctx.lathe->shapeReading.code == 0;
-}
 
 /// A programmed move (G00-G03, start and end in the workpiece frame;
 /// ctx.machine.program already at its end): the start-up, a move in offset
@@ -73,9 +63,5 @@ mbrt_status releaseHeldMoves(mbrt_ctx& ctx, bool check = true);
 /// held moves leave, and the flattened program gets as many blocks without
 /// motion as stop the control's look-ahead.
 mbrt_status stopLookAhead(mbrt_ctx& ctx);
-
-/// MBC0001 for what mbc does not model under compensation, or 0 when
-/// compensation is off.
-mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what);
 
 } // namespace mbc::rt

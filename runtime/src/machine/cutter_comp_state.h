@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "context.h"
+#include "lathe_state.h"
 #include "move_state.h"
 
 namespace mbc::rt {
@@ -46,5 +47,15 @@ struct CompensationState {
   std::uint64_t planeMoves = 0;  // moves in the plane read so far
   bool codeInBlock = false;      // the block has G40, G41 or G42
 };
+
+/// Whether moves go through compensation: G41 or G42 in force, or the tool
+/// still offset after G40 until the next move in the plane. Not while a
+/// lathe's shape cycle reads its shape program: its moves are the
+/// programmed shape, which the cycle compensates as a whole.
+inline bool compensating(const mbrt_ctx& ctx) {
+  // The modal code first: most blocks of most programs are in G40.
+  return (ctx.machine.modal.compensation != 40 || ctx.compensation->engaged) &&
+         ctx.lathe->shapeReading.code == 0;
+}
 
 } // namespace mbc::rt

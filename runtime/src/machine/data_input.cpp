@@ -9,6 +9,7 @@
 
 #include "cutter_comp.h"
 #include "frames.h"
+#include "held_block.h"
 #include "machine_unit.h"
 
 namespace mbc::rt {

@@ -2,7 +2,7 @@
 // G54.1) and tool offsets (L10-L13, memory C), set in G90, added in G91.
 #pragma once
 
-#include "frame_codes.h"
+#include "frame_words.h"
 
 namespace mbc::rt {
 

@@ -13,20 +13,13 @@
 #include "data_input.h"
 #include "frames.h"
 #include "g_codes.h"
+#include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_tools.h"
 #include "parameter_input.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
-
-const mbrt_word* FrameWords::word(char letter) const {
-  for (std::size_t i = count; i > 0; --i) {
-    if (words[i - 1].letter == letter) {
-      return &words[i - 1];
-    }
-  }
-  return nullptr;
-}
 
 namespace {
 
@@ -250,15 +243,6 @@ mbrt_status executeFrameCode(mbrt_ctx& ctx, const FrameWords& words) {
       return 0;
   }
 }
-
-} // namespace
-
-bool isFrameCode(int tenths) {
-  return tenths == 100 || tenths == 520 || tenths == 920 || tenths == 921 ||
-         tenths == 510 || tenths == 511 || tenths == 501 || tenths == 680;
-}
-
-namespace {
 
 /// What of a block's frame words mbc does not model under cutter
 /// compensation, or "" (G10 offset data is fine).

@@ -11,28 +11,9 @@
 #include <optional>
 
 #include "context.h"
-#include "motion.h"
+#include "frame_words.h"
 
 namespace mbc::rt {
-
-/// What a block says about frames.
-struct FrameWords {
-  int code = 0;                // 100 G10, 520 G52, 920 G92, 921 G92.1, 510 G51,
-                               // 511 G51.1, 501 G50.1, 680 G68
-  bool cancelScaling = false;  // G50
-  bool cancelRotation = false; // G69
-  int lengthCode = 0;          // 43, 44, 49
-  bool hasH = false;           // an H word: a new tool length offset
-  const MotionWords* axes = nullptr;
-  const mbrt_word* words = nullptr; // the whole block
-  std::size_t count = 0;
-
-  /// The last word of `letter` in the block, or nullptr.
-  const mbrt_word* word(char letter) const;
-};
-
-/// True for the G codes a FrameWords::code holds.
-bool isFrameCode(int tenths);
 
 /// executeFrameCodes for a block that has any frame words.
 mbrt_status applyFrameCodes(mbrt_ctx& ctx, const FrameWords& words,

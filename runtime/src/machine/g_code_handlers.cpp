@@ -17,6 +17,7 @@
 #include "held_block.h"
 #include "last_words.h"
 #include "lathe_codes.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "context.h"
+#include "decoded_block.h"
 #include "g_codes.h"
-#include "nc_block.h"
 
 namespace mbc::rt {
 

@@ -4,9 +4,7 @@
 #include <fmt/format.h>
 
 #include "corner_state.h"
-#include "cutter_comp.h"
 #include "cutter_comp_state.h"
-#include "motion.h"
 
 namespace mbc::rt {
 
@@ -42,6 +40,16 @@ InHeldBlock::~InHeldBlock() {
   ctx_.machine.feedInBlock = own_.feedInBlock;
   ctx_.run.block.file = file_;
   ctx_.run.block.line = line_;
+}
+
+mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what) {
+  if (!compensating(ctx)) {
+    return 0;
+  }
+  return raise(ctx, AlarmId::Unsupported,
+               fmt::format("{} in cutter compensation mode (G41/G42); "
+                           "give it after G40",
+                           what));
 }
 
 mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what) {

@@ -47,6 +47,10 @@ mbrt_status asHeldBlock(mbrt_ctx& ctx, const CornerInsertion& held,
 /// lie in two coordinate systems.
 mbrt_status refuseUnderHeldCorner(mbrt_ctx& ctx, std::string_view what);
 
+/// MBC0001 for what mbc does not model under compensation, or 0 when
+/// compensation is off.
+mbrt_status refuseUnderCompensation(mbrt_ctx& ctx, std::string_view what);
+
 /// The same under cutter compensation too (refuseUnderCompensation): a
 /// change of coordinate system that no held move may span.
 mbrt_status refuseUnderHeldMoves(mbrt_ctx& ctx, std::string_view what);

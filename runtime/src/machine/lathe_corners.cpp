@@ -8,6 +8,8 @@
 #include "corner_blends.h"
 #include "corner_state.h"
 #include "cutter_comp_state.h"
+#include "programmed_moves.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 
@@ -44,13 +46,6 @@ std::string letterOf(const mbrt_ctx& ctx, int axis) {
 }
 
 } // namespace
-
-mbrt_status missingPlaneAxis(mbrt_ctx& ctx) {
-  return raise(ctx, AlarmId::IllegalPlaneSelect,
-               fmt::format("chamfering, corner R and ,A in G{} need both "
-                           "axes of the plane",
-                           ctx.machine.modal.plane));
-}
 
 bool chamferByC(const mbrt_ctx& ctx) {
   return ctx.profile.lathe() && ctx.profile.parameterBit(3405, 4) &&

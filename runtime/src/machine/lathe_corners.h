@@ -11,12 +11,10 @@
 
 #include "context.h"
 #include "held_block.h"
-#include "motion.h"
+#include "motion_words.h"
+#include "programmed_moves.h"
 
 namespace mbc::rt {
-
-/// PS0021 for a corner or ,A line in a plane the machine lacks an axis of.
-mbrt_status missingPlaneAxis(mbrt_ctx& ctx);
 
 /// Whether C is the chamfer address: a lathe with 3405#4 CCR and no C axis.
 bool chamferByC(const mbrt_ctx& ctx);

@@ -16,6 +16,7 @@
 #include "cutter_comp.h"
 #include "lathe_codes.h"
 #include "lathe_settings.h"
+#include "programmed_moves.h"
 
 namespace mbc::rt {
 

@@ -5,7 +5,7 @@
 // for the next block, so that a block with X alone cuts the next pass.
 #pragma once
 
-#include "motion.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
 

@@ -33,6 +33,7 @@
 #include "lathe_cycles.h"
 #include "lathe_settings.h"
 #include "lathe_state.h"
+#include "programmed_moves.h"
 
 namespace mbc::rt {
 

@@ -15,7 +15,7 @@
 #include "lathe_roughing.h"
 #include "lathe_settings.h"
 #include "lathe_state.h"
-#include "motion.h"
+#include "programmed_moves.h"
 
 namespace mbc::rt {
 

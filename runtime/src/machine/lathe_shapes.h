@@ -13,7 +13,7 @@
 
 #include <optional>
 
-#include "frame_codes.h"
+#include "frame_words.h"
 #include "lathe_state.h"
 
 namespace mbc::rt {
@@ -22,10 +22,6 @@ namespace mbc::rt {
 /// keeps its settings, the second starts reading its shape (or G70
 /// finishes along one read before).
 mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words);
-
-inline bool readingShape(const mbrt_ctx& ctx) {
-  return ctx.lathe->shapeReading.code != 0;
-}
 
 /// The axis words of an NC block of the shape (bit a: axis a written):
 /// block ns that writes the cut axis too (Z for G71, X for G72; W0

@@ -51,4 +51,10 @@ struct LatheState {
   void startRun() { shapeReading.code = 0; }
 };
 
+/// Whether a lathe's shape cycle reads its shape program now: its blocks'
+/// moves are the shape's, not the tool's.
+inline bool readingShape(const mbrt_ctx& ctx) {
+  return ctx.lathe->shapeReading.code != 0;
+}
+
 } // namespace mbc::rt

@@ -6,7 +6,7 @@
 // offset stays (5002#5 LGC = 0). G10 P writes the offsets.
 #pragma once
 
-#include "frame_codes.h"
+#include "frame_words.h"
 
 namespace mbc::rt {
 

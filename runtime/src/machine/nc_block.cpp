@@ -28,6 +28,8 @@
 #include "motion.h"
 #include "parameter_input.h"
 #include "polar.h"
+#include "programmed_moves.h"
+#include "tool_moves.h"
 
 namespace mbc::rt {
 

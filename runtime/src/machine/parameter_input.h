@@ -4,7 +4,7 @@
 // parameter, until G11.
 #pragma once
 
-#include "frame_codes.h"
+#include "frame_words.h"
 
 namespace mbc::rt {
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "tool_moves.h"
+
 namespace mbc::rt {
 
 namespace {

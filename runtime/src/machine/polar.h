@@ -4,7 +4,7 @@
 // coordinates").
 #pragma once
 
-#include "motion.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
 

@@ -9,9 +9,9 @@
 
 #include "block_calls.h"
 #include "context.h"
-#include "frame_codes.h"
+#include "frame_words.h"
 #include "g_codes.h"
-#include "motion.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
 

@@ -1,0 +1,34 @@
+// The words of one block that define its motion, in counts: what the
+// block's decoding hands the motion stages (motion.h, programmed_moves.h).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "context.h"
+
+namespace mbc::rt {
+
+/// The words of one block that define its motion, in counts.
+struct MotionWords {
+  std::uint32_t axisMask = 0; // bit a: axis a was written
+  AxisCounts axis{};          // as written (absolute or incremental)
+  // Bit a: axis a was written with its incremental address (a lathe's U
+  // for X, W for Z), whatever G90/G91 says.
+  std::uint32_t incrementalMask = 0;
+  std::uint32_t centerMask = 0; // bit 0: I, 1: J, 2: K
+  std::array<Counts, 3> center{};
+  bool hasR = false;
+  Counts r = 0;
+  // A lathe's chamfer amount C, when 3405#4 CCR gives C for I and K.
+  bool hasC = false;
+  Counts c = 0;
+  // ,C or ,R (corner_blends.h): 'C' or 'R' and its amount; 0 for none.
+  char blend = 0;
+  Counts blendAmount = 0;
+  // ,A: the angle of the line from the plane's first axis, in degrees.
+  std::optional<double> angle;
+};
+
+} // namespace mbc::rt
