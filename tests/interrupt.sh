@@ -7,7 +7,10 @@
 #   interrupt.sh MBC
 source "$(dirname "$0")/script_env.sh" "$1"
 # Each program first shows a message, so that the signal comes once the run
-# has started, however long the machine takes to start mbc and compile.
+# has started, however long the machine takes to start mbc and compile. Its
+# loop never ends by itself (no axis word grows past its digits): an
+# executable of `mbc build` writes a million passes in less than the time
+# the signal takes to come.
 cat >writes.nc <<'NC'
 O1000
 #3006 = 1 (STARTED)
@@ -15,7 +18,7 @@ G90 G01 F1000
 #1 = 0
 WHILE [1 GT 0] DO1
 #1 = #1 + 1
-X[#1 MOD 100] Y#1
+X[#1 MOD 100] Y[#1 MOD 1000]
 DPRNT[PASS*#1[90]]
 #500 = #1
 END1
