@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "g_codes.h"
+
 namespace mbc::rt {
 
 std::string pointedWordText(char letter, double value) {
@@ -76,7 +78,7 @@ int gTenths(const mbrt_word& word) {
   if (word.letter != 'G') {
     return -1;
   }
-  const double tenths = roundHalfAway(word.value * 10.0);
+  const double tenths = gWordTenths(word.value);
   return tenths >= 0.0 && tenths <= 99999.0 ? static_cast<int>(tenths) : -1;
 }
 

@@ -281,15 +281,11 @@ mbrt_status applyGCode(mbrt_ctx& ctx, ModalState& next, std::size_t row,
 
 } // namespace
 
-double gTenths(const mbrt_word& word) {
-  return roundHalfAway(numeric(word.value) * 10.0);
-}
-
 void noteGCode(const mbrt_ctx& ctx, const mbrt_word& word, NcBlock& block) {
   if (block.gCodes == GCodes::Other) {
     return;
   }
-  const int row = rowOf(ctx, gTenths(word));
+  const int row = rowOf(ctx, gWordTenths(word.value));
   if (row < 0 || kOneField[static_cast<std::size_t>(row)] == OneField::No ||
       block.oneFieldCount == kMaxOneFieldCodes) {
     block.gCodes = GCodes::Other; // applyGCodes raises an alarm at it
@@ -329,7 +325,7 @@ mbrt_status applyGCodes(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
     if (words[i].letter != 'G') {
       continue;
     }
-    const double written = gTenths(words[i]);
+    const double written = gWordTenths(words[i].value);
     const int index = rowOf(ctx, written);
     if (index < 0) {
       return raise(ctx, AlarmId::ImproperGCode,

@@ -14,9 +14,6 @@ inline char gCodeColumn(const Profile& profile) {
   return profile.lathe() ? profile.gCodeSystem : 'M';
 }
 
-/// A G word in tenths, as written.
-double gTenths(const mbrt_word& word);
-
 /// Notes a G word in `block.gCodes` before anything executes: most blocks
 /// hold none, or only codes that set one modal field and so need no copy of
 /// the modal state.

@@ -380,7 +380,7 @@ mbrt_status refuseLatheForms(mbrt_ctx& ctx, const NcBlock& block,
                  "scaling); a lathe profile has \"series\": \"T\"");
   }
   const auto isG99 = [](const mbrt_word& w) {
-    return w.letter == 'G' && gTenths(w) == 990.0;
+    return w.letter == 'G' && gWordTenths(w.value) == 990.0;
   };
   constexpr double kLatheFeed[2] = {10.0, 0.4}; // mm, inch per revolution
   if (ctx.machine.modal.returnToR && ctx.machine.modal.cycle == 0 &&

@@ -233,11 +233,14 @@ void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
   moveStraightTo(ctx, work, workToMachine(ctx, work), rapid, origin);
 }
 
-void moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
-               double radius, double sweep, bool clockwise,
-               const MoveOrigin& origin) {
+namespace {
+
+/// moveArcTo from `workStart`, the control point's workpiece position,
+/// which the caller has already found.
+void arcFromStart(mbrt_ctx& ctx, const AxisCounts& workStart,
+                  const AxisCounts& work, PlanePoint center, double radius,
+                  double sweep, bool clockwise, const MoveOrigin& origin) {
   const auto [p, q] = planeIndex(ctx);
-  const AxisCounts workStart = machineToWork(ctx, ctx.machine.position);
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
   const AxisCounts machine = workToMachine(ctx, work);
@@ -253,6 +256,15 @@ void moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
   widenBoxByArc(ctx, p, q, center, from, radius, sweep, clockwise);
 }
 
+} // namespace
+
+void moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
+               double radius, double sweep, bool clockwise,
+               const MoveOrigin& origin) {
+  arcFromStart(ctx, machineToWork(ctx, ctx.machine.position), work, center,
+               radius, sweep, clockwise, origin);
+}
+
 void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
                  bool clockwise, const MoveOrigin& origin) {
   const auto [p, q] = planeIndex(ctx);
@@ -260,8 +272,9 @@ void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
   const Point to{static_cast<double>(work[p]), static_cast<double>(work[q])};
-  moveArcTo(ctx, work, center, std::hypot(from.x - center.x, from.y - center.y),
-            sweepBetween(from, to, center, clockwise), clockwise, origin);
+  arcFromStart(ctx, workStart, work, center,
+               std::hypot(from.x - center.x, from.y - center.y),
+               sweepBetween(from, to, center, clockwise), clockwise, origin);
 }
 
 void switchUnits(mbrt_ctx& ctx, bool inch) {

@@ -80,8 +80,7 @@ void appendCoordinateText(std::string& out, const mbrt_ctx& ctx,
 /// Whether the block has the G code of `tenths`.
 bool hasCode(const mbrt_word* words, size_t count, double tenths) {
   for (size_t i = 0; i < count; ++i) {
-    if (words[i].letter == 'G' &&
-        roundHalfAway(numeric(words[i].value) * 10.0) == tenths) {
+    if (words[i].letter == 'G' && gWordTenths(words[i].value) == tenths) {
       return true;
     }
   }
@@ -94,7 +93,7 @@ bool hasOtherMeanings(const mbrt_ctx& ctx, const mbrt_word* words,
                       size_t count) {
   for (size_t i = 0; i < count; ++i) {
     if (words[i].letter == 'G') {
-      const double tenths = roundHalfAway(numeric(words[i].value) * 10.0);
+      const double tenths = gWordTenths(words[i].value);
       if (tenths == 40.0 || tenths == 510.0 || tenths == 680.0 ||
           isLookAheadCode(static_cast<int>(tenths)) ||
           (tenths == 100.0 && ctx.profile.lathe())) {

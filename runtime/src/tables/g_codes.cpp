@@ -80,6 +80,22 @@ constexpr bool columnIsUnique(char column) {
 static_assert(columnIsUnique('M') && columnIsUnique('A') &&
               columnIsUnique('B') && columnIsUnique('C'));
 
+/// The rows of each modal field, so that a #4001+ read looks at a group's
+/// few codes rather than the whole table.
+struct FieldRows {
+  std::array<std::uint8_t, kRows.size()> rows{};
+  std::size_t count = 0;
+};
+
+constexpr auto kFieldRows = [] {
+  std::array<FieldRows, kGroups.size()> fields{};
+  for (std::size_t i = 0; i < kRows.size(); ++i) {
+    FieldRows& field = fields[static_cast<std::size_t>(kRows[i].field)];
+    field.rows[field.count++] = static_cast<std::uint8_t>(i);
+  }
+  return fields;
+}();
+
 } // namespace
 
 std::span<const GCodeRow> gCodeRows() {
@@ -96,8 +112,10 @@ int findGCodeRowIndex(char column, int tenths) {
 }
 
 const GCodeRow* findModalRow(char column, ModalField field, int code) {
-  for (const GCodeRow& row : kRows) {
-    if (row.field == field && row.code == code && row.tenths(column) != kNo) {
+  const FieldRows& rows = kFieldRows[static_cast<std::size_t>(field)];
+  for (std::size_t i = 0; i < rows.count; ++i) {
+    const GCodeRow& row = kRows[rows.rows[i]];
+    if (row.code == code && row.tenths(column) != kNo) {
       return &row;
     }
   }
