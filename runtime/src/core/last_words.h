@@ -7,7 +7,7 @@
 
 namespace mbc::rt {
 
-/// The index into mbrt_ctx::lastWords: #4101 + index.
+/// The index into MachineState::lastWords: #4101 + index.
 enum class LastWord : int {
   B = 1,        // #4102
   D = 6,        // #4107

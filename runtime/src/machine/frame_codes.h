@@ -4,7 +4,7 @@
 // G51/G50 scaling,
 // G51.1/G50.1 programmable mirror, G68/G69 rotation and G43/G44/G49 tool
 // length offset. None of them moves, except a tool length change in a
-// block without motion (motion.h moveToFrame).
+// block without motion (programmed_moves.h moveToFrame).
 #pragma once
 
 #include <array>
