@@ -59,19 +59,25 @@ constexpr std::array<ColumnIndex, kColumns.size()> kIndex = {
     buildIndex('M'), buildIndex('A'), buildIndex('B'), buildIndex('C')};
 
 /// Each code of a column names one row, and each executed code one row of
-/// a column: a lookup either way finds one answer.
+/// a column: a lookup either way finds one answer. One pass with a seen
+/// mark per code keeps the check within clang's constexpr step limit.
 constexpr bool columnIsUnique(char column) {
-  for (std::size_t i = 0; i < kRows.size(); ++i) {
-    for (std::size_t j = i + 1; j < kRows.size(); ++j) {
-      const GCodeRow& x = kRows[i];
-      const GCodeRow& y = kRows[j];
-      if (x.tenths(column) == kNo || y.tenths(column) == kNo) {
-        continue;
-      }
-      if (x.tenths(column) == y.tenths(column) ||
-          (x.modelled && y.modelled && x.code == y.code)) {
+  std::array<bool, kMaxTenths + 1> seenTenths{};
+  std::array<bool, kLatheOwnCode + kMaxTenths + 1> seenCode{};
+  for (const GCodeRow& row : kRows) {
+    const int tenths = row.tenths(column);
+    if (tenths == kNo) {
+      continue;
+    }
+    if (seenTenths.at(static_cast<std::size_t>(tenths))) {
+      return false;
+    }
+    seenTenths.at(static_cast<std::size_t>(tenths)) = true;
+    if (row.modelled) {
+      if (seenCode.at(static_cast<std::size_t>(row.code))) {
         return false;
       }
+      seenCode.at(static_cast<std::size_t>(row.code)) = true;
     }
   }
   return true;
