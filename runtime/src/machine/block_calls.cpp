@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "g_codes.h"
+#include "g_word.h"
 
 namespace mbc::rt {
 

@@ -14,6 +14,7 @@
 #include "canned_cycles.h"
 #include "cutter_comp.h"
 #include "frames.h"
+#include "g_word.h"
 #include "held_block.h"
 #include "last_words.h"
 #include "lathe_codes.h"

@@ -17,6 +17,7 @@
 #include "frame_codes.h"
 #include "frames.h"
 #include "g_code_handlers.h"
+#include "g_word.h"
 #include "held_block.h"
 #include "lathe_codes.h"
 #include "lathe_corners.h"

@@ -21,6 +21,7 @@
 #include <cstdlib>
 
 #include "g_codes.h"
+#include "g_word.h"
 #include "machine_unit.h"
 
 namespace mbc::rt {

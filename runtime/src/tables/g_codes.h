@@ -4,21 +4,13 @@
 // mbc executes it. The handlers live in machine/g_code_handlers.cpp.
 #pragma once
 
-#include <mbc/arith.h>
 #include <mbc/g_codes.h>
-#include <mbc/value.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
 namespace mbc::rt {
-
-/// A G word's value in tenths (G54.1 is 541), rounded as the control reads
-/// it; a vacant value counts 0, as in an expression.
-inline double gWordTenths(Num value) {
-  return roundHalfAway(numeric(value) * 10.0);
-}
 
 /// A code missing from one series or G code system.
 inline constexpr int kNo = -1;
