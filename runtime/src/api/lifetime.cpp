@@ -67,6 +67,7 @@ void resetMachineState(mbrt_ctx& ctx) {
   *ctx.compensation = CompensationState{};
   *ctx.corner = CornerInsertion{};
   ctx.lathe->reset();
+  ctx.run.shapeCycle = 0;    // the shape being read went with the lathe's state
   ctx.data.outputWords = {}; // the output signals #1100+ are off at power-on
   switchUnits(ctx, ctx.profile.inch); // offsets back to the profile's unit
 }
@@ -80,7 +81,6 @@ void startRun(mbrt_ctx& ctx, const char* mainProgram) {
   ctx.machine.startRun(ctx.profile);
   *ctx.compensation = CompensationState{};
   *ctx.corner = CornerInsertion{};
-  ctx.lathe->startRun();
   resyncProgram(ctx);
   // A main program the machine cannot have alarms at its first block.
   ctx.run.startRun(ctx.profile.programNumberDigits == 4 &&

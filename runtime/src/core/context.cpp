@@ -97,6 +97,7 @@ void RunControl::startRun(bool illegalMain) {
   blockSequence = -1.0;
   cycleLabel = 0;
   cycleBlock = BlockPlace{};
+  shapeCycle = 0;
   interrupted = false;
   outOfMemory = false;
   illegalMainNumber = illegalMain;

@@ -369,6 +369,11 @@ struct RunControl {
   // block, which an alarm names as the caller.
   int cycleLabel = 0;
   BlockPlace cycleBlock;
+  // A lathe's shape cycle (G70-G73, lathe_codes.h) reading the blocks of
+  // its shape program (lathe_shapes.h), 0 for none: their moves make the
+  // shape, not the tool's path, so the stages below neither compensate
+  // them nor check their feed.
+  int shapeCycle = 0;
   SignalFlag interrupted;
   SignalFlag outOfMemory;
   bool illegalMainNumber = false; // PS0074 at the first block
@@ -398,6 +403,8 @@ struct RunControl {
   /// main program's number is one the machine cannot have, so the run alarms at
   /// its first block.
   void startRun(bool illegalMainNumber);
+
+  bool readingShape() const { return shapeCycle != 0; }
 
   /// Sets the block limit; atomic because mbrt_interrupt may store to it
   /// from a signal handler or another thread.

@@ -3,23 +3,9 @@
 // its cycle.
 #pragma once
 
-#include <optional>
-
 #include "motion_words.h"
 
 namespace mbc::rt {
-
-/// A block in canned cycle mode: its positioning and drilling words.
-struct CycleWords {
-  const MotionWords* motion; // axis words; R is the R level
-  std::optional<Counts> q;
-  std::optional<double> p; // dwell, ms
-  std::optional<double> k; // repeat count (K, or L)
-  // A lathe's G76 in the Series 10/11 format (lathe_repetitive.h): A the
-  // tool angle, D the first depth (increments).
-  std::optional<double> a;
-  std::optional<double> d;
-};
 
 /// The cycle mode changes (G80 and group 01 codes cancel): a new cycle
 /// takes the drilling axis's position as its initial level.

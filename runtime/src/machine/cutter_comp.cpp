@@ -21,13 +21,45 @@
 #include "cutter_comp_state.h"
 #include "flat_gcode.h"
 #include "frames.h"
-#include "lathe_tools.h"
 #include "plane_geometry.h"
 #include "tool_moves.h"
 
 namespace mbc::rt {
 
 namespace {
+
+/// Tool nose radius compensation's tool (G41/G42 on a lathe): the nose
+/// radius of the offset in force (geometry, plus the wear while a wear
+/// offset is selected) and the imaginary tip from the nose centre, by the
+/// tip direction (1-8, X up and Z right; 0 and 9: the centre is
+/// programmed).
+struct NoseTool {
+  Counts radius = 0;
+  AxisCounts tip{};
+};
+
+NoseTool noseTool(const mbrt_ctx& ctx) {
+  const Frames& frames = ctx.machine.frames;
+  const LatheOffset& geometry =
+      ctx.data
+          .latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
+  const LatheOffset& wear =
+      ctx.data.latheOffsets[static_cast<std::size_t>(frames.toolWearNumber)];
+  const double radius =
+      geometry.rGeometry + (frames.toolWearNumber != 0 ? wear.rWear : 0.0);
+  NoseTool tool{static_cast<Counts>(roundToLengthCounts(ctx, radius)), {}};
+  // Tip directions 1-8 (X up, Z right): the tip from the nose centre.
+  static constexpr int kTip[9][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
+                                     {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
+  const auto tip = static_cast<int>(geometry.tip);
+  const int x = ctx.axisOf('X');
+  const int z = ctx.axisOf('Z');
+  if (tip >= 1 && tip <= 8) {
+    tool.tip[x] = kTip[tip][0] * tool.radius;
+    tool.tip[z] = kTip[tip][1] * tool.radius;
+  }
+  return tool;
+}
 
 PlanePoint pointOf(const AxisCounts& position, PlaneIndex plane) {
   return {static_cast<double>(position[plane.p]),

@@ -12,7 +12,6 @@
 
 #include "context.h"
 #include "cutter_comp_state.h"
-#include "lathe_state.h"
 #include "motion_words.h"
 
 namespace mbc::rt {

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "context.h"
-#include "lathe_state.h"
 #include "move_state.h"
 
 namespace mbc::rt {
@@ -55,7 +54,7 @@ struct CompensationState {
 inline bool compensating(const mbrt_ctx& ctx) {
   // The modal code first: most blocks of most programs are in G40.
   return (ctx.machine.modal.compensation != 40 || ctx.compensation->engaged) &&
-         ctx.lathe->shapeReading.code == 0;
+         !ctx.run.readingShape();
 }
 
 } // namespace mbc::rt

@@ -2,7 +2,6 @@
 // lathe's cycles and threading read, and how a G code system writes them.
 #pragma once
 
-#include "context.h"
 #include "g_codes.h"
 
 namespace mbc::rt {
@@ -28,8 +27,12 @@ inline bool isSingleCycle(int motion) {
          motion == kFacingCycleMotion;
 }
 
-/// A code of g_codes.def as the profile's G code system writes it: 98 for
-/// feed per minute (940) in system A, 94 in B and C; 0 for none.
-double writtenLatheCode(const mbrt_ctx& ctx, int code);
+/// A code of g_codes.def as a lathe's G code system ('A', 'B', 'C') writes
+/// it, for alarms and labels: 98 for feed per minute (940) in system A, 94
+/// in B and C; 0 for none.
+inline double writtenLatheCode(char system, int code) {
+  const int tenths = columnTenths(system, code);
+  return tenths != kNo ? tenths / 10.0 : 0.0;
+}
 
 } // namespace mbc::rt

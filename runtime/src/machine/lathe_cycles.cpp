@@ -109,8 +109,8 @@ mbrt_status executeSingleCycle(mbrt_ctx& ctx, const MotionWords& words) {
                {&p.back, p.rapidBack, side},
                {&p.start, true, 40}};
 
-  ctx.run.cycleLabel =
-      static_cast<int>(writtenLatheCode(ctx, kLatheOwnCode + cycle * 10));
+  ctx.run.cycleLabel = static_cast<int>(
+      writtenLatheCode(ctx.profile.gCodeSystem, kLatheOwnCode + cycle * 10));
   mbrt_status status = 0;
   for (const auto& move : moves) {
     ctx.machine.modal.compensation = move.compensation;

@@ -45,7 +45,9 @@ constexpr int kG76 = kLatheOwnCode + 760;
 /// PS0062 with the cycle and what is wrong.
 mbrt_status illegal(mbrt_ctx& ctx, int code, std::string_view what) {
   return raise(ctx, AlarmId::IllegalRepetitiveCycle,
-               fmt::format("G{}: {}", writtenLatheCode(ctx, code), what));
+               fmt::format("G{}: {}",
+                           writtenLatheCode(ctx.profile.gCodeSystem, code),
+                           what));
 }
 
 Counts towards(Counts from, Counts to, Counts step) {
@@ -101,7 +103,8 @@ mbrt_status grooveCycle(mbrt_ctx& ctx, int code, const CycleWords& words) {
   }
   const Counts depth = end[peckAxis];
   const Counts columnEnd = end[columnAxis];
-  const int label = static_cast<int>(writtenLatheCode(ctx, code));
+  const int label =
+      static_cast<int>(writtenLatheCode(ctx.profile.gCodeSystem, code));
   const auto move = [&](const AxisCounts& to, bool rapid) {
     return moveStraight(ctx, to, rapid, label);
   };
@@ -278,7 +281,8 @@ mbrt_status cutThread(mbrt_ctx& ctx, const MotionWords& motion,
   const auto rise = static_cast<Counts>(
       roundHalfAway(static_cast<double>(chamfer) *
                     std::tan(pullAngle * std::numbers::pi / 180.0)));
-  const int label = static_cast<int>(writtenLatheCode(ctx, kG76));
+  const int label =
+      static_cast<int>(writtenLatheCode(ctx.profile.gCodeSystem, kG76));
   const auto move = [&](Counts px, Counts pz, bool rapid) {
     AxisCounts to = ctx.machine.program;
     to[x] = px;

@@ -6,7 +6,7 @@
 // finishing allowance), a block with X(U) or Z(W) cuts.
 #pragma once
 
-#include "canned_cycles.h"
+#include "motion_words.h"
 
 namespace mbc::rt {
 

@@ -27,7 +27,7 @@ constexpr int kG72 = kLatheOwnCode + 720;
 constexpr int kG73 = kLatheOwnCode + 730;
 
 int writtenCode(const mbrt_ctx& ctx, int code) {
-  return static_cast<int>(writtenLatheCode(ctx, code));
+  return static_cast<int>(writtenLatheCode(ctx.profile.gCodeSystem, code));
 }
 
 /// A word of the cycle block as a length in input units: a literal without
@@ -252,13 +252,13 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
 /// After nf: the cycle runs over the shape read.
 mbrt_status runCycle(mbrt_ctx& ctx) {
   ShapeReading& reading = ctx.lathe->shapeReading;
-  const int code = reading.code;
+  const int code = ctx.run.shapeCycle;
   const Shape shape = reading.shape;
   const ShapePoint allowance = reading.allowance;
   const ShapePoint relief = reading.relief;
   const int divisions = reading.divisions;
   restoreSnapshot(ctx, reading.before);
-  ctx.lathe->shapeReading.code = 0;
+  ctx.run.shapeCycle = 0;
   // G70 runs the kept shape: its moves' file lives as long as it.
   const Shape& kept = ctx.lathe->shapes[{reading.ns, reading.nf}] = shape;
   if (code == kG70) {
@@ -304,7 +304,7 @@ mbrt_status runCycle(mbrt_ctx& ctx) {
 void startReading(mbrt_ctx& ctx, int code, double ns, double nf) {
   ShapeReading& reading = ctx.lathe->shapeReading;
   reading = ShapeReading{};
-  reading.code = code;
+  ctx.run.shapeCycle = code;
   reading.ns = ns;
   reading.nf = nf;
   const int x = ctx.axisOf('X');
@@ -367,7 +367,7 @@ mbrt_status startShapeCycle(mbrt_ctx& ctx, int code, const FrameWords& words) {
         static_cast<double>(lengthSetting(ctx, words, oneBlock, 'K', 5136))};
     reading.divisions = static_cast<int>(d.value_or(cycleSetting(ctx, 5137)));
     if (reading.divisions < 1) {
-      ctx.lathe->shapeReading.code = 0;
+      ctx.run.shapeCycle = 0;
       return raise(ctx, AlarmId::IllegalRepetitiveCycle,
                    fmt::format("G{}: {} divisions", writtenCode(ctx, code),
                                reading.divisions));
@@ -385,17 +385,18 @@ void readShapeWords(mbrt_ctx& ctx, std::uint32_t axisMask) {
     return;
   }
   reading.firstWordsRead = true;
-  const int cutAxis = ctx.axisOf(reading.code == kG72 ? 'X' : 'Z');
-  reading.typeTwo = (reading.code == kG71 || reading.code == kG72) &&
-                    (axisMask >> cutAxis & 1) != 0;
+  const int cutAxis = ctx.axisOf(ctx.run.shapeCycle == kG72 ? 'X' : 'Z');
+  reading.typeTwo =
+      (ctx.run.shapeCycle == kG71 || ctx.run.shapeCycle == kG72) &&
+      (axisMask >> cutAxis & 1) != 0;
 }
 
 mbrt_status enterShapeBlock(mbrt_ctx& ctx, std::optional<double> n) {
   ShapeReading& reading = ctx.lathe->shapeReading;
   if (!reading.started) {
     if (n != reading.ns) {
-      const int code = reading.code;
-      reading.code = 0;
+      const int code = ctx.run.shapeCycle;
+      ctx.run.shapeCycle = 0;
       return raise(ctx, AlarmId::Unsupported,
                    fmt::format("G{} P{}: a shape program that is not the "
                                "blocks right after the cycle (mbc reads "
@@ -416,7 +417,7 @@ mbrt_status leaveShapeBlock(mbrt_ctx& ctx, std::optional<double> n,
   // it, for a context that runs again.
   const auto stop = [&] {
     restoreSnapshot(ctx, reading.before);
-    reading.code = 0;
+    ctx.run.shapeCycle = 0;
   };
   if (status != 0) {
     stop();

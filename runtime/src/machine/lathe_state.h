@@ -14,7 +14,6 @@ namespace mbc::rt {
 /// shape program as they run (lathe_shapes.h): they move nothing, their
 /// moves make the shape, and the state before them comes back after nf.
 struct ShapeReading {
-  int code = 0; // the cycle (lathe_codes.h) while reading, else 0
   double ns = 0.0;
   double nf = 0.0;
   bool started = false;        // block ns has run
@@ -46,15 +45,6 @@ struct LatheState {
 
   /// Power-on: no settings and no shapes.
   void reset() { *this = LatheState{}; }
-
-  /// A run begins reading no shape (an interrupted run may have been).
-  void startRun() { shapeReading.code = 0; }
 };
-
-/// Whether a lathe's shape cycle reads its shape program now: its blocks'
-/// moves are the shape's, not the tool's.
-inline bool readingShape(const mbrt_ctx& ctx) {
-  return ctx.lathe->shapeReading.code != 0;
-}
 
 } // namespace mbc::rt

@@ -126,29 +126,6 @@ char axisOfLetter(char letter) {
 
 } // namespace
 
-NoseTool noseTool(const mbrt_ctx& ctx) {
-  const Frames& frames = ctx.machine.frames;
-  const LatheOffset& geometry =
-      ctx.data
-          .latheOffsets[static_cast<std::size_t>(frames.toolGeometryNumber)];
-  const LatheOffset& wear =
-      ctx.data.latheOffsets[static_cast<std::size_t>(frames.toolWearNumber)];
-  const double radius =
-      geometry.rGeometry + (frames.toolWearNumber != 0 ? wear.rWear : 0.0);
-  NoseTool tool{static_cast<Counts>(roundToLengthCounts(ctx, radius)), {}};
-  // Tip directions 1-8 (X up, Z right): the tip from the nose centre.
-  static constexpr int kTip[9][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
-                                     {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
-  const auto tip = static_cast<int>(geometry.tip);
-  const int x = ctx.axisOf('X');
-  const int z = ctx.axisOf('Z');
-  if (tip >= 1 && tip <= 8) {
-    tool.tip[x] = kTip[tip][0] * tool.radius;
-    tool.tip[z] = kTip[tip][1] * tool.radius;
-  }
-  return tool;
-}
-
 mbrt_status writeLatheOffsets(mbrt_ctx& ctx, const FrameWords& words) {
   const mbrt_word* pWord = words.word('P');
   const double p = pWord != nullptr ? roundHalfAway(numeric(pWord->value)) : -1;

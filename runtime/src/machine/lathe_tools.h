@@ -14,18 +14,6 @@ namespace mbc::rt {
 /// offset changed, so that a block without motion moves by it.
 mbrt_status selectLatheOffset(mbrt_ctx& ctx, double t, bool* moved);
 
-/// Tool nose radius compensation's tool (G41/G42 on a lathe): the nose
-/// radius of the offset in force (geometry, plus the wear while a wear
-/// offset is selected) and the imaginary tip from the nose centre, by the
-/// tip direction (1-8, X up and Z right; 0 and 9: the centre is
-/// programmed).
-struct NoseTool {
-  Counts radius = 0;
-  AxisCounts tip{};
-};
-
-NoseTool noseTool(const mbrt_ctx& ctx);
-
 /// G10 P X Y Z R Q (P n: wear, 10000 + n: geometry) or with U V W C, which
 /// add to the offset.
 mbrt_status writeLatheOffsets(mbrt_ctx& ctx, const FrameWords& words);

@@ -1,5 +1,6 @@
-// The words of one block that define its motion, in counts: what the
-// block's decoding hands the motion stages (motion.h, programmed_moves.h).
+// The words of one block that define its motion, in counts, and a cycle
+// block's drilling words: what the block's decoding hands the motion stages
+// and the cycles (motion.h, programmed_moves.h, canned_cycles.h).
 #pragma once
 
 #include <array>
@@ -29,6 +30,18 @@ struct MotionWords {
   Counts blendAmount = 0;
   // ,A: the angle of the line from the plane's first axis, in degrees.
   std::optional<double> angle;
+};
+
+/// A block in canned cycle mode: its positioning and drilling words.
+struct CycleWords {
+  const MotionWords* motion; // axis words; R is the R level
+  std::optional<Counts> q;
+  std::optional<double> p; // dwell, ms
+  std::optional<double> k; // repeat count (K, or L)
+  // A lathe's G76 in the Series 10/11 format (lathe_repetitive.h): A the
+  // tool angle, D the first depth (increments).
+  std::optional<double> a;
+  std::optional<double> d;
 };
 
 } // namespace mbc::rt

@@ -136,7 +136,8 @@ std::optional<mbrt_status> readOneShotWord(mbrt_ctx& ctx, const mbrt_word& word,
       return raise(ctx, AlarmId::IllegalDecimalPoint,
                    fmt::format("{}: D takes a whole number in G{}",
                                pointedWordText('D', value),
-                               writtenLatheCode(ctx, block.nonModal)));
+                               writtenLatheCode(ctx.profile.gCodeSystem,
+                                                block.nonModal)));
     }
     block.tenFormatD = roundHalfAway(value);
     return 0;
@@ -627,7 +628,7 @@ mbrt_status executeWords(mbrt_ctx& ctx, const mbrt_word* words, size_t count,
       return status;
     }
   }
-  if (readingShape(ctx)) {
+  if (ctx.run.readingShape()) {
     readShapeWords(ctx, block.motion.axisMask);
   }
   // Lathe forms need a G code (G50, G99): most blocks have none.
@@ -740,7 +741,7 @@ mbrt_status mbrt_nc_block(mbrt_ctx* ctx, const mbrt_word* words, size_t count,
   }
   // A lathe's shape cycle reads the blocks of its shape program as they
   // run (lathe_shapes.h).
-  const bool shape = readingShape(*ctx);
+  const bool shape = ctx->run.readingShape();
   if (count == 0 && !shape) {
     return 0;
   }

@@ -14,7 +14,6 @@
 #include "cutter_comp_state.h"
 #include "frames.h"
 #include "lathe_codes.h"
-#include "lathe_state.h"
 #include "tool_moves.h"
 
 namespace mbc::rt {
@@ -118,7 +117,7 @@ mbrt_status refuseFeedPerRevolution(mbrt_ctx& ctx) {
 /// without S); `cycle` names the canned cycle; a feed per minute too small
 /// for a mill stops the run (refuseFeedPerRevolution).
 mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
-  if (readingShape(ctx)) {
+  if (ctx.run.readingShape()) {
     return 0; // a shape's moves are read, not made
   }
   if (ctx.machine.modal.feedMode == 93 && !ctx.machine.feedInBlock) {
@@ -128,14 +127,15 @@ mbrt_status checkFeed(mbrt_ctx& ctx, int cycle) {
       ctx.machine.modal.feedMode == 95 || cutsThread(ctx.machine.modal.motion);
   if (perRevolution &&
       ctx.machine.lastWords[lastWordSlot(LastWord::S)] <= 0.0) {
-    return raise(ctx, AlarmId::FeedZero,
-                 cutsThread(ctx.machine.modal.motion)
-                     ? "threading needs a spindle speed (S)"
-                 : ctx.profile.lathe()
-                     ? fmt::format("feed per revolution (G{}) needs a "
-                                   "spindle speed (S)",
-                                   writtenLatheCode(ctx, 950))
-                     : std::string("G95 needs a spindle speed (S)"));
+    return raise(
+        ctx, AlarmId::FeedZero,
+        cutsThread(ctx.machine.modal.motion)
+            ? "threading needs a spindle speed (S)"
+        : ctx.profile.lathe()
+            ? fmt::format("feed per revolution (G{}) needs a "
+                          "spindle speed (S)",
+                          writtenLatheCode(ctx.profile.gCodeSystem, 950))
+            : std::string("G95 needs a spindle speed (S)"));
   }
   if (ctx.machine.modal.feed > 0.0) {
     return ctx.machine.modal.feedMode != 94 || ctx.profile.lathe() ||
