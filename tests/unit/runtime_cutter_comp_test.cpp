@@ -1,8 +1,8 @@
-// Cutter compensation C (runtime/src/machine/cutter_comp.cpp): what the
+// Cutter compensation C (runtime/src/moves/cutter_comp.cpp): what the
 // block-by-block interface shows of the look-ahead, the alarms and the
 // refusals. Every expected point is worked out by hand; the corner rules
 // themselves are checked by the goldens and the oracle scripts.
-#include "runtime/src/machine/plane_geometry.h"
+#include "runtime/src/moves/plane_geometry.h"
 
 #include <bit>
 #include <cmath>

@@ -1,5 +1,5 @@
-// Coordinate frames (runtime/src/machine/frames.cpp, frame_codes.cpp): the
-// words of G51, G68 and G43 under their parameters, what each frame does to
+// Coordinate frames (runtime/src/moves/frames.cpp, machine/frame_codes.cpp):
+// the words of G51, G68 and G43 under their parameters, what each frame does to
 // arcs and units, and the alarms.
 #include "runtime_test_support.h"
 

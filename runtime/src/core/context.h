@@ -436,11 +436,11 @@ struct HostOutputs {
 };
 
 // The parts of a context that a feature of the machine owns, declared
-// where the feature lives (machine/): the context holds them, and only code
-// that includes their header reads them.
-struct CompensationState; // cutter_comp_state.h
-struct CornerInsertion;   // corner_state.h
-struct LatheState;        // lathe_state.h
+// where the feature lives: the context holds them, and only code that
+// includes their header reads them.
+struct CompensationState; // moves/cutter_comp_state.h
+struct CornerInsertion;   // moves/corner_state.h
+struct LatheState;        // lathe/lathe_state.h
 
 } // namespace mbc::rt
 
