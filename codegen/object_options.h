@@ -14,7 +14,7 @@ struct EmitOptions {
   /// mbc_O<number> entry points for the numbered programs.
   bool entryPoints = true;
   /// A C `main` that hands its arguments and the table to mbc_aot_main
-  /// (driver/aot_main.h): the executables of `mbc build`.
+  /// (runner/aot_main.h): the executables of `mbc build`.
   bool aotMain = false;
   /// DWARF that maps the code to the .nc lines of its IR (`-g`).
   bool debugInfo = false;

@@ -7,8 +7,6 @@
 #include "driver/batch_outputs.h"
 #include "driver/batch_progress.h"
 #include "driver/batch_runner.h"
-#include "driver/interrupt_scope.h"
-#include "driver/output_files.h"
 
 #include <fmt/format.h>
 
@@ -19,6 +17,9 @@
 #include <filesystem>
 #include <sstream>
 #include <thread>
+
+#include "runner/interrupt_scope.h"
+#include "runner/output_files.h"
 
 namespace mbc::driver {
 
@@ -68,7 +69,7 @@ int batchCommand(const Options& o) {
        i += static_cast<std::size_t>(shard.count)) {
     rows.push_back(all[i]);
   }
-  PhaseTimes phases;
+  runner::PhaseTimes phases;
   toolchain::PreparedProgram program;
   if (int status = program.prepare(toolchainRequest(o), phases)) {
     return status == toolchain::PreparedProgram::kNothingToRun ? 0 : status;
@@ -84,10 +85,10 @@ int batchCommand(const Options& o) {
   const std::size_t threads = std::clamp<std::size_t>(
       o.jobs > 0 ? static_cast<std::size_t>(o.jobs) : cores, 1,
       std::min<std::size_t>(std::max<std::size_t>(rows.size(), 1),
-                            InterruptibleRun::kMaxRuns));
-  std::vector<CtxPtr> contexts;
+                            runner::InterruptibleRun::kMaxRuns));
+  std::vector<runner::CtxPtr> contexts;
   for (std::size_t t = 0; t < threads; ++t) {
-    contexts.push_back(createContext(o.run));
+    contexts.push_back(runner::createContext(o.run));
     if (!contexts.back()) {
       return 2;
     }
@@ -105,7 +106,7 @@ int batchCommand(const Options& o) {
                      combinedName, o.combined);
   rows.erase(rows.begin(),
              rows.begin() + static_cast<std::ptrdiff_t>(finished.count));
-  OutputFile results, combined;
+  runner::OutputFile results, combined;
   if (!results.open(resultsPath) ||
       (o.combined && !combined.open(combinedPath))) {
     std::fprintf(stderr, "mbc: error: cannot write in '%s'\n",
@@ -116,10 +117,10 @@ int batchCommand(const Options& o) {
       "id,line,status,blocks,moves,feed_length,rapid_length,cycle_time,"
       "alarm\n" +
       finished.results;
-  OutputFile::writeText(&results, header.data(), header.size());
+  runner::OutputFile::writeText(&results, header.data(), header.size());
   if (o.combined) {
-    OutputFile::writeText(&combined, finished.combined.data(),
-                          finished.combined.size());
+    runner::OutputFile::writeText(&combined, finished.combined.data(),
+                                  finished.combined.size());
   }
 
   ProgressLine progress(rows.size());
@@ -127,7 +128,7 @@ int batchCommand(const Options& o) {
   const auto start = std::chrono::steady_clock::now();
   BatchRunner batch(o, program, std::move(rows));
   {
-    const InterruptScope interrupts;
+    const runner::InterruptScope interrupts;
     batch.run(
         contexts,
         [&](const BatchRow& row, const RowResult& r) {
@@ -151,10 +152,10 @@ int batchCommand(const Options& o) {
               statusName(r), r.stats.blocks, r.stats.moves, r.stats.feed_length,
               r.stats.rapid_length, r.stats.cycle_time,
               r.alarm.empty() ? "" : csvQuoted(r.alarm));
-          OutputFile::writeText(&results, line.data(), line.size());
+          runner::OutputFile::writeText(&results, line.data(), line.size());
           if (o.combined) {
-            OutputFile::writeText(&combined, r.combined.data(),
-                                  r.combined.size());
+            runner::OutputFile::writeText(&combined, r.combined.data(),
+                                          r.combined.size());
           }
           progress.update(taken, alarms);
         },
@@ -168,14 +169,14 @@ int batchCommand(const Options& o) {
   }
   progress.clear();
   bool written = true;
-  for (OutputFile* out : {&results, &combined}) {
+  for (runner::OutputFile* out : {&results, &combined}) {
     if (!out->finish()) {
       std::fprintf(stderr, "mbc: error: cannot write '%s': %s\n",
                    out->path().c_str(), std::strerror(errno));
       written = false;
     }
   }
-  const double seconds = millisecondsSince(start) / 1000.0;
+  const double seconds = runner::millisecondsSince(start) / 1000.0;
   // The rows an earlier batch finished count as this one's.
   ended += finished.count - finished.alarms;
   alarms += finished.alarms;
@@ -200,7 +201,7 @@ int batchCommand(const Options& o) {
                seconds > 0 ? static_cast<double>(taken) / seconds : 0.0, ended,
                alarms, alarms == 1 ? "" : "s", others.c_str(),
                (o.combined ? combinedPath : resultsPath).c_str());
-  if (const int sig = InterruptScope::signal()) {
+  if (const int sig = runner::InterruptScope::signal()) {
     std::fprintf(stderr,
                  "mbc: batch: interrupted; %zu of the rows did not "
                  "run\n",

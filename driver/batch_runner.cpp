@@ -2,8 +2,6 @@
 #include "driver/batch_runner.h"
 
 #include "driver/batch_outputs.h"
-#include "driver/interrupt_scope.h"
-#include "driver/output_files.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -15,6 +13,9 @@
 #include <cstring>
 #include <filesystem>
 #include <thread>
+
+#include "runner/interrupt_scope.h"
+#include "runner/output_files.h"
 
 namespace mbc::driver {
 
@@ -82,10 +83,10 @@ const char* statusName(const RowResult& r) {
   return r.exit > 128 ? "interrupted" : "error";
 }
 
-void BatchRunner::run(const std::vector<CtxPtr>& contexts, const Take& take,
-                      const CaughtUp& caughtUp) {
+void BatchRunner::run(const std::vector<runner::CtxPtr>& contexts,
+                      const Take& take, const CaughtUp& caughtUp) {
   std::vector<std::thread> workers;
-  for (const CtxPtr& ctx : contexts) {
+  for (const runner::CtxPtr& ctx : contexts) {
     workers.emplace_back([this, c = ctx.get()] { work(c); });
   }
   std::size_t next = 0;
@@ -121,7 +122,7 @@ bool BatchRunner::isDone(std::size_t i) {
 void BatchRunner::work(mbrt_ctx* ctx) {
   while (true) {
     const std::size_t i = next_++;
-    if (i >= rows_.size() || InterruptScope::signal() != 0) {
+    if (i >= rows_.size() || runner::InterruptScope::signal() != 0) {
       break;
     }
     RowResult r = runRow(rows_[i], ctx);
@@ -135,7 +136,7 @@ void BatchRunner::work(mbrt_ctx* ctx) {
 }
 
 RowResult BatchRunner::runRow(const BatchRow& row, mbrt_ctx* ctx) const {
-  RunOptions ro = o_.run;
+  runner::RunOptions ro = o_.run;
   ro.presets.insert(ro.presets.end(), row.presets.begin(), row.presets.end());
   for (const auto& [letter, value] : row.args) {
     auto same = std::find_if(ro.args.begin(), ro.args.end(),
@@ -147,8 +148,8 @@ RowResult BatchRunner::runRow(const BatchRow& row, mbrt_ctx* ctx) const {
     }
   }
   RowResult r;
-  OutputFile text;
-  SessionLog log;
+  runner::OutputFile text;
+  runner::SessionLog log;
   log.capture = true;
   if (!text.openMemory()) {
     std::fputs("mbc: error: out of memory\n", stderr);
@@ -157,7 +158,7 @@ RowResult BatchRunner::runRow(const BatchRow& row, mbrt_ctx* ctx) const {
   }
   log.text = text.get();
   mbrt_reset(ctx);
-  r.exit = runSession(
+  r.exit = runner::runSession(
       ro, ctx, program_.mainName(),
       [this](mbrt_ctx* c) { return program_.run(c); }, log);
   text.finish();

@@ -7,7 +7,6 @@
 
 #include "driver/batch_table.h"
 #include "driver/options.h"
-#include "driver/run_session.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -17,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "runner/run_session.h"
 #include "toolchain/prepared_program.h"
 
 namespace mbc::driver {
@@ -24,7 +24,7 @@ namespace mbc::driver {
 /// What the writer learns of a finished row.
 struct RowResult {
   bool done = false;
-  int exit = 0; // runSession's exit status
+  int exit = 0; // runner::runSession's exit status
   std::string alarm;
   mbrt_stats stats{};
   std::string combined; // the row's line of the combined JSONL
@@ -49,7 +49,7 @@ public:
   /// InterruptScope stops it. Calls `take` for each finished row in table
   /// order, on this thread, and `caughtUp` when it has taken every row
   /// finished so far, before it waits for more.
-  void run(const std::vector<CtxPtr>& contexts, const Take& take,
+  void run(const std::vector<runner::CtxPtr>& contexts, const Take& take,
            const CaughtUp& caughtUp);
 
   std::size_t size() const { return rows_.size(); }

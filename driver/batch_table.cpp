@@ -5,7 +5,6 @@
 // a comma.
 #include "driver/batch_table.h"
 
-#include "driver/run_options.h"
 #include <mbc/read_file.h>
 
 #include <fmt/format.h>
@@ -16,6 +15,8 @@
 #include <charconv>
 #include <cstring>
 #include <set>
+
+#include "runner/run_options.h"
 
 namespace mbc::driver {
 
@@ -97,7 +98,7 @@ bool parseCell(std::string text, char separator, double& value) {
       std::count(text.begin(), text.end(), ',') == 1) {
     text[text.find(',')] = '.';
   }
-  return parseNumber(text, value);
+  return runner::parseNumber(text, value);
 }
 
 enum class ColumnKind { Id, Argument, Preset, Ignored };

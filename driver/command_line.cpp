@@ -5,7 +5,6 @@
 // option belongs to (unknown_arguments.h).
 #include "driver/command_line.h"
 
-#include "driver/help_formatter.h"
 #include "driver/unknown_arguments.h"
 #include "driver/version_text.h"
 #include "ir/pass_manager.h"
@@ -18,6 +17,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <unistd.h>
+
+#include "runner/help_formatter.h"
 
 namespace mbc::driver {
 
@@ -46,22 +47,23 @@ void addFlag(CLI::App& cmd, const std::string& name, bool& field,
 // How the diagnostics of the input come out.
 void addDiagnosticOptions(CLI::App& cmd, Reader& r) {
   const std::string group = "Diagnostics";
-  addValueOption(cmd, "--diagnostics-format", "text|json|sarif",
-                 "print the diagnostics as clang does (default), as one line "
-                 "of JSON or as a SARIF 2.1.0 log",
-                 r.error,
-                 [&r](const std::string& v) -> std::string {
-                   toolchain::DiagnosticFormat& f = r.o.diagnostics.format;
-                   if (v == "text" || v == "json" || v == "sarif") {
-                     f = v == "text"   ? toolchain::DiagnosticFormat::Text
-                         : v == "json" ? toolchain::DiagnosticFormat::Json
-                                       : toolchain::DiagnosticFormat::Sarif;
-                     return "";
-                   }
-                   return fmt::format("unknown diagnostics format '{}' (text, "
-                                      "json or sarif)",
-                                      v);
-                 })
+  runner::addValueOption(
+      cmd, "--diagnostics-format", "text|json|sarif",
+      "print the diagnostics as clang does (default), as one line "
+      "of JSON or as a SARIF 2.1.0 log",
+      r.error,
+      [&r](const std::string& v) -> std::string {
+        toolchain::DiagnosticFormat& f = r.o.diagnostics.format;
+        if (v == "text" || v == "json" || v == "sarif") {
+          f = v == "text"   ? toolchain::DiagnosticFormat::Text
+              : v == "json" ? toolchain::DiagnosticFormat::Json
+                            : toolchain::DiagnosticFormat::Sarif;
+          return "";
+        }
+        return fmt::format("unknown diagnostics format '{}' (text, "
+                           "json or sarif)",
+                           v);
+      })
       ->group(group);
   const std::string colorHelp =
       "colour the diagnostics: on a terminal unless NO_COLOR is set (auto, "
@@ -84,19 +86,19 @@ void addDiagnosticOptions(CLI::App& cmd, Reader& r) {
          "-w", [&r] { r.o.diagnostics.warnings = WarningMode::Hide; },
          std::string("show no warnings"))
       ->group(group);
-  addValueOption(cmd, "-W", "error",
-                 "-Werror: make every warning an error (the input is refused)",
-                 r.error,
-                 [&r](const std::string& v) -> std::string {
-                   if (v == "error" || v == "no-error") {
-                     r.o.diagnostics.warnings =
-                         v == "error" ? WarningMode::Error : WarningMode::Show;
-                     return "";
-                   }
-                   return fmt::format("unknown warning option '-W{}' (mbc "
-                                      "has -Werror and -Wno-error)",
-                                      v);
-                 })
+  runner::addValueOption(
+      cmd, "-W", "error",
+      "-Werror: make every warning an error (the input is refused)", r.error,
+      [&r](const std::string& v) -> std::string {
+        if (v == "error" || v == "no-error") {
+          r.o.diagnostics.warnings =
+              v == "error" ? WarningMode::Error : WarningMode::Show;
+          return "";
+        }
+        return fmt::format("unknown warning option '-W{}' (mbc "
+                           "has -Werror and -Wno-error)",
+                           v);
+      })
       ->group(group);
 }
 
@@ -119,12 +121,13 @@ void addInputs(CLI::App& cmd, Reader& r, bool noStrict) {
                  "the programs, and the files of the programs they call "
                  "('-': standard input)")
       ->type_name("");
-  addValueOption(cmd, "-I", "DIR",
-                 "look for called programs in DIR too (repeatable)", r.error,
-                 [&r](const std::string& v) {
-                   r.o.includeDirs.push_back(v);
-                   return "";
-                 })
+  runner::addValueOption(cmd, "-I", "DIR",
+                         "look for called programs in DIR too (repeatable)",
+                         r.error,
+                         [&r](const std::string& v) {
+                           r.o.includeDirs.push_back(v);
+                           return "";
+                         })
       ->group("Input");
   cmd.add_flag_callback(
          "--strict", [&r] { r.o.strict = true; },
@@ -162,11 +165,11 @@ std::string setOptLevel(Options& o, const std::string& level) {
 }
 
 void addCodeOptions(CLI::App& cmd, Reader& r) {
-  addValueOption(cmd, "-O", "LEVEL",
-                 "optimise: -O0 to -O3 (default -O2), -O (-O1), -Os and -Oz "
-                 "(smaller code), -Og (-O1)",
-                 r.error,
-                 [&r](const std::string& v) { return setOptLevel(r.o, v); })
+  runner::addValueOption(
+      cmd, "-O", "LEVEL",
+      "optimise: -O0 to -O3 (default -O2), -O (-O1), -Os and -Oz "
+      "(smaller code), -Og (-O1)",
+      r.error, [&r](const std::string& v) { return setOptLevel(r.o, v); })
       ->group("Code generation");
   addFlag(cmd, "-g", r.o.debugInfo,
           "debug information: the code's lines are the program's blocks",
@@ -176,37 +179,38 @@ void addCodeOptions(CLI::App& cmd, Reader& r) {
 void addPassOptions(CLI::App& cmd, Reader& r) {
   const std::string group = "IR passes";
   addFlag(cmd, "--no-opt", r.o.noOpt, "run none of mbc's IR passes", group);
-  addValueOption(cmd, "--disable-pass", "NAME",
-                 "skip one IR pass (repeatable): " + ir::passNameList(),
-                 r.error,
-                 [&r](const std::string& v) -> std::string {
-                   if (!ir::isPassName(v)) {
-                     return fmt::format("unknown pass '{}' (passes: {})", v,
-                                        ir::passNameList());
-                   }
-                   r.o.disabledPasses.push_back(v);
-                   return "";
-                 })
+  runner::addValueOption(
+      cmd, "--disable-pass", "NAME",
+      "skip one IR pass (repeatable): " + ir::passNameList(), r.error,
+      [&r](const std::string& v) -> std::string {
+        if (!ir::isPassName(v)) {
+          return fmt::format("unknown pass '{}' (passes: {})", v,
+                             ir::passNameList());
+        }
+        r.o.disabledPasses.push_back(v);
+        return "";
+      })
       ->group(group);
   addFlag(cmd, "--verify-each", r.o.verifyEach,
           "verify the IR after every pass", group);
 }
 
 void addEngineOptions(CLI::App& cmd, Reader& r) {
-  addValueOption(cmd, "--engine", toolchain::engineList("|", "|"),
-                 "what runs the program: native code (default), the "
-                 "interpreter of the source or the IR evaluator",
-                 r.error,
-                 [&r](const std::string& v) -> std::string {
-                   const std::optional<toolchain::Engine> engine =
-                       toolchain::engineNamed(v);
-                   if (!engine) {
-                     return fmt::format("unknown engine '{}' ({})", v,
-                                        toolchain::engineList(", ", " or "));
-                   }
-                   r.o.engine = *engine;
-                   return "";
-                 })
+  runner::addValueOption(cmd, "--engine", toolchain::engineList("|", "|"),
+                         "what runs the program: native code (default), the "
+                         "interpreter of the source or the IR evaluator",
+                         r.error,
+                         [&r](const std::string& v) -> std::string {
+                           const std::optional<toolchain::Engine> engine =
+                               toolchain::engineNamed(v);
+                           if (!engine) {
+                             return fmt::format(
+                                 "unknown engine '{}' ({})", v,
+                                 toolchain::engineList(", ", " or "));
+                           }
+                           r.o.engine = *engine;
+                           return "";
+                         })
       ->group("Run");
   addFlag(cmd, "--no-cache", r.o.noCache,
           "compile again rather than load the cached code", "Run");
@@ -221,17 +225,18 @@ std::string setLanguage(Options& o, const std::string& v) {
 }
 
 void addOutputFile(CLI::App& cmd, Reader& r, const std::string& help) {
-  addValueOption(cmd, "-o", "PATH", help, r.error, [&r](const std::string& v) {
-    return stored(r.o.outputPath, v);
-  })->group("Output");
+  runner::addValueOption(
+      cmd, "-o", "PATH", help, r.error,
+      [&r](const std::string& v) { return stored(r.o.outputPath, v); })
+      ->group("Output");
 }
 
 void addCpu(CLI::App& cmd, Reader& r) {
-  addValueOption(cmd, "--cpu", "NAME",
-                 "the CPU to compile for: 'native' (this machine) or an LLVM "
-                 "CPU name (default: the architecture's generic one)",
-                 r.error,
-                 [&r](const std::string& v) { return stored(r.o.cpu, v); })
+  runner::addValueOption(
+      cmd, "--cpu", "NAME",
+      "the CPU to compile for: 'native' (this machine) or an LLVM "
+      "CPU name (default: the architecture's generic one)",
+      r.error, [&r](const std::string& v) { return stored(r.o.cpu, v); })
       ->group("Code generation");
 }
 
@@ -246,9 +251,9 @@ bool isCIdentifier(const std::string& s) {
 }
 
 // What run and batch share after their own options.
-void addRunningOptions(CLI::App& cmd, Reader& r, RunOutputs outputs) {
+void addRunningOptions(CLI::App& cmd, Reader& r, runner::RunOutputs outputs) {
   addEngineOptions(cmd, r);
-  addRunOptions(cmd, r.o.run, r.error, outputs);
+  runner::addRunOptions(cmd, r.o.run, r.error, outputs);
   addCodeOptions(cmd, r);
   addPassOptions(cmd, r);
 }
@@ -257,7 +262,7 @@ void defineRun(CLI::App& app, Reader& r) {
   CLI::App* cmd = app.add_subcommand(
       "run", "Run a program: its toolpath, DPRNT output and variables");
   addInputs(*cmd, r, true);
-  addRunningOptions(*cmd, r, RunOutputs::Single);
+  addRunningOptions(*cmd, r, runner::RunOutputs::Single);
 }
 
 void defineBatch(CLI::App& app, Reader& r) {
@@ -265,50 +270,51 @@ void defineBatch(CLI::App& app, Reader& r) {
       "batch", "Run a program once per row of a table of arguments");
   addInputs(*cmd, r, true);
   const std::string group = "Batch";
-  addValueOption(
+  runner::addValueOption(
       *cmd, "--params", "TABLE.csv",
       "the table: a column per G65 argument letter or #N, "
       "optionally 'id'",
       r.error, [&r](const std::string& v) { return stored(r.o.paramsPath, v); })
       ->group(group);
-  addValueOption(*cmd, "--out", "DIR",
-                 "write each row's toolpath, DPRNT, variables and log here",
-                 r.error,
-                 [&r](const std::string& v) { return stored(r.o.outDir, v); })
+  runner::addValueOption(
+      *cmd, "--out", "DIR",
+      "write each row's toolpath, DPRNT, variables and log here", r.error,
+      [&r](const std::string& v) { return stored(r.o.outDir, v); })
       ->group(group);
-  addValueOption(*cmd, "-j,--jobs", "N",
-                 "run N rows at once (default: one per core)", r.error,
-                 [&r](const std::string& v) -> std::string {
-                   double jobs = 0;
-                   if (!parseNumber(v, jobs) || jobs < 1 || jobs > 256 ||
-                       jobs != static_cast<int>(jobs)) {
-                     return fmt::format("-j expects a number of threads from "
-                                        "1 to 256, got '{}'",
-                                        v);
-                   }
-                   r.o.jobs = static_cast<int>(jobs);
-                   return "";
-                 })
+  runner::addValueOption(*cmd, "-j,--jobs", "N",
+                         "run N rows at once (default: one per core)", r.error,
+                         [&r](const std::string& v) -> std::string {
+                           double jobs = 0;
+                           if (!runner::parseNumber(v, jobs) || jobs < 1 ||
+                               jobs > 256 || jobs != static_cast<int>(jobs)) {
+                             return fmt::format(
+                                 "-j expects a number of threads from "
+                                 "1 to 256, got '{}'",
+                                 v);
+                           }
+                           r.o.jobs = static_cast<int>(jobs);
+                           return "";
+                         })
       ->group(group);
-  addValueOption(*cmd, "--shard", "I/N",
-                 "run only the I-th of N equal parts of the table", r.error,
-                 [&r](const std::string& v) { return stored(r.o.shard, v); })
+  runner::addValueOption(
+      *cmd, "--shard", "I/N", "run only the I-th of N equal parts of the table",
+      r.error, [&r](const std::string& v) { return stored(r.o.shard, v); })
       ->group(group);
-  addValueOption(*cmd, "--column", "NAME=TARGET",
-                 "read the table's column NAME as the argument letter, #N "
-                 "or id TARGET; NAME= ignores the column (repeatable)",
-                 r.error,
-                 [&r](const std::string& v) -> std::string {
-                   const std::size_t eq = v.find('=');
-                   if (eq == 0 || eq == std::string::npos) {
-                     return fmt::format("--column expects NAME=TARGET (such "
-                                        "as depth=Z), got '{}'",
-                                        v);
-                   }
-                   r.o.columnMap.emplace_back(v.substr(0, eq),
-                                              v.substr(eq + 1));
-                   return "";
-                 })
+  runner::addValueOption(
+      *cmd, "--column", "NAME=TARGET",
+      "read the table's column NAME as the argument letter, #N "
+      "or id TARGET; NAME= ignores the column (repeatable)",
+      r.error,
+      [&r](const std::string& v) -> std::string {
+        const std::size_t eq = v.find('=');
+        if (eq == 0 || eq == std::string::npos) {
+          return fmt::format("--column expects NAME=TARGET (such "
+                             "as depth=Z), got '{}'",
+                             v);
+        }
+        r.o.columnMap.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+        return "";
+      })
       ->group(group);
   addFlag(*cmd, "--combined", r.o.combined,
           "write all rows' results into one JSONL file", group);
@@ -316,14 +322,14 @@ void defineBatch(CLI::App& app, Reader& r) {
           "keep the rows an earlier batch finished in --out and run the "
           "others",
           group);
-  addRunningOptions(*cmd, r, RunOutputs::None);
+  addRunningOptions(*cmd, r, runner::RunOutputs::None);
 }
 
 void defineCheck(CLI::App& app, Reader& r) {
   CLI::App* cmd = app.add_subcommand(
       "check", "Report the errors and warnings of a program, run nothing");
   addInputs(*cmd, r, false);
-  addValueOption(
+  runner::addValueOption(
       *cmd, "--machine", "PATH", "check against this machine profile (JSON)",
       r.error,
       [&r](const std::string& v) { return stored(r.o.run.machinePath, v); })
@@ -334,9 +340,10 @@ void defineEmitIr(CLI::App& app, Reader& r) {
   CLI::App* cmd = app.add_subcommand(
       "emit-ir", "Print the program's IR after mbc's passes");
   addInputs(*cmd, r, true);
-  addValueOption(*cmd, "-x", "nc|mbir",
-                 "the input's language: programs (default) or IR text", r.error,
-                 [&r](const std::string& v) { return setLanguage(r.o, v); })
+  runner::addValueOption(
+      *cmd, "-x", "nc|mbir",
+      "the input's language: programs (default) or IR text", r.error,
+      [&r](const std::string& v) { return setLanguage(r.o, v); })
       ->group("Input");
   addFlag(*cmd, "--trace", r.o.run.trace,
           "lower with the trace statements of --trace runs", "IR passes");
@@ -347,37 +354,38 @@ void defineCompile(CLI::App& app, Reader& r) {
   CLI::App* cmd = app.add_subcommand(
       "compile", "Compile programs to an object file or a shared library");
   addInputs(*cmd, r, true);
-  addValueOption(*cmd, "-x", "nc|mbir",
-                 "the input's language: programs (default) or IR text", r.error,
-                 [&r](const std::string& v) { return setLanguage(r.o, v); })
+  runner::addValueOption(
+      *cmd, "-x", "nc|mbir",
+      "the input's language: programs (default) or IR text", r.error,
+      [&r](const std::string& v) { return setLanguage(r.o, v); })
       ->group("Input");
   addOutputFile(*cmd, r, "the file to write ('-': standard output)");
-  addValueOption(
+  runner::addValueOption(
       *cmd, "--header", "PATH",
       "write a C header declaring the entry points too", r.error,
       [&r](const std::string& v) { return stored(r.o.headerPath, v); })
       ->group("Output");
-  addValueOption(*cmd, "--emit", "ir|llvm|asm|obj",
-                 "what to write (default: obj)", r.error,
-                 [&r](const std::string& v) -> std::string {
-                   if (v != "obj" && v != "asm" && v != "llvm" && v != "ir") {
-                     return fmt::format(
-                         "unknown --emit '{}' (ir, llvm, asm or obj)", v);
-                   }
-                   r.o.emit = v;
-                   return "";
-                 })
+  runner::addValueOption(
+      *cmd, "--emit", "ir|llvm|asm|obj", "what to write (default: obj)",
+      r.error,
+      [&r](const std::string& v) -> std::string {
+        if (v != "obj" && v != "asm" && v != "llvm" && v != "ir") {
+          return fmt::format("unknown --emit '{}' (ir, llvm, asm or obj)", v);
+        }
+        r.o.emit = v;
+        return "";
+      })
       ->group("Output");
-  addValueOption(*cmd, "--table", "NAME",
-                 "the name of the program table (a C identifier)", r.error,
-                 [&r](const std::string& v) -> std::string {
-                   if (!isCIdentifier(v)) {
-                     return fmt::format("--table '{}' is not a C identifier",
-                                        v);
-                   }
-                   r.o.tableName = v;
-                   return "";
-                 })
+  runner::addValueOption(
+      *cmd, "--table", "NAME", "the name of the program table (a C identifier)",
+      r.error,
+      [&r](const std::string& v) -> std::string {
+        if (!isCIdentifier(v)) {
+          return fmt::format("--table '{}' is not a C identifier", v);
+        }
+        r.o.tableName = v;
+        return "";
+      })
       ->group("Output");
   addFlag(*cmd, "--shared", r.o.shared,
           "write a shared library with the runtime in it", "Output");
@@ -435,7 +443,7 @@ std::string checkCombinations(const Options& o) {
   if (o.command == "batch" && (o.paramsPath.empty() || o.outDir.empty())) {
     return "mbc batch needs --params TABLE.csv and --out DIR";
   }
-  return runOptionsProblem(o.run);
+  return runner::runOptionsProblem(o.run);
 }
 
 int usageError(const std::string& message, const std::string& command) {
@@ -499,7 +507,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
       "print the version of mbc and of the LLVM it is built on, and exit");
   app.footer("'mbc help COMMAND' or 'mbc COMMAND --help' shows a command's "
              "options.");
-  useHelpFormatter(app);
+  runner::useHelpFormatter(app);
   app.allow_extras();
   app.require_subcommand(0, 1);
   app.option_defaults()->always_capture_default(false);

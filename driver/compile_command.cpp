@@ -6,7 +6,6 @@
 
 #include "codegen/c_header.h"
 #include "driver/emit_ir_command.h"
-#include "driver/output_files.h"
 #include "ir/printer.h"
 
 #include <fmt/format.h>
@@ -19,6 +18,7 @@
 #include <unistd.h>
 
 #include "build_paths.h" // MBC_SANITIZE
+#include "runner/output_files.h"
 #include "toolchain/code_generator.h"
 #include "toolchain/own_libraries.h"
 #include "toolchain/run_process.h"
@@ -133,7 +133,8 @@ int compileCommand(const Options& o) {
         module, opts, o,
         [&](const std::string& object, const std::string& dir) {
           const std::string script = dir + "/exports.map";
-          if (!replaceFile(script, fmt::format("{{ global: mbrt_*; mbc_O*; "
+          if (!runner::replaceFile(script,
+                                   fmt::format("{{ global: mbrt_*; mbc_O*; "
                                                "{}; local: *; }};\n",
                                                table))) {
             return std::vector<std::string>{};
@@ -146,7 +147,7 @@ int compileCommand(const Options& o) {
                                           "-Wl,--version-script=" + script};
         });
   } else if (o.emit == "ir") {
-    if (!replaceFile(o.outputPath, ir::print(module))) {
+    if (!runner::replaceFile(o.outputPath, ir::print(module))) {
       status = reportFailure("cannot write '" + o.outputPath + "'");
     }
   } else {
@@ -161,7 +162,8 @@ int compileCommand(const Options& o) {
     for (char& c : guard) {
       c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     }
-    if (!replaceFile(o.headerPath, codegen::cHeader(module, table, guard))) {
+    if (!runner::replaceFile(o.headerPath,
+                             codegen::cHeader(module, table, guard))) {
       return reportFailure("cannot write '" + o.headerPath + "'");
     }
   }

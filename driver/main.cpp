@@ -7,7 +7,6 @@
 #include "driver/compile_command.h"
 #include "driver/emit_ir_command.h"
 #include "driver/run_command.h"
-#include "driver/run_session.h"
 #include <mbc/engine.h>
 
 #include <cstdio>
@@ -15,6 +14,7 @@
 #include <new>
 #include <string_view>
 
+#include "runner/run_session.h"
 #include "toolchain/compile_unit.h"
 
 namespace {
@@ -43,7 +43,8 @@ int dispatch(int argc, char** argv) {
     // A profile given is checked too, and the checks defer to it.
     mbc::toolchain::LoadOptions load = loadOptions(*options);
     if (!options->run.machinePath.empty()) {
-      const CtxPtr machine = createContext(options->run);
+      const mbc::runner::CtxPtr machine =
+          mbc::runner::createContext(options->run);
       if (!machine) {
         return 2;
       }

@@ -2,13 +2,12 @@
 // emit-ir`, `mbc compile` and `mbc build`.
 #pragma once
 
-#include "driver/run_options.h"
-
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "runner/run_options.h"
 #include "toolchain/compile_unit.h"
 #include "toolchain/engine.h"
 #include "toolchain/request.h"
@@ -18,7 +17,7 @@ namespace mbc::driver {
 struct Options {
   std::string command; // run, check, emit-ir, compile, build
   std::vector<std::string> files;
-  RunOptions run;
+  runner::RunOptions run;
   toolchain::Engine engine = toolchain::Engine::Jit;
   int optLevel = 2;        // -O0 ... -O3: the LLVM pipeline
   int sizeLevel = 0;       // -Os 1, -Oz 2: smaller code

@@ -1,19 +1,18 @@
 // `mbc run`: the input compiled for the chosen engine, then one run session.
 #include "driver/run_command.h"
 
-#include "driver/run_session.h"
-
+#include "runner/run_session.h"
 #include "toolchain/prepared_program.h"
 
 namespace mbc::driver {
 
 int runCommand(const Options& o) {
-  PhaseTimes phases;
+  runner::PhaseTimes phases;
   toolchain::PreparedProgram program;
   if (int status = program.prepare(toolchainRequest(o), phases)) {
     return status == toolchain::PreparedProgram::kNothingToRun ? 0 : status;
   }
-  return runOnce(
+  return runner::runOnce(
       o.run, program.mainName(),
       [&program](mbrt_ctx* ctx) { return program.run(ctx); }, phases);
 }

@@ -1,6 +1,5 @@
 #include "toolchain/code_cache.h"
 
-#include "driver/run_options.h"
 #include <mbc/read_file.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <vector>
 #include <xxhash.h>
 
+#include "runner/run_options.h"
 #include "toolchain/file_bytes.h"
 
 namespace mbc::toolchain {
@@ -66,7 +66,7 @@ bool isWhole(const std::string& bytes) {
 CodeCache CodeCache::fromEnvironment(std::string& warning) {
   std::uint64_t limit = kDefaultSizeLimit;
   if (const char* size = std::getenv("MBC_CACHE_SIZE"); size && *size) {
-    if (!driver::parseSize(size, limit)) {
+    if (!runner::parseSize(size, limit)) {
       warning = std::string("MBC_CACHE_SIZE '") + size +
                 "' is not a size such as 512M or 2G; the cache keeps to 512M";
       limit = kDefaultSizeLimit;

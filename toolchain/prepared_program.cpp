@@ -48,12 +48,12 @@ std::string missingMainMessage(const Unit& unit, const std::string& wanted) {
 
 } // namespace
 
-int PreparedProgram::prepare(const Request& r, driver::PhaseTimes& phases) {
+int PreparedProgram::prepare(const Request& r, runner::PhaseTimes& phases) {
   const auto start = std::chrono::steady_clock::now();
   if (!loadUnit(r.files, r.load, cu_)) {
     return 1;
   }
-  phases.emplace_back("front end", driver::millisecondsSince(start));
+  phases.emplace_back("front end", runner::millisecondsSince(start));
   if (cu_.unit.programs.empty() && r.mainProgram.empty()) {
     std::fprintf(stderr, "mbc: warning: the input has no blocks to run\n");
     return kNothingToRun;
@@ -73,7 +73,7 @@ bool PreparedProgram::parse(const std::vector<SourceText>& texts,
   return parseInputs(texts, files, load, cu_, diags, failure);
 }
 
-int PreparedProgram::build(const Request& r, driver::PhaseTimes& phases,
+int PreparedProgram::build(const Request& r, runner::PhaseTimes& phases,
                            std::string& error) {
   engine_ = r.engine;
   mainIndex_ = findMain(cu_.unit, r.mainProgram);
@@ -92,7 +92,7 @@ int PreparedProgram::build(const Request& r, driver::PhaseTimes& phases,
   if (engine_ == Engine::Jit) {
     jit.emplace(r, cu_.sources);
     if ((code_ = jit->cached())) {
-      phases.emplace_back("cache", driver::millisecondsSince(start));
+      phases.emplace_back("cache", runner::millisecondsSince(start));
       return 0;
     }
   }
@@ -102,7 +102,7 @@ int PreparedProgram::build(const Request& r, driver::PhaseTimes& phases,
       error = "internal error: the IR of the input could not be built";
       return 4;
     }
-    phases.emplace_back("IR", driver::millisecondsSince(start));
+    phases.emplace_back("IR", runner::millisecondsSince(start));
   }
   start = std::chrono::steady_clock::now();
   if (jit) {
@@ -110,7 +110,7 @@ int PreparedProgram::build(const Request& r, driver::PhaseTimes& phases,
     if (!code_) {
       return 4;
     }
-    phases.emplace_back("code generation", driver::millisecondsSince(start));
+    phases.emplace_back("code generation", runner::millisecondsSince(start));
   }
   return 0;
 }

@@ -5,13 +5,13 @@
 // it once, `mbc batch` once per row of its table.
 #pragma once
 
-#include "driver/run_session.h"
 #include "ir/ir.h"
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "runner/run_session.h"
 #include "toolchain/compile_unit.h"
 #include "toolchain/native_code.h"
 #include "toolchain/request.h"
@@ -26,7 +26,7 @@ public:
   /// Compiles `r.files` for `r.engine`, timing the phases. 0 when ready,
   /// kNothingToRun, or an exit status: 1 source errors, 2 no such main
   /// program (--main), 4 internal error. Messages go to stderr.
-  int prepare(const Request& r, driver::PhaseTimes& phases);
+  int prepare(const Request& r, runner::PhaseTimes& phases);
   /// prepare() in two steps, for inputs given as text too (the Python
   /// package): parse() leaves the diagnostics in `diags`, made for
   /// sources(); false when a file could not be read (`failure` says why).
@@ -35,7 +35,7 @@ public:
              DiagnosticEngine& diags, std::string& failure);
   /// Then build() finds the main program and makes the engine's code:
   /// 0, or prepare()'s exit status with the reason in `error`.
-  int build(const Request& r, driver::PhaseTimes& phases, std::string& error);
+  int build(const Request& r, runner::PhaseTimes& phases, std::string& error);
 
   const SourceManager& sources() const { return cu_.sources; }
 

@@ -1,11 +1,11 @@
 #include "batch_rows.h"
 
-#include "driver/interrupt_scope.h"
-#include "driver/run_session.h"
-
 #include <algorithm>
 #include <atomic>
 #include <thread>
+
+#include "runner/interrupt_scope.h"
+#include "runner/run_session.h"
 
 namespace mbc::python {
 
@@ -14,7 +14,7 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
              std::vector<std::unique_ptr<RunOutput>>& out, std::string& error) {
   threads = static_cast<unsigned>(
       std::max<std::size_t>(1, std::min<std::size_t>(threads, rows.size())));
-  std::vector<driver::CtxPtr> contexts;
+  std::vector<runner::CtxPtr> contexts;
   for (unsigned i = 0; i < threads; ++i) {
     contexts.push_back(newContext(profile, error));
     if (!contexts.back()) {
@@ -33,7 +33,7 @@ bool runRows(const CompiledProgram& program, const std::string* profile,
       mbrt_reset(ctx);
       out[i] =
           std::make_unique<RunOutput>(axes, programs[worker], files[worker]);
-      const driver::InterruptibleRun interruptible(ctx);
+      const runner::InterruptibleRun interruptible(ctx);
       runProgram(program, ctx, rows[i], *out[i]);
       if (out[i]->status == MBRT_ALARM_Interrupted) {
         next = rows.size(); // Ctrl-C: no more rows

@@ -67,7 +67,7 @@ CompiledProgram::compile(const CompileRequest& request, py::list& diagnostics,
     message = renderDiagnostics(diags, load.errors);
     return nullptr;
   }
-  driver::PhaseTimes phases;
+  runner::PhaseTimes phases;
   if (prepared.build(r, phases, message) != 0) {
     return nullptr;
   }

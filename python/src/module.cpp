@@ -1,8 +1,6 @@
 // The extension module mbc._mbc: what the Python package (python/mbc)
 // builds on. Compiling, contexts and runs; the Python side makes the API
 // (exceptions, keyword arguments, DataFrames).
-#include "driver/interrupt_scope.h"
-#include "driver/run_session.h"
 #include <mbc/version.h>
 
 #include <csignal>
@@ -15,6 +13,8 @@
 #include "batch_rows.h"
 #include "compiled_program.h"
 #include "program_run.h"
+#include "runner/interrupt_scope.h"
+#include "runner/run_session.h"
 
 namespace py = pybind11;
 using namespace mbc::python;
@@ -42,7 +42,7 @@ void exportRuntime() {
 struct sigaction pythonSigint {};
 
 void onSigint(int sig, siginfo_t* info, void* context) {
-  mbc::driver::interruptRuns();
+  mbc::runner::interruptRuns();
   if ((pythonSigint.sa_flags & SA_SIGINFO) != 0) {
     pythonSigint.sa_sigaction(sig, info, context);
   } else if (pythonSigint.sa_handler != SIG_DFL &&
@@ -106,7 +106,7 @@ public:
   bool running = false;        // set and read under the GIL
 
 private:
-  mbc::driver::CtxPtr ctx_;
+  mbc::runner::CtxPtr ctx_;
   std::string axes_;
   NameTable programs_, files_; // of all its runs' motions
 };
@@ -348,7 +348,7 @@ PYBIND11_MODULE(_mbc, m) {
             {
               const Running busy(c);
               py::gil_scoped_release unlocked;
-              const mbc::driver::InterruptibleRun interruptible(ctx);
+              const mbc::runner::InterruptibleRun interruptible(ctx);
               runProgram(program, ctx, r, *out);
             }
             if (watchers.error) {

@@ -1,8 +1,9 @@
 #include "program_run.h"
 
-#include "driver/output_files.h"
-#include "driver/run_session.h"
 #include <mbc/engine.h>
+
+#include "runner/output_files.h"
+#include "runner/run_session.h"
 
 namespace mbc::python {
 
@@ -61,9 +62,9 @@ void watchedPrint(void* user, const char* data, std::size_t size) {
 
 } // namespace
 
-driver::CtxPtr newContext(const std::string* profile, std::string& error) {
+runner::CtxPtr newContext(const std::string* profile, std::string& error) {
   char err[512] = "";
-  driver::CtxPtr ctx(mbrt_create(
+  runner::CtxPtr ctx(mbrt_create(
       profile != nullptr ? profile->c_str() : nullptr, err, sizeof err));
   if (!ctx) {
     error = err;
@@ -94,10 +95,10 @@ void runProgram(const CompiledProgram& program, mbrt_ctx* ctx,
   mbrt_set_message_sink(ctx, &appendText, &out.messages);
   mbrt_set_max_blocks(ctx, request.maxBlocks);
   mbrt_start(ctx, out.main.c_str());
-  driver::RunOptions options;
+  runner::RunOptions options;
   options.args = request.args;
   options.presets = request.presets;
-  out.status = driver::presetAndPass(options, ctx);
+  out.status = runner::presetAndPass(options, ctx);
   if (out.status == MBRT_OK) {
     out.status = program.prepared().run(ctx);
   }
@@ -115,7 +116,7 @@ void runProgram(const CompiledProgram& program, mbrt_ctx* ctx,
   out.axes.assign(out.stats.axis_names, out.stats.axis_count);
   out.stats.unit = nullptr;
   out.stats.axis_names = nullptr;
-  out.variables = driver::commonVariables(ctx);
+  out.variables = runner::commonVariables(ctx);
 }
 
 } // namespace mbc::python

@@ -4,7 +4,6 @@
 // parts, the statistics and the common variables at the end.
 #pragma once
 
-#include "driver/run_session.h"
 #include <mbc/runtime.h>
 
 #include <cstdint>
@@ -15,6 +14,7 @@
 
 #include "compiled_program.h"
 #include "motion_table.h"
+#include "runner/run_session.h"
 
 namespace mbc::python {
 
@@ -62,7 +62,7 @@ struct RunOutput {
 
 /// A context for a machine profile's JSON (nullptr: the built-in mill);
 /// null with the reason in `error` for a bad profile.
-driver::CtxPtr newContext(const std::string* profile, std::string& error);
+runner::CtxPtr newContext(const std::string* profile, std::string& error);
 
 /// The axis letters of the context's machine ("XYZ").
 std::string axisNames(const mbrt_ctx* ctx);

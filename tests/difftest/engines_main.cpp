@@ -7,7 +7,6 @@
 // tools/difftest.py --engines uses it for long runs: one process start
 // instead of five per program.
 #include "driver/run_command.h"
-#include "driver/run_options.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -19,9 +18,11 @@
 #include <unistd.h>
 #include <utility>
 
+#include "runner/run_options.h"
 #include "toolchain/engine.h"
 
 using namespace mbc::driver;
+using namespace mbc::runner;
 
 namespace {
 

@@ -4,9 +4,9 @@
 
 #include <string_view>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// The page, with @TITLE@ and @TOOLPATH@ for the run to fill in.
 std::string_view toolpathPage();
 
-} // namespace mbc::driver
+} // namespace mbc::runner

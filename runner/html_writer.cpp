@@ -1,8 +1,5 @@
-#include "driver/html_writer.h"
+#include "runner/html_writer.h"
 
-#include "driver/arc_geometry.h"
-#include "driver/html_page.h"
-#include "driver/xml_text.h"
 #include <mbc/number_text.h>
 #include <mbc/read_file.h>
 
@@ -14,7 +11,11 @@
 #include <numbers>
 #include <set>
 
-namespace mbc::driver {
+#include "runner/arc_geometry.h"
+#include "runner/html_page.h"
+#include "runner/xml_text.h"
+
+namespace mbc::runner {
 
 namespace {
 
@@ -218,4 +219,4 @@ std::string HtmlWriter::document(const std::string& title) const {
   return page;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

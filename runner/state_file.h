@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// Replaces the context's nonvolatile variables and offsets by the file's
 /// (what it leaves out is vacant or 0), through the runtime's writes so
@@ -22,4 +22,4 @@ bool loadState(mbrt_ctx* ctx, const std::string& path, std::string& error);
 /// rename: a reader sees the old file or the new one, never part of one.
 bool saveState(mbrt_ctx* ctx, const std::string& path);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

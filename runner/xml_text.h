@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// `text` with &, < and > escaped.
 inline std::string xmlEscaped(std::string_view text) {
@@ -18,4 +18,4 @@ inline std::string xmlEscaped(std::string_view text) {
   return out;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

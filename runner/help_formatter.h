@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 class HelpFormatter : public CLI::Formatter {
 public:
@@ -29,4 +29,4 @@ protected:
 /// Gives `app` and the commands added to it afterwards mbc's help layout.
 void useHelpFormatter(CLI::App& app);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

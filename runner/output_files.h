@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// An output stream that is a file, standard output, or nothing.
 class OutputFile {
@@ -76,4 +76,4 @@ std::string variablesJson(const mbrt_ctx* ctx);
 /// Writes variablesJson to `path` by replaceFile.
 bool writeVariables(const mbrt_ctx* ctx, const std::string& path);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// The index of the axis named `letter`, or -1.
 int axisNamed(const mbrt_motion& m, char letter);
@@ -41,4 +41,4 @@ std::array<double, MBRT_MAX_AXES> arcPoint(const mbrt_motion& m, const Arc& arc,
 /// Where an arc passes 0, 90, 180 or 270 degrees, as fractions of it.
 std::vector<double> extremes(const Arc& arc);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

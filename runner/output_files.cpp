@@ -1,5 +1,5 @@
 // Output files of `mbc run` (see output_files.h).
-#include "driver/output_files.h"
+#include "runner/output_files.h"
 
 #include <mbc/limits.h>
 #include <mbc/toolpath_json.h>
@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 OutputFile::~OutputFile() {
   finish();
@@ -161,4 +161,4 @@ bool writeVariables(const mbrt_ctx* ctx, const std::string& path) {
   return replaceFile(path, variablesJson(ctx));
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

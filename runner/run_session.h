@@ -4,7 +4,6 @@
 // the executables of `mbc build` share it, so they behave alike.
 #pragma once
 
-#include "driver/run_options.h"
 #include <mbc/runtime.h>
 
 #include <chrono>
@@ -15,7 +14,9 @@
 #include <utility>
 #include <vector>
 
-namespace mbc::driver {
+#include "runner/run_options.h"
+
+namespace mbc::runner {
 
 /// Runs the main program in a context that is set up and started.
 using MainRun = std::function<mbrt_status(mbrt_ctx*)>;
@@ -66,4 +67,4 @@ int runOnce(const RunOptions& o, const std::string& mainName,
 /// Milliseconds since `start`.
 double millisecondsSince(std::chrono::steady_clock::time_point start);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -3,8 +3,6 @@
 // arguments, limits, block skip and tracing.
 #pragma once
 
-#include "driver/svg_writer.h"
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -12,12 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "runner/svg_writer.h"
+
 namespace CLI {
 class App;
 class Option;
 } // namespace CLI
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 struct RunOptions {
   std::string mainProgram; // --main O1234 / <NAME>
@@ -73,4 +73,4 @@ bool parseNumber(std::string_view text, double& out);
 /// A size in bytes: "4096", "64K", "512M", "2G" (1024-based), at least 1.
 bool parseSize(std::string_view text, std::uint64_t& out);
 
-} // namespace mbc::driver
+} // namespace mbc::runner

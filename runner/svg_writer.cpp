@@ -3,10 +3,8 @@
 // the view has sweep flag 0. Arcs whose plane is not the view's are drawn
 // as short lines through points on them; the drawing's box takes every
 // arc's extreme points.
-#include "driver/svg_writer.h"
+#include "runner/svg_writer.h"
 
-#include "driver/arc_geometry.h"
-#include "driver/xml_text.h"
 #include <mbc/number_text.h>
 
 #include <fmt/format.h>
@@ -17,7 +15,10 @@
 #include <numbers>
 #include <vector>
 
-namespace mbc::driver {
+#include "runner/arc_geometry.h"
+#include "runner/xml_text.h"
+
+namespace mbc::runner {
 
 namespace {
 
@@ -600,4 +601,4 @@ std::string SvgWriter::document(const std::string& title) const {
   return svg;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

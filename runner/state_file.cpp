@@ -5,9 +5,8 @@
 // in the machine's unit"), so that a run ending in G20 saves millimetres on
 // a metric machine and every value comes back exactly. Loading writes only
 // what differs, so the flattened program gets G10 blocks for real changes.
-#include "driver/state_file.h"
+#include "runner/state_file.h"
 
-#include "driver/output_files.h"
 #include <mbc/engine.h>
 #include <mbc/limits.h>
 #include <mbc/read_file.h>
@@ -24,7 +23,9 @@
 #include <string>
 #include <vector>
 
-namespace mbc::driver {
+#include "runner/output_files.h"
+
+namespace mbc::runner {
 
 namespace {
 
@@ -298,4 +299,4 @@ bool saveState(mbrt_ctx* ctx, const std::string& path) {
   return replaceFile(path, root.dump(1) + "\n");
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -1,13 +1,13 @@
-// --svg (driver/svg_writer.cpp): path data for lines and arcs in each view,
+// --svg (runner/svg_writer.cpp): path data for lines and arcs in each view,
 // the box that holds every arc and the origin, holes, depth colours, the
 // axes and the scale.
-#include "driver/svg_writer.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 
-namespace mbc::driver {
+#include "runner/svg_writer.h"
+
+namespace mbc::runner {
 namespace {
 
 mbrt_motion move(int kind, double x0, double y0, double x1, double y1) {
@@ -208,4 +208,4 @@ TEST(SvgWriter, TheProgrammedContourBesideTheToolCentre) {
 }
 
 } // namespace
-} // namespace mbc::driver
+} // namespace mbc::runner

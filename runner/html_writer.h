@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 class HtmlWriter {
 public:
@@ -43,4 +43,4 @@ private:
   bool lathe_ = false;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::runner

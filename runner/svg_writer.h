@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// Auto: ZX (Z right, X up: a lathe's picture) for a machine with X and Z
 /// but no Y, XY otherwise, decided by the first move.
@@ -107,4 +107,4 @@ private:
   char depthAxis_ = 'Z'; // X on a lathe, whose cuts go deeper in X
 };
 
-} // namespace mbc::driver
+} // namespace mbc::runner

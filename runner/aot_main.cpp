@@ -1,16 +1,17 @@
 // An executable made by `mbc build`: the run options of `mbc run` (without
 // input files), the program table compiled into it, one run.
-#include "driver/aot_main.h"
+#include "runner/aot_main.h"
 
-#include "driver/help_formatter.h"
-#include "driver/run_session.h"
 #include <mbc/engine.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
-using namespace mbc::driver;
+#include "runner/help_formatter.h"
+#include "runner/run_session.h"
+
+using namespace mbc::runner;
 
 extern "C" int mbc_aot_main(int argc, char** argv,
                             const mbrt_program_table* table) {

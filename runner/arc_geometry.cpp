@@ -1,9 +1,9 @@
-#include "driver/arc_geometry.h"
+#include "runner/arc_geometry.h"
 
 #include <cmath>
 #include <numbers>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 int axisNamed(const mbrt_motion& m, char letter) {
   for (int axis = 0; axis < m.axis_count; ++axis) {
@@ -86,4 +86,4 @@ std::vector<double> extremes(const Arc& arc) {
   return fractions;
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -1,6 +1,6 @@
 // Run options. Numbers are read with from_chars so that the locale never
 // changes their meaning.
-#include "driver/run_options.h"
+#include "runner/run_options.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 bool parseNumber(std::string_view text, double& out) {
   if (!text.empty() && text[0] == '+') {
@@ -216,4 +216,4 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
       ->group("Run");
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -1,12 +1,6 @@
 // A run and its summary lines (see run_session.h).
-#include "driver/run_session.h"
+#include "runner/run_session.h"
 
-#include "driver/html_page.h"
-#include "driver/html_writer.h"
-#include "driver/interrupt_scope.h"
-#include "driver/output_files.h"
-#include "driver/state_file.h"
-#include "driver/svg_writer.h"
 #include <mbc/alarm.h>
 #include <mbc/engine.h>
 
@@ -21,7 +15,14 @@
 #include <optional>
 #include <vector>
 
-namespace mbc::driver {
+#include "runner/html_page.h"
+#include "runner/html_writer.h"
+#include "runner/interrupt_scope.h"
+#include "runner/output_files.h"
+#include "runner/state_file.h"
+#include "runner/svg_writer.h"
+
+namespace mbc::runner {
 
 namespace {
 
@@ -331,4 +332,4 @@ int runOnce(const RunOptions& o, const std::string& mainName,
   return runSession(o, ctx.get(), mainName, engine, log, phases);
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

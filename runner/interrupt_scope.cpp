@@ -2,7 +2,7 @@
 // the signal handler: lock-free atomic loads and stores (mbrt_interrupt)
 // and, for a second signal, restoring the default action and raising it
 // again.
-#include "driver/interrupt_scope.h"
+#include "runner/interrupt_scope.h"
 
 #include <atomic>
 #include <csignal>
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <new>
 
-namespace mbc::driver {
+namespace mbc::runner {
 namespace {
 
 std::atomic<mbrt_ctx*> running[InterruptibleRun::kMaxRuns];
@@ -104,4 +104,4 @@ InterruptibleRun::~InterruptibleRun() {
   }
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -1,8 +1,8 @@
-#include "driver/help_formatter.h"
+#include "runner/help_formatter.h"
 
 #include <sstream>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 namespace {
 
@@ -119,4 +119,4 @@ void useHelpFormatter(CLI::App& app) {
   app.formatter(std::make_shared<HelpFormatter>());
 }
 
-} // namespace mbc::driver
+} // namespace mbc::runner

@@ -13,7 +13,7 @@
 
 #include <mbc/runtime.h>
 
-namespace mbc::driver {
+namespace mbc::runner {
 
 /// The handlers (signals and the new-handler), installed for the scope's
 /// lifetime; the destructor restores the previous ones. The contexts of the
@@ -52,4 +52,4 @@ private:
   int slot_ = -1;
 };
 
-} // namespace mbc::driver
+} // namespace mbc::runner
