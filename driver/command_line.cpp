@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "runner/help_formatter.h"
+#include "toolchain/closest_match.h"
 
 namespace mbc::driver {
 
@@ -42,6 +43,35 @@ void addFlag(CLI::App& cmd, const std::string& name, bool& field,
   cmd.add_flag_callback(
          name, [&field] { field = true; }, help)
       ->group(group);
+}
+
+// -W: error, no-error, FLAG or no-FLAG of a warning (diagnostic_kinds.def).
+std::string readWarningOption(Reader& r, const std::string& v) {
+  if (v == "error" || v == "no-error") {
+    r.o.diagnostics.warnings =
+        v == "error" ? WarningMode::Error : WarningMode::Show;
+    return "";
+  }
+  const bool off = v.starts_with("no-");
+  const std::string flag = off ? v.substr(3) : v;
+  if (const std::optional<DiagKind> kind = warningNamed(flag)) {
+    if (off) {
+      r.o.diagnostics.disabled.insert(*kind);
+    } else {
+      r.o.diagnostics.disabled.erase(*kind);
+    }
+    return "";
+  }
+  std::vector<std::string> known;
+  for (std::string_view f : warningFlags()) {
+    known.emplace_back(f);
+  }
+  const std::string near = toolchain::closestMatch(flag, known);
+  return fmt::format("unknown warning option '-W{}'{}", v,
+                     near.empty() ? fmt::format(" (docs/check.md lists mbc's "
+                                                "warnings)")
+                                  : fmt::format("; did you mean '-W{}{}'?",
+                                                off ? "no-" : "", near));
 }
 
 // How the diagnostics of the input come out.
@@ -87,18 +117,11 @@ void addDiagnosticOptions(CLI::App& cmd, Reader& r) {
          std::string("show no warnings"))
       ->group(group);
   runner::addValueOption(
-      cmd, "-W", "error",
-      "-Werror: make every warning an error (the input is refused)", r.error,
-      [&r](const std::string& v) -> std::string {
-        if (v == "error" || v == "no-error") {
-          r.o.diagnostics.warnings =
-              v == "error" ? WarningMode::Error : WarningMode::Show;
-          return "";
-        }
-        return fmt::format("unknown warning option '-W{}' (mbc "
-                           "has -Werror and -Wno-error)",
-                           v);
-      })
+      cmd, "-W", "FLAG",
+      "-Wno-FLAG hides one kind of warning and -WFLAG shows it again "
+      "(docs/check.md lists them); -Werror makes every warning shown an "
+      "error (the input is refused), -Wno-error undoes it",
+      r.error, [&r](const std::string& v) { return readWarningOption(r, v); })
       ->group(group);
 }
 

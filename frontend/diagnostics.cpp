@@ -16,13 +16,31 @@ struct KindRow {
   Severity severity;
   AlarmId alarm;
   const char* format;
+  const char* flag; // a warning's -W flag, nullptr for the others
 };
 
 constexpr std::array kKinds = {
 #define DIAG(Id, Sev, Alarm, Text)                                             \
-  KindRow{#Id, Severity::Sev, AlarmId::Alarm, Text},
+  KindRow{#Id, Severity::Sev, AlarmId::Alarm, Text, nullptr},
+#define WARNING(Id, Flag, Text)                                                \
+  KindRow{#Id, Severity::Warning, AlarmId::None, Text, Flag},
 #include "frontend/diagnostic_kinds.def"
 };
+
+/// Each flag names one kind of warning: -Wno-FLAG hides no other.
+constexpr bool flagsAreUnique() {
+  for (std::size_t i = 0; i < kKinds.size(); ++i) {
+    for (std::size_t j = i + 1; j < kKinds.size() && kKinds[i].flag; ++j) {
+      if (kKinds[j].flag && std::string_view(kKinds[i].flag) ==
+                                std::string_view(kKinds[j].flag)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+static_assert(flagsAreUnique());
 
 // The source line as shown under a diagnostic: control bytes and invalid
 // UTF-8 escaped (a NUL must not cut the output), tabs as one space, and only
@@ -189,6 +207,37 @@ const char* formatOf(DiagKind kind) {
   return kKinds[static_cast<int>(kind)].format;
 }
 
+const char* warningFlag(DiagKind kind) {
+  return kKinds[static_cast<int>(kind)].flag;
+}
+
+std::optional<DiagKind> warningNamed(std::string_view flag) {
+  for (std::size_t i = 0; i < kKinds.size(); ++i) {
+    if (kKinds[i].flag != nullptr && flag == kKinds[i].flag) {
+      return static_cast<DiagKind>(i);
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string_view> warningFlags() {
+  std::vector<std::string_view> flags;
+  for (const KindRow& row : kKinds) {
+    if (row.flag != nullptr) {
+      flags.emplace_back(row.flag);
+    }
+  }
+  return flags;
+}
+
+std::string warningOption(const ShownDiagnostic& shown) {
+  const char* flag = warningFlag(shown.diagnostic->kind);
+  if (flag == nullptr) {
+    return "";
+  }
+  return fmt::format("{}-W{}", shown.fromWarning ? "-Werror," : "", flag);
+}
+
 Diagnostic& DiagnosticEngine::add(DiagKind kind, SourceRange range,
                                   std::string message) {
   Severity sev = severityOf(kind);
@@ -239,8 +288,6 @@ std::string alarmDetail(std::string_view message) {
 
 namespace {
 
-// Under ErrorMode::Alarm: the note that says what the run makes of an
-// error, on one line (the error above shows the source).
 std::string alarmNote(const SourceManager& sm, const ShownDiagnostic& shown,
                       const Style& style) {
   const Diagnostic& d = *shown.diagnostic;
@@ -267,7 +314,8 @@ std::vector<ShownDiagnostic> shownDiagnostics(const DiagnosticEngine& engine,
   for (const Diagnostic& d : engine.diagnostics()) {
     ShownDiagnostic s{&d, d.severity};
     if (d.severity == Severity::Warning) {
-      if (view.warnings == WarningMode::Hide) {
+      if (view.warnings == WarningMode::Hide ||
+          view.disabled.contains(d.kind)) {
         continue;
       }
       s.fromWarning = view.warnings == WarningMode::Error;
@@ -294,8 +342,14 @@ std::vector<ShownDiagnostic> shownDiagnostics(const DiagnosticEngine& engine,
 
 int shownErrorCount(const DiagnosticEngine& engine,
                     const DiagnosticView& view) {
+  if (view.warnings != WarningMode::Error) {
+    return engine.errorCount();
+  }
+  const std::vector<ShownDiagnostic> shown = shownDiagnostics(engine, view);
   return engine.errorCount() +
-         (view.warnings == WarningMode::Error ? engine.warningCount() : 0);
+         static_cast<int>(std::count_if(
+             shown.begin(), shown.end(),
+             [](const ShownDiagnostic& s) { return s.fromWarning; }));
 }
 
 std::string renderDiagnostics(const DiagnosticEngine& engine,
@@ -312,7 +366,8 @@ std::string renderDiagnostics(const DiagnosticEngine& engine,
                  : fmt::format("mbc: error: {}\n", d.message);
       continue;
     }
-    renderOne(sm, d, shown.severity, shown.fromWarning ? " [-Werror]" : "",
+    const std::string option = warningOption(shown);
+    renderOne(sm, d, shown.severity, option.empty() ? "" : " [" + option + "]",
               style, out);
     if (shown.alarm != AlarmId::None) {
       out += alarmNote(sm, shown, style);

@@ -9,7 +9,9 @@
 
 #include <deque>
 #include <optional>
+#include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -17,6 +19,7 @@ namespace mbc {
 
 enum class DiagKind {
 #define DIAG(Id, Severity, Alarm, Text) Id,
+#define WARNING(Id, Flag, Text) Id,
 #include "frontend/diagnostic_kinds.def"
 };
 
@@ -50,6 +53,14 @@ const char* severityText(Severity severity);
 /// the run goes on).
 AlarmId runTimeAlarm(DiagKind kind);
 const char* formatOf(DiagKind kind);
+
+/// A warning's flag ("missing-program": -Wno-missing-program hides it),
+/// nullptr for errors and notes.
+const char* warningFlag(DiagKind kind);
+/// The warning a flag names.
+std::optional<DiagKind> warningNamed(std::string_view flag);
+/// Every warning's flag, in the order of diagnostic_kinds.def.
+std::vector<std::string_view> warningFlags();
 
 class DiagnosticEngine {
 public:
@@ -148,6 +159,7 @@ enum class WarningMode {
 struct DiagnosticView {
   ErrorMode errors = ErrorMode::Refuse;
   WarningMode warnings = WarningMode::Show;
+  std::set<DiagKind> disabled; // -Wno-flag: warnings not shown
 };
 
 /// A diagnostic as the reader gets it.
@@ -159,6 +171,11 @@ struct ShownDiagnostic {
   /// (the error is then shown as a warning).
   AlarmId alarm = AlarmId::None;
 };
+
+/// The option that shows a warning, as clang names it after the message:
+/// "-Wflag", or "-Werror,-Wflag" once -Werror made it an error; "" for
+/// errors and notes.
+std::string warningOption(const ShownDiagnostic& shown);
 
 /// The diagnostics to show, in file order (parsing and the semantic checks
 /// report in two passes), "too many errors" last.
@@ -178,7 +195,7 @@ std::string renderDiagnostics(const DiagnosticEngine& engine,
 
 inline std::string renderDiagnostics(const DiagnosticEngine& engine,
                                      ErrorMode mode = ErrorMode::Refuse) {
-  return renderDiagnostics(engine, DiagnosticView{mode, WarningMode::Show});
+  return renderDiagnostics(engine, DiagnosticView{mode, WarningMode::Show, {}});
 }
 
 } // namespace mbc

@@ -5,6 +5,8 @@
 #include <mbc/g_codes.h>
 #include <mbc/sysvars.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -248,7 +250,8 @@ void resolveProgramNames(Unit& unit, DiagnosticEngine& diags) {
     }
     const auto it = numbers.find(name);
     if (it == numbers.end()) {
-      diags.report(DiagKind::ProgramNameNotFound, p.range, name);
+      diags.report(DiagKind::ProgramNotFound, p.range, name,
+                   alarmCode(AlarmId::FileNotFound, 0), "");
       setAlarm(b, AlarmId::FileNotFound, name);
       return;
     }

@@ -37,7 +37,7 @@ def from_json(stderr):
 
     def add(d):
         locs = d["locations"]
-        msg = d["message"] + (" [-Werror]" if d.get("option") else "")
+        msg = d["message"] + (f" [{d['option']}]" if d.get("option") else "")
         if locs:
             c = locs[0]["caret"]
             out.append((c["file"], c["line"], c["column"], d["kind"], msg))
@@ -78,8 +78,8 @@ def from_sarif(stderr, cwd):
     for r in run_["results"]:
         assert rules[r["ruleIndex"]]["id"] == r["ruleId"]
         assert r["level"] in ("error", "warning", "note", "none")
-        msg = r["message"]["text"] + (
-            " [-Werror]" if r.get("properties", {}).get("option") else "")
+        option = r.get("properties", {}).get("option")
+        msg = r["message"]["text"] + (f" [{option}]" if option else "")
         places = [(loc, r["level"], msg) for loc in r.get("locations", [])]
         if not places:
             out.append(("", 0, 0, r["level"], msg))

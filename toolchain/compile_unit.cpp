@@ -129,7 +129,7 @@ bool loadUnit(const std::vector<std::string>& files, const LoadOptions& load,
     return false;
   }
   const DiagnosticOutput& output = load.diagnostics;
-  const DiagnosticView view{load.errors, output.warnings};
+  const DiagnosticView view{load.errors, output.warnings, output.disabled};
   const bool text = output.format == DiagnosticFormat::Text;
   std::fputs(text ? renderDiagnostics(diags, view, output.color).c_str()
              : output.format == DiagnosticFormat::Json

@@ -131,8 +131,8 @@ std::string diagnosticsJson(const DiagnosticEngine& engine,
       continue;
     }
     json one = gccDiagnostic(sm, d, shown.severity);
-    if (shown.fromWarning) {
-      one["option"] = "-Werror";
+    if (const std::string option = warningOption(shown); !option.empty()) {
+      one["option"] = option;
     }
     if (shown.alarm != AlarmId::None) {
       one["alarm"] = alarmCode(shown.alarm, 0);
@@ -193,8 +193,8 @@ std::string diagnosticsSarif(const DiagnosticEngine& engine,
       result["fixes"] = fixes;
     }
     json properties = json::object();
-    if (shown.fromWarning) {
-      properties["option"] = "-Werror";
+    if (const std::string option = warningOption(shown); !option.empty()) {
+      properties["option"] = option;
     }
     if (shown.alarm != AlarmId::None) {
       properties["alarm"] = alarmCode(shown.alarm, 0);

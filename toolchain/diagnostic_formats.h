@@ -4,6 +4,7 @@
 
 #include "frontend/diagnostics.h"
 
+#include <set>
 #include <string>
 
 namespace mbc::toolchain {
@@ -16,12 +17,14 @@ struct DiagnosticOutput {
   DiagnosticFormat format = DiagnosticFormat::Text;
   bool color = false;
   WarningMode warnings = WarningMode::Show;
+  std::set<DiagKind> disabled; // -Wno-flag
 };
 
 /// One line: a JSON array with an object per diagnostic: "kind" (error,
 /// warning, note), "code" (the kind's name), "message", "locations" (caret
 /// and finish: file, line, column), "children" (its notes), "fixits"
-/// (start, next, string) and, under ErrorMode::Alarm, "alarm".
+/// (start, next, string), for a warning "option" (-Wflag, or
+/// -Werror,-Wflag) and, under ErrorMode::Alarm, "alarm".
 std::string diagnosticsJson(const DiagnosticEngine& engine,
                             const DiagnosticView& view);
 
