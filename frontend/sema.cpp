@@ -1,6 +1,7 @@
 // Semantic checks (see sema.h).
 #include "frontend/sema.h"
 
+#include "frontend/called_programs.h"
 #include <mbc/addresses.h>
 #include <mbc/g_codes.h>
 #include <mbc/sysvars.h>
@@ -270,6 +271,44 @@ void resolveProgramNames(Unit& unit, DiagnosticEngine& diags) {
   }
 }
 
+/// A call of a program number that no input and no file of the search path
+/// defines raises PS0076 when its block runs: said here, where the text is.
+void warnMissingNumbers(const Unit& unit, DiagnosticEngine& diags) {
+  std::set<int> defined;
+  for (const Program& p : unit.programs) {
+    defined.insert(p.number);
+  }
+  for (const Program& p : unit.programs) {
+    for (const Block& b : p.blocks) {
+      const std::optional<ProgramCall> call = programCallOf(b.stmt);
+      if (!call || call->programs.front().number < 0 ||
+          std::any_of(call->programs.begin(), call->programs.end(),
+                      [&](const CalledProgram& c) {
+                        return defined.contains(c.number);
+                      })) {
+        continue;
+      }
+      std::string names;
+      for (const CalledProgram& c : call->programs) {
+        names += (names.empty() ? "" : " or ") + c.name;
+      }
+      // A number of five digits or more is no program on a machine of
+      // 4-digit numbers (program_number_digits), which the text cannot
+      // know; M98 P without L calls its low digits there instead.
+      const int number = call->programs.front().number;
+      const bool longNumber =
+          call->programs.size() == 1 && number > kMaxProgramNumber4Digits;
+      diags.report(
+          DiagKind::ProgramNotFound, call->range, names,
+          alarmCode(AlarmId::ProgramNotFound, 0),
+          longNumber ? fmt::format("; {} on a machine with 4-digit "
+                                   "program numbers",
+                                   alarmCode(AlarmId::IllegalProgramNumber, 0))
+                     : "");
+    }
+  }
+}
+
 } // namespace
 
 int findSequence(const Program& program, int seq, int from) {
@@ -343,6 +382,7 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
   // number, and so do the calls.
   std::erase_if(unit.programs, [](const Program& p) { return p.duplicate; });
   resolveProgramNames(unit, diags);
+  warnMissingNumbers(unit, diags);
   for (Program& p : unit.programs) {
     matchLoops(p, diags);
     checkSequences(p, diags);

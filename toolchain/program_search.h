@@ -5,6 +5,7 @@
 #pragma once
 
 #include "frontend/ast.h"
+#include "frontend/called_programs.h"
 
 #include <optional>
 #include <set>
@@ -13,18 +14,8 @@
 
 namespace mbc::toolchain {
 
-/// A program a call names: by O number, or by name (`number` -1).
-struct CalledProgram {
-  int number = -1;
-  std::string name; // "O1234" or "<DRILL>"
-
-  auto operator<=>(const CalledProgram&) const = default;
-};
-
 /// The programs the unit calls with a constant P or a name (G65, G66,
-/// G66.1, M98, M198) and does not define. An M98 P of more than four digits
-/// without L also names its low four digits, the program a 4-digit control
-/// calls.
+/// G66.1, M98, M198: programCallOf) and does not define.
 std::set<CalledProgram> missingCalledPrograms(const Unit& unit);
 
 /// The first file in `dirs` named for the program: O1234.nc, o1234.nc,
