@@ -4,11 +4,13 @@
 #include "frontend/called_programs.h"
 #include <mbc/addresses.h>
 #include <mbc/g_codes.h>
+#include <mbc/limits.h>
 #include <mbc/sysvars.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -309,6 +311,54 @@ void warnMissingNumbers(const Unit& unit, DiagnosticEngine& diags) {
   }
 }
 
+/// Two arguments of one G65 or G66 call that set the same local: the later
+/// one wins (spec §5.4), so the earlier value never reaches the macro. It
+/// happens when specifications I and II mix (G65 P1000 I1. I2. D3.: the
+/// second I and D are both #7) or when a letter is repeated.
+void warnOverwrittenArguments(const std::vector<const Word*>& args,
+                              DiagnosticEngine& diags) {
+  std::array<const Word*, kLocalCount + 1> setter{};
+  IjkSets sets;
+  for (const Word* w : args) {
+    const bool ijk = w->letter >= 'I' && w->letter <= 'K';
+    const int local =
+        ijk ? sets.next(w->letter - 'I') : argumentLocal(w->letter);
+    if (local <= 0 || local > kLocalCount) {
+      continue;
+    }
+    if (const Word* earlier = setter[static_cast<std::size_t>(local)]) {
+      diags.report(DiagKind::ArgumentOverwritten, earlier->range,
+                   addressText(earlier->letter), local, addressText(w->letter));
+      diags.note(DiagKind::ArgumentSetAgain, w->range, addressText(w->letter),
+                 local, ijk && local > 6 ? "II" : "I");
+    }
+    setter[static_cast<std::size_t>(local)] = w;
+  }
+}
+
+/// The arguments of a G65 (its words) or of a G66 (the words but G, P, L).
+void checkCallArguments(const Stmt& s, DiagnosticEngine& diags) {
+  std::vector<const Word*> args;
+  if (s.kind == StmtKind::MacroCall) {
+    for (const Word& w : s.words) {
+      args.push_back(&w);
+    }
+  } else if (s.kind == StmtKind::Nc &&
+             std::any_of(s.words.begin(), s.words.end(), [](const Word& w) {
+               return w.letter == 'G' && w.value->kind == ExprKind::Number &&
+                      w.value->number == 66;
+             })) {
+    for (const Word& w : s.words) {
+      if (w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
+        args.push_back(&w);
+      }
+    }
+  }
+  if (args.size() > 1) {
+    warnOverwrittenArguments(args, diags);
+  }
+}
+
 } // namespace
 
 int findSequence(const Program& program, int seq, int from) {
@@ -390,6 +440,7 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
     for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
       Stmt& s = p.blocks[i].stmt;
       checkStatementVariables(s, reported, diags);
+      checkCallArguments(s, diags);
       if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
         resolveGoto(p, i, diags);
       } else if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {

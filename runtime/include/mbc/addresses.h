@@ -64,6 +64,25 @@ constexpr int argumentLocal(char letter) {
   return letter >= 'A' && letter <= 'Z' ? kLocal[letter - 'A'] : 0;
 }
 
+inline constexpr int kMaxIjkSets = 10;
+
+/// Specification II (spec §5.3): the locals of the I, J, K arguments of one
+/// call, word by word. A repeated letter, or one out of I-J-K order, starts
+/// the next set.
+struct IjkSets {
+  int set = 0;
+  int last = -1;
+
+  /// The local for I (0), J (1) or K (2); 0 beyond ten sets.
+  constexpr int next(int member) {
+    if (set == 0 || member <= last) {
+      ++set;
+    }
+    last = member;
+    return set > kMaxIjkSets ? 0 : 4 + 3 * (set - 1) + member;
+  }
+};
+
 /// The program number a call's P names, rounded half away from zero as the
 /// control rounds addresses; none when no program can have it (PS0076).
 inline std::optional<int> calledProgramNumber(double p) {

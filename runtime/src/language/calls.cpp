@@ -15,24 +15,6 @@ namespace mbc::rt {
 
 namespace {
 
-constexpr int kMaxIjkSets = 10;
-
-/// Tracks the I/J/K sets of specification II: a letter that does not follow
-/// I -> J -> K order within the current set starts the next one.
-struct IjkSets {
-  int set = 0;
-  int last = -1;
-
-  /// The local for I (0), J (1) or K (2); 0 beyond ten sets.
-  int next(int member) {
-    if (set == 0 || member <= last) {
-      ++set;
-    }
-    last = member;
-    return set > kMaxIjkSets ? 0 : 4 + 3 * (set - 1) + member;
-  }
-};
-
 bool scalesLiteral(const mbrt_ctx& ctx, char letter) {
   return ctx.movedAxisOf(letter) >= 0 || letter == 'I' || letter == 'J' ||
          letter == 'K' || letter == 'R' || letter == 'Q';
