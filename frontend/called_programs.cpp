@@ -4,6 +4,8 @@
 #include <mbc/addresses.h>
 #include <mbc/calling_codes.h>
 
+#include <algorithm>
+
 namespace mbc {
 
 namespace {
@@ -91,6 +93,37 @@ std::optional<ProgramCall> programCallOf(const Stmt& s) {
                   : std::nullopt;
   }
   return s.kind == StmtKind::Nc ? calledByWords(s.words) : std::nullopt;
+}
+
+std::vector<const Word*> callArguments(const Stmt& s) {
+  std::vector<const Word*> args;
+  if (s.kind == StmtKind::MacroCall) {
+    for (const Word& w : s.words) {
+      args.push_back(&w);
+    }
+  } else if (s.kind == StmtKind::Nc &&
+             std::any_of(s.words.begin(), s.words.end(), [](const Word& w) {
+               return w.letter == 'G' && w.value->kind == ExprKind::Number &&
+                      w.value->number == 66;
+             })) {
+    for (const Word& w : s.words) {
+      if (w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
+        args.push_back(&w);
+      }
+    }
+  }
+  return args;
+}
+
+std::vector<int> argumentLocals(const std::vector<const Word*>& args) {
+  std::vector<int> locals;
+  IjkSets sets;
+  for (const Word* w : args) {
+    const bool ijk = w->letter >= 'I' && w->letter <= 'K';
+    locals.push_back(ijk ? sets.next(w->letter - 'I')
+                         : argumentLocal(w->letter));
+  }
+  return locals;
 }
 
 } // namespace mbc

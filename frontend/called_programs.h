@@ -6,6 +6,7 @@
 #include "frontend/ast.h"
 
 #include <compare>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,14 @@ struct ProgramCall {
 
 /// The block's call of a constant program or a name, if it makes one.
 std::optional<ProgramCall> programCallOf(const Stmt& s);
+
+/// The argument words of a G65 (its words) or a G66 (its words but G, P
+/// and L); none for other statements.
+std::vector<const Word*> callArguments(const Stmt& s);
+
+/// The local each argument sets, in specification I or, for I, J and K,
+/// in the sets of specification II (spec §5.2-5.4); 0 for a letter that is
+/// no argument or an eleventh set.
+std::vector<int> argumentLocals(const std::vector<const Word*>& args);
 
 } // namespace mbc

@@ -315,47 +315,24 @@ void warnMissingNumbers(const Unit& unit, DiagnosticEngine& diags) {
 /// one wins (spec §5.4), so the earlier value never reaches the macro. It
 /// happens when specifications I and II mix (G65 P1000 I1. I2. D3.: the
 /// second I and D are both #7) or when a letter is repeated.
-void warnOverwrittenArguments(const std::vector<const Word*>& args,
-                              DiagnosticEngine& diags) {
+void checkCallArguments(const Stmt& s, DiagnosticEngine& diags) {
+  const std::vector<const Word*> args = callArguments(s);
+  const std::vector<int> locals = argumentLocals(args);
   std::array<const Word*, kLocalCount + 1> setter{};
-  IjkSets sets;
-  for (const Word* w : args) {
-    const bool ijk = w->letter >= 'I' && w->letter <= 'K';
-    const int local =
-        ijk ? sets.next(w->letter - 'I') : argumentLocal(w->letter);
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Word* w = args[i];
+    const int local = locals[i];
     if (local <= 0 || local > kLocalCount) {
       continue;
     }
     if (const Word* earlier = setter[static_cast<std::size_t>(local)]) {
+      const bool ijk = w->letter >= 'I' && w->letter <= 'K';
       diags.report(DiagKind::ArgumentOverwritten, earlier->range,
                    addressText(earlier->letter), local, addressText(w->letter));
       diags.note(DiagKind::ArgumentSetAgain, w->range, addressText(w->letter),
                  local, ijk && local > 6 ? "II" : "I");
     }
     setter[static_cast<std::size_t>(local)] = w;
-  }
-}
-
-/// The arguments of a G65 (its words) or of a G66 (the words but G, P, L).
-void checkCallArguments(const Stmt& s, DiagnosticEngine& diags) {
-  std::vector<const Word*> args;
-  if (s.kind == StmtKind::MacroCall) {
-    for (const Word& w : s.words) {
-      args.push_back(&w);
-    }
-  } else if (s.kind == StmtKind::Nc &&
-             std::any_of(s.words.begin(), s.words.end(), [](const Word& w) {
-               return w.letter == 'G' && w.value->kind == ExprKind::Number &&
-                      w.value->number == 66;
-             })) {
-    for (const Word& w : s.words) {
-      if (w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
-        args.push_back(&w);
-      }
-    }
-  }
-  if (args.size() > 1) {
-    warnOverwrittenArguments(args, diags);
   }
 }
 

@@ -50,6 +50,13 @@ const Function* subprogramCalled(const Module& module, const Function& f,
   return callee;
 }
 
+/// Marks #n in `locals` when n is a local's number.
+void mark(std::bitset<kLocals>& locals, double n) {
+  if (n >= 1 && n <= kLocals) {
+    locals.set(static_cast<std::size_t>(n - 1));
+  }
+}
+
 void collect(const Module& module, const Function& f, ArgumentsRead& read,
              std::set<const Function*>& seen) {
   if (!seen.insert(&f).second) {
@@ -57,19 +64,24 @@ void collect(const Module& module, const Function& f, ArgumentsRead& read,
   }
   for (const Inst& inst : f.insts) {
     switch (inst.op) {
-      case Op::LdVar: {
-        const std::int64_t n = inst.get<VarNumber>().number;
-        if (n >= 1 && n <= kLocals) {
-          read.locals.set(static_cast<std::size_t>(n - 1));
-        }
+      case Op::LdVar:
+        mark(read.locals, static_cast<double>(inst.get<VarNumber>().number));
         break;
-      }
       case Op::LdInd:
       case Op::Adp:
         read.computed = read.computed || !constant(f, inst.ops[0]);
-        if (const std::optional<double> n = constant(f, inst.ops[0]);
-            n && *n >= 1 && *n <= kLocals) {
-          read.locals.set(static_cast<std::size_t>(*n - 1));
+        if (const std::optional<double> n = constant(f, inst.ops[0])) {
+          mark(read.locals, *n);
+        }
+        break;
+      case Op::StVar:
+        mark(read.written, static_cast<double>(inst.get<VarNumber>().number));
+        break;
+      case Op::StInd:
+        if (const std::optional<double> n = constant(f, inst.ops[0])) {
+          mark(read.written, *n);
+        } else {
+          read.computedWrite = true;
         }
         break;
       case Op::Nc:

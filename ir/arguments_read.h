@@ -15,6 +15,11 @@ struct ArgumentsRead {
   // It may also read locals by a computed number (#[...], ADP[#[...]]),
   // or it calls a subprogram by a computed P: no list can be sure.
   bool computed = false;
+  // The locals it writes (#n = ...), and whether it may write others by a
+  // computed number (#[...] = ...): a local read and never written can
+  // only be an argument.
+  std::bitset<33> written;
+  bool computedWrite = false;
 };
 
 ArgumentsRead argumentsRead(const Module& module, const Function& f);

@@ -13,6 +13,7 @@
 #include <set>
 #include <utility>
 
+#include "toolchain/call_checks.h"
 #include "toolchain/program_search.h"
 
 namespace mbc::toolchain {
@@ -117,6 +118,9 @@ bool parseInputs(const std::vector<SourceText>& texts,
   checkUnit(
       out.unit, diags,
       SemaOptions{load.defaultMachine, load.latheSystem, load.checkWarnings});
+  if (load.checkWarnings && diags.totalErrors() == 0) {
+    checkCallsAgainstCallees(out, diags);
+  }
   return true;
 }
 
