@@ -401,9 +401,14 @@ void Parser::parseWords(Stmt& s) {
   }
   // Letters whose literal is no length in this block: G04's X (ms), a
   // cycle's K (repeats), G51's I J K (scale factors), the switches of
-  // G05.1 and G05.4 (Q1, R level); G68's R is an angle.
+  // G05.1 and G05.4 (Q1, R level), M98's Q (a sequence number); G68's R is
+  // an angle.
   WordUnits units;
   for (const Word& w : s.words) {
+    if (w.letter == 'M' && w.value->kind == ExprKind::Number &&
+        isSubprogramCall('M', w.value->number)) {
+      units.notLengths += 'Q';
+    }
     if (w.letter != 'G' || w.value->kind != ExprKind::Number) {
       continue;
     }
