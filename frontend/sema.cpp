@@ -2,6 +2,7 @@
 #include "frontend/sema.h"
 
 #include "frontend/called_programs.h"
+#include "frontend/flow_check.h"
 #include <mbc/addresses.h>
 #include <mbc/g_codes.h>
 #include <mbc/limits.h>
@@ -427,6 +428,9 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
         noteTypeTwo(p, i, options.latheSystem, diags);
       }
     }
+  }
+  if (options.reviewNotes) {
+    warnUnreachableBlocks(unit, diags);
   }
 }
 

@@ -1,0 +1,200 @@
+// Blocks no path reaches (see flow_check.h).
+#include "frontend/flow_check.h"
+
+#include <mbc/calling_codes.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mbc {
+
+namespace {
+
+/// The whole value of a literal word of the block, if it has one.
+std::optional<int> literal(const Stmt& s, char letter) {
+  for (const Word& w : s.words) {
+    if (w.letter == letter && w.value->kind == ExprKind::Number) {
+      return static_cast<int>(std::lround(w.value->number));
+    }
+  }
+  return std::nullopt;
+}
+
+bool hasCode(const Stmt& s, char letter, int code) {
+  for (const Word& w : s.words) {
+    if (w.letter == letter && w.value->kind == ExprKind::Number &&
+        w.value->number == code) {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// What ends the flow at a block (M30, M02, M99), or "" when it goes on.
+std::string flowEnd(const Stmt& s) {
+  if (s.kind != StmtKind::Nc) {
+    return "";
+  }
+  for (const int code : {30, 2, 99}) {
+    if (hasCode(s, 'M', code)) {
+      return fmt::format("M{:02}", code);
+    }
+  }
+  return "";
+}
+
+bool computedGoto(const Stmt& s) {
+  return (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) &&
+         !s.gotoBlock;
+}
+
+/// The labels other code may jump to: M99 P (a return to the caller's
+/// block, or a jump in a main program), M98 Q (a subprogram at a label of
+/// the same program), and every label when a GOTO is computed.
+struct Entries {
+  std::set<int> labels;
+  bool everyLabel = false;
+};
+
+Entries entriesOf(const Unit& unit) {
+  Entries entries;
+  for (const Program& p : unit.programs) {
+    for (const Block& b : p.blocks) {
+      const Stmt& s = b.stmt;
+      entries.everyLabel = entries.everyLabel || computedGoto(s);
+      if (s.kind != StmtKind::Nc) {
+        continue;
+      }
+      if (hasCode(s, 'M', 99)) {
+        if (const std::optional<int> label = literal(s, 'P')) {
+          entries.labels.insert(*label);
+        } else if (std::any_of(s.words.begin(), s.words.end(),
+                               [](const Word& w) { return w.letter == 'P'; })) {
+          entries.everyLabel = true;
+        }
+      }
+      if (hasCode(s, 'M', 98)) {
+        if (const std::optional<int> label = literal(s, 'Q')) {
+          entries.labels.insert(*label);
+        }
+      }
+    }
+  }
+  return entries;
+}
+
+int labelled(const Program& p, int label) {
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+    if (p.blocks[i].seq == label && !p.blocks[i].stmt.parameterData) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+/// A lathe's shape cycle (G70-G73 P ns Q nf) runs the blocks ns to nf
+/// however the flow goes around them.
+void markShapes(const Program& p, std::vector<int>& work) {
+  for (const Block& b : p.blocks) {
+    const Stmt& s = b.stmt;
+    if (s.kind != StmtKind::Nc ||
+        !(hasCode(s, 'G', 70) || hasCode(s, 'G', 71) || hasCode(s, 'G', 72) ||
+          hasCode(s, 'G', 73))) {
+      continue;
+    }
+    const std::optional<int> ns = literal(s, 'P');
+    const std::optional<int> nf = literal(s, 'Q');
+    const int first = ns ? labelled(p, *ns) : -1;
+    const int last = nf ? labelled(p, *nf) : -1;
+    for (int i = first; first >= 0 && i <= last; ++i) {
+      work.push_back(i);
+    }
+  }
+}
+
+bool reported(const Stmt& s) {
+  return s.kind != StmtKind::Empty && s.kind != StmtKind::End;
+}
+
+void checkProgram(const Program& p, const Entries& entries,
+                  DiagnosticEngine& diags) {
+  const int n = static_cast<int>(p.blocks.size());
+  std::vector<bool> reached(p.blocks.size(), false);
+  std::vector<int> work{0};
+  for (int i = 0; i < n; ++i) {
+    const int seq = p.blocks[i].seq;
+    if (seq >= 0 && !p.blocks[i].stmt.parameterData &&
+        (entries.everyLabel || entries.labels.contains(seq))) {
+      work.push_back(i);
+    }
+  }
+  markShapes(p, work);
+  while (!work.empty()) {
+    const int i = work.back();
+    work.pop_back();
+    if (i < 0 || i >= n || reached[i]) {
+      continue;
+    }
+    reached[i] = true;
+    const Block& b = p.blocks[i];
+    const Stmt& s = b.stmt;
+    // A block the skip switch may leave out goes on to the next either way.
+    bool next = b.skipLevel != 0 || flowEnd(s).empty();
+    if (s.kind == StmtKind::Goto && s.gotoBlock) {
+      work.push_back(*s.gotoBlock);
+      next = b.skipLevel != 0;
+    } else if (s.kind == StmtKind::IfGoto && s.gotoBlock) {
+      work.push_back(*s.gotoBlock);
+    } else if (s.kind == StmtKind::While && s.match >= 0 && s.cond) {
+      work.push_back(s.match + 1); // the condition fails
+    } else if (s.kind == StmtKind::End && s.match >= 0) {
+      work.push_back(s.match); // back to the WHILE, which may leave
+      next = false;
+    }
+    if (next) {
+      work.push_back(i + 1);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const Block& b = p.blocks[i];
+    // An END alone is the loop's bracket, not work that is lost (DO2 ...
+    // GOTO 20 ... END2 leaves its loop by the GOTO).
+    if (reached[i] || !reported(b.stmt) ||
+        (i > 0 && !reached[i - 1] && reported(p.blocks[i - 1].stmt))) {
+      continue;
+    }
+    // The first block of a run: say where the flow left before it.
+    int before = i - 1;
+    while (before >= 0 && !reached[before]) {
+      --before;
+    }
+    diags.report(DiagKind::UnreachableBlock, b.range, p.name);
+    if (before >= 0) {
+      const Stmt& s = p.blocks[before].stmt;
+      const std::string end = flowEnd(s);
+      diags.note(DiagKind::FlowLeavesHere, p.blocks[before].range,
+                 !end.empty()              ? end
+                 : s.kind == StmtKind::End ? fmt::format("END{}, whose DO{} "
+                                                         "loop has no WHILE",
+                                                         s.loopId, s.loopId)
+                                           : std::string("the GOTO"));
+    }
+  }
+}
+
+} // namespace
+
+void warnUnreachableBlocks(const Unit& unit, DiagnosticEngine& diags) {
+  const Entries entries = entriesOf(unit);
+  for (const Program& p : unit.programs) {
+    checkProgram(p, entries, diags);
+  }
+}
+
+} // namespace mbc
