@@ -2,6 +2,7 @@
 #include "frontend/flow_check.h"
 
 #include <mbc/calling_codes.h>
+#include <mbc/limits.h>
 
 #include <fmt/format.h>
 
@@ -188,12 +189,101 @@ void checkProgram(const Program& p, const Entries& entries,
   }
 }
 
+/// The variables a condition reads, when they are all locals or commons
+/// (which only the program changes); nullopt when it reads a system
+/// variable, a parameter or a variable by a computed number, which may
+/// change by themselves.
+std::optional<std::set<int>> plainVariables(const Expr& e) {
+  std::set<int> vars;
+  std::vector<const Expr*> work{&e};
+  while (!work.empty()) {
+    const Expr* x = work.back();
+    work.pop_back();
+    if (x->kind == ExprKind::Indirect || x->kind == ExprKind::Parameter ||
+        (x->kind == ExprKind::Var &&
+         !(isLocal(x->var) ||
+           (x->var >= kFirstCommon && x->var <= kLastCommon) ||
+           (x->var >= kFirstNonvolatile && x->var <= kLastNonvolatile)))) {
+      return std::nullopt;
+    }
+    if (x->kind == ExprKind::Var) {
+      vars.insert(x->var);
+    }
+    for (const ExprPtr& arg : x->args) {
+      work.push_back(arg.get());
+    }
+  }
+  return vars;
+}
+
+/// Whether a block of a loop's body may change `vars` or leave the loop
+/// [first, last]: it writes one of them or writes by a computed number, it
+/// calls a program (which may write commons, or the locals of an M98), it
+/// jumps out or ends, or the control could not read it.
+bool mayChangeOrLeave(const Program& p, int i, int first, int last,
+                      const std::set<int>& vars) {
+  const Block& b = p.blocks[i];
+  const Stmt& s = b.stmt;
+  if (b.alarm != AlarmId::None || s.kind == StmtKind::MacroCall) {
+    return true;
+  }
+  if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
+    return s.target.index != nullptr || vars.contains(s.target.number) ||
+           s.target.number == 3000;
+  }
+  if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
+    return !s.gotoBlock || *s.gotoBlock < first || *s.gotoBlock > last;
+  }
+  if (s.kind != StmtKind::Nc) {
+    return false;
+  }
+  // Any code that may call a program (M98, G65, G66, a code a profile
+  // makes call), or ends it.
+  return std::any_of(s.words.begin(), s.words.end(), [](const Word& w) {
+    return w.letter == 'M' || w.letter == 'T' || w.letter == 'S' ||
+           w.letter == 'B' ||
+           (w.letter == 'G' && w.value->kind != ExprKind::Number) ||
+           (w.letter == 'G' && isMacroCall('G', w.value->number));
+  });
+}
+
+/// A WHILE whose condition nothing in the loop can change, and that
+/// nothing leaves: once entered it runs forever.
+void checkLoops(const Program& p, DiagnosticEngine& diags) {
+  for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
+    const Stmt& s = p.blocks[i].stmt;
+    if (s.kind != StmtKind::While || !s.cond || s.match <= i ||
+        p.blocks[i].alarm != AlarmId::None) {
+      continue;
+    }
+    const std::optional<std::set<int>> vars = plainVariables(*s.cond);
+    if (!vars) {
+      continue;
+    }
+    bool changes = false;
+    for (int j = i + 1; j < s.match && !changes; ++j) {
+      changes = mayChangeOrLeave(p, j, i, s.match, *vars);
+    }
+    if (changes) {
+      continue;
+    }
+    std::string names;
+    for (const int v : *vars) {
+      names += fmt::format("{}#{}", names.empty() ? "" : ", ", v);
+    }
+    diags.report(DiagKind::EndlessLoop, s.cond->range, s.loopId,
+                 names.empty() ? std::string("its condition reads nothing")
+                               : "nothing in it changes " + names);
+  }
+}
+
 } // namespace
 
 void warnUnreachableBlocks(const Unit& unit, DiagnosticEngine& diags) {
   const Entries entries = entriesOf(unit);
   for (const Program& p : unit.programs) {
     checkProgram(p, entries, diags);
+    checkLoops(p, diags);
   }
 }
 

@@ -10,7 +10,8 @@ import re
 import subprocess
 import sys
 
-FLAGS = ("unused-argument", "repeat-count-argument", "unreachable-code")
+FLAGS = ("unused-argument", "repeat-count-argument", "unreachable-code",
+         "endless-loop")
 
 root = pathlib.Path(__file__).resolve().parent.parent
 mbc = str(pathlib.Path(sys.argv[1]).resolve())
