@@ -1,6 +1,7 @@
 // Blocks no path reaches (see flow_check.h).
 #include "frontend/flow_check.h"
 
+#include "frontend/sema.h"
 #include <mbc/calling_codes.h>
 #include <mbc/limits.h>
 
@@ -16,16 +17,6 @@
 namespace mbc {
 
 namespace {
-
-/// The whole value of a literal word of the block, if it has one.
-std::optional<int> literal(const Stmt& s, char letter) {
-  for (const Word& w : s.words) {
-    if (w.letter == letter && w.value->kind == ExprKind::Number) {
-      return static_cast<int>(std::lround(w.value->number));
-    }
-  }
-  return std::nullopt;
-}
 
 bool hasCode(const Stmt& s, char letter, int code) {
   for (const Word& w : s.words) {
@@ -73,7 +64,7 @@ Entries entriesOf(const Unit& unit) {
         continue;
       }
       if (hasCode(s, 'M', 99)) {
-        if (const std::optional<int> label = literal(s, 'P')) {
+        if (const std::optional<int> label = literalWord(s.words, 'P')) {
           entries.labels.insert(*label);
         } else if (std::any_of(s.words.begin(), s.words.end(),
                                [](const Word& w) { return w.letter == 'P'; })) {
@@ -81,22 +72,13 @@ Entries entriesOf(const Unit& unit) {
         }
       }
       if (hasCode(s, 'M', 98)) {
-        if (const std::optional<int> label = literal(s, 'Q')) {
+        if (const std::optional<int> label = literalWord(s.words, 'Q')) {
           entries.labels.insert(*label);
         }
       }
     }
   }
   return entries;
-}
-
-int labelled(const Program& p, int label) {
-  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
-    if (p.blocks[i].seq == label && !p.blocks[i].stmt.parameterData) {
-      return static_cast<int>(i);
-    }
-  }
-  return -1;
 }
 
 /// A lathe's shape cycle (G70-G73 P ns Q nf) runs the blocks ns to nf
@@ -109,10 +91,11 @@ void markShapes(const Program& p, std::vector<int>& work) {
           hasCode(s, 'G', 73))) {
       continue;
     }
-    const std::optional<int> ns = literal(s, 'P');
-    const std::optional<int> nf = literal(s, 'Q');
-    const int first = ns ? labelled(p, *ns) : -1;
-    const int last = nf ? labelled(p, *nf) : -1;
+    const std::optional<int> ns = literalWord(s.words, 'P');
+    const std::optional<int> nf = literalWord(s.words, 'Q');
+    // The first block of the label from the top, as the cycle finds it.
+    const int first = ns ? findSequence(p, *ns, -1) : -1;
+    const int last = nf ? findSequence(p, *nf, -1) : -1;
     for (int i = first; first >= 0 && i <= last; ++i) {
       work.push_back(i);
     }

@@ -350,7 +350,6 @@ int findSequence(const Program& program, int seq, int from) {
   return -1;
 }
 
-/// The whole-number literal of `letter` in NC words, if any.
 std::optional<int> literalWord(const std::vector<Word>& words, char letter) {
   for (const Word& w : words) {
     if (w.letter == letter && w.value->kind == ExprKind::Number) {

@@ -6,6 +6,9 @@
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
+#include <optional>
+#include <vector>
+
 namespace mbc {
 
 struct SemaOptions {
@@ -25,5 +28,8 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
 /// the first block with that N after `from`, searching to the end and then
 /// from the top (spec Part A, "GOTO search"); -1 when there is none.
 int findSequence(const Program& program, int seq, int from);
+
+/// The whole-number literal of `letter` in NC words, if any.
+std::optional<int> literalWord(const std::vector<Word>& words, char letter);
 
 } // namespace mbc

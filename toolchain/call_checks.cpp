@@ -18,25 +18,6 @@ namespace {
 /// gap); only a third I J K set's K reaches it.
 constexpr int kRepeatLocal = 12;
 
-/// The number of the program a G65 or G66 calls, when it is a constant (a
-/// call by name has its program's number by now).
-std::optional<int> calledNumber(const Stmt& s) {
-  const Expr* p = nullptr;
-  if (s.kind == StmtKind::MacroCall) {
-    p = s.program.get();
-  } else {
-    for (const Word& w : s.words) {
-      if (w.letter == 'P') {
-        p = w.value.get();
-      }
-    }
-  }
-  if (p == nullptr || p->kind != ExprKind::Number) {
-    return std::nullopt;
-  }
-  return calledProgramNumber(p->number);
-}
-
 /// The L of a G65 or G66, where it is written.
 const SourceRange* repeatRange(const Stmt& s) {
   if (s.kind == StmtKind::MacroCall) {
@@ -54,31 +35,25 @@ const SourceRange* repeatRange(const Stmt& s) {
 
 void checkCallsAgainstCallees(const CompiledUnit& cu, DiagnosticEngine& diags) {
   const ir::Module module = ir::lower(cu.unit, cu.sources);
-  // By the program's number, which a call by name has by now too (the IR
-  // numbers named programs -1: they are found by name).
-  std::map<std::string, const ir::Function*, std::less<>> byName;
+  std::map<std::string, const ir::Function*, std::less<>> functions;
   for (const ir::Function& f : module.functions) {
-    byName.emplace(f.name, &f);
+    functions.emplace(f.name, &f);
   }
-  std::map<int, const ir::Function*> functions;
-  for (const Program& p : cu.unit.programs) {
-    if (const auto f = byName.find(p.name); f != byName.end()) {
-      functions.emplace(p.number, f->second);
-    }
-  }
-  std::map<int, ir::ArgumentsRead> reads;
+  std::map<const ir::Function*, ir::ArgumentsRead> reads;
   for (const Program& program : cu.unit.programs) {
     for (const Block& b : program.blocks) {
       const std::vector<const Word*> args = callArguments(b.stmt);
-      const std::optional<int> number =
+      const std::optional<ProgramCall> call =
           args.empty() && b.stmt.kind != StmtKind::MacroCall
               ? std::nullopt
-              : calledNumber(b.stmt);
-      const auto callee = number ? functions.find(*number) : functions.end();
+              : programCallOf(b.stmt);
+      // A G65 or G66 names one program, by number or name.
+      const auto callee =
+          call ? functions.find(call->programs.front().name) : functions.end();
       if (callee == functions.end()) {
         continue;
       }
-      auto [read, added] = reads.try_emplace(*number);
+      auto [read, added] = reads.try_emplace(callee->second);
       if (added) {
         read->second = ir::argumentsRead(module, *callee->second);
       }
@@ -86,7 +61,7 @@ void checkCallsAgainstCallees(const CompiledUnit& cu, DiagnosticEngine& diags) {
       if (r.computed) {
         continue;
       }
-      const std::string name = callee->second->name;
+      const std::string& name = callee->first;
       const std::vector<int> locals = argumentLocals(args);
       bool setsRepeatLocal = false;
       for (std::size_t i = 0; i < args.size(); ++i) {
