@@ -629,6 +629,21 @@ TEST(RuntimeLatheShapes, Alarms) {
 // R (1 - tan 22.5) = 0.4686 along Z (the handbook's compensation of a 45
 // degree chamfer). With tip 0 the nose centre is the control point: the
 // same path R (0.8 radius, 1.6 of diameter) above and R to the right.
+// A run that ends while a shape cycle reads its shape program (the host
+// stopped before nf) leaves nothing behind: the next run's moves are made,
+// not read into a shape (RunControl::shapeCycle starts at 0).
+TEST(RuntimeLatheShapes, ANewRunReadsNoShape) {
+  Machine m(kLathe);
+  blocks(m, {"G00 X60. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0.4 W0.1 F0.2",
+             "N10 G00 X30."});
+  const size_t before = m.motions().size();
+  mbrt_start(m.ctx(), "O1001");
+  ASSERT_EQ(m.block("G00 X50. Z5."), 0);
+  ASSERT_EQ(m.motions().size(), before + 1);
+  EXPECT_EQ(m.motions().back().end[0], 50.0);
+  EXPECT_EQ(m.motions().back().end[1], 5.0);
+}
+
 TEST(RuntimeLatheNoseRadius, ChamferWithTheTipDirection) {
   const char* profile = R"({"series": "T", "tool_offsets": {
       "1": {"r_geometry": 0.6, "r_wear": 0.2, "tip": 3}}})";
