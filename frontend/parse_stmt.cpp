@@ -5,6 +5,7 @@
 #include <mbc/alarm.h>
 #include <mbc/calling_codes.h>
 #include <mbc/g_codes.h>
+#include <mbc/limits.h>
 
 #include <algorithm>
 #include <cmath>
@@ -561,10 +562,11 @@ void Parser::finishMacroCall(Stmt& s) {
 namespace {
 
 /// "P2" for P2.: the fix-it of a whole number written with a point, when
-/// the point is all that is wrong.
+/// the point is all that is wrong (not beyond any number a call looks up,
+/// which no integer type need hold).
 void addWholeNumberFix(Diagnostic& d, const Word& w) {
   const double value = w.value->number;
-  if (value == std::trunc(value)) {
+  if (value == std::trunc(value) && std::fabs(value) <= kMaxCallNumber) {
     d.fixIts.push_back({w.range, fmt::format("{}{}", w.letter,
                                              static_cast<long long>(value))});
   }
