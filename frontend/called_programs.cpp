@@ -5,6 +5,7 @@
 #include <mbc/calling_codes.h>
 
 #include <algorithm>
+#include <set>
 
 namespace mbc {
 
@@ -124,6 +125,31 @@ std::vector<int> argumentLocals(const std::vector<const Word*>& args) {
                          : argumentLocal(w->letter));
   }
   return locals;
+}
+
+std::vector<bool> mainPrograms(const Unit& unit) {
+  std::set<std::string, std::less<>> called;
+  for (const Program& p : unit.programs) {
+    for (const Block& b : p.blocks) {
+      if (const std::optional<ProgramCall> call = programCallOf(b.stmt)) {
+        for (const CalledProgram& callee : call->programs) {
+          called.insert(callee.name);
+        }
+      }
+    }
+  }
+  std::vector<bool> main;
+  for (const Program& p : unit.programs) {
+    const bool ends =
+        std::any_of(p.blocks.begin(), p.blocks.end(), [](const Block& b) {
+          return b.stmt.kind == StmtKind::Nc &&
+                 hasCode(b.stmt.words, [](char letter, double value) {
+                   return letter == 'M' && (value == 2 || value == 30);
+                 });
+        });
+    main.push_back(!called.contains(p.name) && (p.number < 0 || ends));
+  }
+  return main;
 }
 
 } // namespace mbc

@@ -41,4 +41,9 @@ std::vector<const Word*> callArguments(const Stmt& s);
 /// no argument or an eleventh set.
 std::vector<int> argumentLocals(const std::vector<const Word*>& args);
 
+/// Per program of the unit, whether it is a main program: no program of
+/// the unit calls it by a constant P or name, and it is written to end the
+/// run (it has an M02 or M30) or has no O number.
+std::vector<bool> mainPrograms(const Unit& unit);
+
 } // namespace mbc

@@ -1,6 +1,8 @@
 // Blocks no path reaches (see flow_check.h).
 #include "frontend/flow_check.h"
 
+#include "frontend/called_programs.h"
+#include "frontend/flow_graph.h"
 #include "frontend/sema.h"
 #include <mbc/calling_codes.h>
 #include <mbc/limits.h>
@@ -18,107 +20,48 @@ namespace mbc {
 
 namespace {
 
-bool hasCode(const Stmt& s, char letter, int code) {
-  for (const Word& w : s.words) {
-    if (w.letter == letter && w.value->kind == ExprKind::Number &&
-        w.value->number == code) {
-      return true;
-    }
-  }
-  return false;
-}
-
-/// What ends the flow at a block (M30, M02, M99), or "" when it goes on.
-std::string flowEnd(const Stmt& s) {
-  if (s.kind != StmtKind::Nc) {
-    return "";
-  }
-  for (const int code : {30, 2, 99}) {
-    if (hasCode(s, 'M', code)) {
-      return fmt::format("M{:02}", code);
-    }
-  }
-  return "";
-}
-
-bool computedGoto(const Stmt& s) {
-  return (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) &&
-         !s.gotoBlock;
-}
-
-/// The labels other code may jump to: M99 P (a return to the caller's
-/// block, or a jump in a main program), M98 Q (a subprogram at a label of
-/// the same program), and every label when a GOTO is computed.
-struct Entries {
-  std::set<int> labels;
-  bool everyLabel = false;
-};
-
-Entries entriesOf(const Unit& unit) {
-  Entries entries;
-  for (const Program& p : unit.programs) {
-    for (const Block& b : p.blocks) {
-      const Stmt& s = b.stmt;
-      entries.everyLabel = entries.everyLabel || computedGoto(s);
-      if (s.kind != StmtKind::Nc) {
-        continue;
-      }
-      if (hasCode(s, 'M', 99)) {
-        if (const std::optional<int> label = literalWord(s.words, 'P')) {
-          entries.labels.insert(*label);
-        } else if (std::any_of(s.words.begin(), s.words.end(),
-                               [](const Word& w) { return w.letter == 'P'; })) {
-          entries.everyLabel = true;
-        }
-      }
-      if (hasCode(s, 'M', 98)) {
-        if (const std::optional<int> label = literalWord(s.words, 'Q')) {
-          entries.labels.insert(*label);
-        }
-      }
-    }
-  }
-  return entries;
-}
-
-/// A lathe's shape cycle (G70-G73 P ns Q nf) runs the blocks ns to nf
-/// however the flow goes around them.
-void markShapes(const Program& p, std::vector<int>& work) {
-  for (const Block& b : p.blocks) {
-    const Stmt& s = b.stmt;
-    if (s.kind != StmtKind::Nc ||
-        !(hasCode(s, 'G', 70) || hasCode(s, 'G', 71) || hasCode(s, 'G', 72) ||
-          hasCode(s, 'G', 73))) {
-      continue;
-    }
-    const std::optional<int> ns = literalWord(s.words, 'P');
-    const std::optional<int> nf = literalWord(s.words, 'Q');
-    // The first block of the label from the top, as the cycle finds it.
-    const int first = ns ? findSequence(p, *ns, -1) : -1;
-    const int last = nf ? findSequence(p, *nf, -1) : -1;
-    for (int i = first; first >= 0 && i <= last; ++i) {
-      work.push_back(i);
-    }
-  }
-}
-
+/// Whether a block that never runs is work lost. An END alone is its
+/// loop's bracket (DO2 ... GOTO 20 ... END2 leaves its loop by the GOTO),
+/// and an M99 or M30 alone after an alarm or a jump is the program's end,
+/// written for the reader.
 bool reported(const Stmt& s) {
-  return s.kind != StmtKind::Empty && s.kind != StmtKind::End;
+  const bool endAlone =
+      !flowEnd(s).empty() &&
+      std::all_of(s.words.begin(), s.words.end(), [](const Word& w) {
+        return w.letter == 'M' || w.letter == 'N';
+      });
+  return s.kind != StmtKind::Empty && s.kind != StmtKind::End && !endAlone;
 }
 
-void checkProgram(const Program& p, const Entries& entries,
-                  DiagnosticEngine& diags) {
+bool hasP(const Stmt& s) {
+  return std::any_of(s.words.begin(), s.words.end(),
+                     [](const Word& w) { return w.letter == 'P'; });
+}
+
+/// Where an M99 P of a main program goes: its label, or with a computed P
+/// any label.
+void mainJumps(const Program& p, int i, std::vector<int>& work) {
+  const Stmt& s = p.blocks[i].stmt;
+  if (flowEnd(s) != "M99" || !hasP(s)) {
+    return;
+  }
+  if (const std::optional<int> label = literalWord(s.words, 'P')) {
+    work.push_back(findSequence(p, *label, i));
+    return;
+  }
+  for (int j = 0; j < static_cast<int>(p.blocks.size()); ++j) {
+    if (p.blocks[j].seq >= 0) {
+      work.push_back(j);
+    }
+  }
+}
+
+/// The blocks a path from `starts` reaches; in a main program, M99 P
+/// jumps too.
+std::vector<bool> reachedBlocks(const Program& p, std::vector<int> work,
+                                bool main = false) {
   const int n = static_cast<int>(p.blocks.size());
   std::vector<bool> reached(p.blocks.size(), false);
-  std::vector<int> work{0};
-  for (int i = 0; i < n; ++i) {
-    const int seq = p.blocks[i].seq;
-    if (seq >= 0 && !p.blocks[i].stmt.parameterData &&
-        (entries.everyLabel || entries.labels.contains(seq))) {
-      work.push_back(i);
-    }
-  }
-  markShapes(p, work);
   while (!work.empty()) {
     const int i = work.back();
     work.pop_back();
@@ -126,29 +69,26 @@ void checkProgram(const Program& p, const Entries& entries,
       continue;
     }
     reached[i] = true;
-    const Block& b = p.blocks[i];
-    const Stmt& s = b.stmt;
-    // A block the skip switch may leave out goes on to the next either way.
-    bool next = b.skipLevel != 0 || flowEnd(s).empty();
-    if (s.kind == StmtKind::Goto && s.gotoBlock) {
-      work.push_back(*s.gotoBlock);
-      next = b.skipLevel != 0;
-    } else if (s.kind == StmtKind::IfGoto && s.gotoBlock) {
-      work.push_back(*s.gotoBlock);
-    } else if (s.kind == StmtKind::While && s.match >= 0 && s.cond) {
-      work.push_back(s.match + 1); // the condition fails
-    } else if (s.kind == StmtKind::End && s.match >= 0) {
-      work.push_back(s.match); // back to the WHILE, which may leave
-      next = false;
+    for (const FlowEdge& edge : successors(p, i)) {
+      work.push_back(edge.to);
     }
-    if (next) {
-      work.push_back(i + 1);
+    if (main) {
+      mainJumps(p, i, work);
     }
   }
+  return reached;
+}
+
+void checkProgram(const Program& p, const std::vector<bool>& reached,
+                  DiagnosticEngine& diags) {
+  // Where a block is in error, where its flow goes is not known.
+  if (std::any_of(p.blocks.begin(), p.blocks.end(),
+                  [](const Block& b) { return b.alarm != AlarmId::None; })) {
+    return;
+  }
+  const int n = static_cast<int>(p.blocks.size());
   for (int i = 0; i < n; ++i) {
     const Block& b = p.blocks[i];
-    // An END alone is the loop's bracket, not work that is lost (DO2 ...
-    // GOTO 20 ... END2 leaves its loop by the GOTO).
     if (reached[i] || !reported(b.stmt) ||
         (i > 0 && !reached[i - 1] && reported(p.blocks[i - 1].stmt))) {
       continue;
@@ -260,12 +200,45 @@ void checkLoops(const Program& p, DiagnosticEngine& diags) {
   }
 }
 
+/// An M99 a main program that ends with M02 or M30 reaches from its top
+/// (not as the end of a subprogram an M98 Q runs): on the control it runs
+/// the program again from its top.
+void checkMainReturn(const Program& p, DiagnosticEngine& diags) {
+  const auto end =
+      std::find_if(p.blocks.begin(), p.blocks.end(), [](const Block& b) {
+        const std::string e = flowEnd(b.stmt);
+        return e == "M30" || e == "M02";
+      });
+  if (end == p.blocks.end()) {
+    return;
+  }
+  const std::vector<bool> reached = reachedBlocks(p, {0}, true);
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+    const Block& b = p.blocks[i];
+    // /M99 is the operator's end of a repeating program; M99 P jumps.
+    if (!reached[i] || b.skipLevel != 0 || flowEnd(b.stmt) != "M99" ||
+        hasP(b.stmt)) {
+      continue;
+    }
+    diags.report(DiagKind::MainProgramReturn, b.range, p.name);
+    diags.note(DiagKind::MainProgramEnd, end->range, p.name,
+               flowEnd(end->stmt));
+  }
+}
+
 } // namespace
 
-void warnUnreachableBlocks(const Unit& unit, DiagnosticEngine& diags) {
-  const Entries entries = entriesOf(unit);
-  for (const Program& p : unit.programs) {
-    checkProgram(p, entries, diags);
+void warnFlow(const Unit& unit, DiagnosticEngine& diags) {
+  const FlowEntries entries = flowEntriesOf(unit);
+  const std::vector<bool> main = mainPrograms(unit);
+  for (std::size_t i = 0; i < unit.programs.size(); ++i) {
+    const Program& p = unit.programs[i];
+    std::vector<int> starts = enteredBlocks(p, entries);
+    starts.push_back(0);
+    checkProgram(p, reachedBlocks(p, std::move(starts)), diags);
+    if (main[i]) {
+      checkMainReturn(p, diags);
+    }
     checkLoops(p, diags);
   }
 }

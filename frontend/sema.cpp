@@ -429,7 +429,7 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
     }
   }
   if (options.reviewNotes) {
-    warnUnreachableBlocks(unit, diags);
+    warnFlow(unit, diags);
   }
 }
 

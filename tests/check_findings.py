@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 FLAGS = ("unused-argument", "repeat-count-argument", "unreachable-code",
-         "endless-loop")
+         "endless-loop", "m99-in-main")
 
 root = pathlib.Path(__file__).resolve().parent.parent
 mbc = str(pathlib.Path(sys.argv[1]).resolve())
@@ -24,7 +24,7 @@ for program in programs:
     out = subprocess.run([mbc, "check", program.name], cwd=program.parent,
                          capture_output=True, text=True).stderr
     for line in out.splitlines():
-        flag = re.search(r"\[-W([a-z-]+)\]$", line)
+        flag = re.search(r"\[-W([a-z0-9-]+)\]$", line)
         if flag and flag.group(1) in FLAGS:
             where = program.parent.relative_to(root) / line
             found.append(str(where))
