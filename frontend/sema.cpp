@@ -3,6 +3,7 @@
 
 #include "frontend/called_programs.h"
 #include "frontend/flow_check.h"
+#include "frontend/vacant_check.h"
 #include <mbc/addresses.h>
 #include <mbc/g_codes.h>
 #include <mbc/limits.h>
@@ -430,6 +431,10 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
   }
   if (options.reviewNotes) {
     warnFlow(unit, diags);
+    // Vacancy needs every block read: a block in error says too little.
+    if (diags.totalErrors() == 0) {
+      warnVacantReads(unit, diags);
+    }
   }
 }
 

@@ -11,7 +11,8 @@ import subprocess
 import sys
 
 FLAGS = ("unused-argument", "repeat-count-argument", "unreachable-code",
-         "endless-loop", "m99-in-main")
+         "endless-loop", "vacant-address", "maybe-vacant-address",
+         "unpassed-argument", "m99-in-main")
 
 root = pathlib.Path(__file__).resolve().parent.parent
 mbc = str(pathlib.Path(sys.argv[1]).resolve())
