@@ -9,9 +9,12 @@
 #include "ir/passes/ranges.h"
 
 #include "ir/cfg.h"
+#include "ir/passes/pass_util.h"
 #include <mbc/arith.h>
+#include <mbc/limits.h>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <unordered_map>
 
@@ -65,11 +68,20 @@ Range multiply(const Range& a, const Range& b) {
                *std::max_element(std::begin(p), std::end(p))};
 }
 
+// IEEE division is monotone in each operand on either side of a zero
+// divisor, so the quotients of the bounds bound every quotient.
 Range divide(const Range& a, const Range& b) {
   if (b.lo <= 0 && b.hi >= 0) {
     return Range{}; // the divisor may be 0 (an alarm) or near it
   }
-  return multiply(a, Range{1 / b.hi, 1 / b.lo}); // rounding: see outward
+  double q[] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+  for (double x : q) {
+    if (std::isnan(x)) {
+      return Range{};
+    }
+  }
+  return Range{*std::min_element(std::begin(q), std::end(q)),
+               *std::max_element(std::begin(q), std::end(q))};
 }
 
 Range builtin(Builtin fn, const Range& a) {
@@ -142,13 +154,17 @@ RelOp negated(RelOp op) {
 
 class Analysis {
 public:
-  explicit Analysis(const Function& f)
+  Analysis(const Function& f, const std::vector<std::optional<Range>>& entry)
       : f_(f), cfg_(buildCfg(f)), ranges_(f.insts.size(), kEmpty),
-        growths_(f.insts.size(), 0) {}
+        growths_(f.insts.size(), 0) {
+    findEntryLoads(entry);
+  }
 
   std::vector<Range> run();
+  std::vector<bool> reachable() const;
 
 private:
+  void findEntryLoads(const std::vector<std::optional<Range>>& entry);
   void numberDominatorTree();
 
   bool dominates(BlockId a, BlockId b) const {
@@ -161,7 +177,7 @@ private:
   Range bound(RelOp op, ValueId other) const;
   Range operand(ValueId v, BlockId use) const;
   Range phiInput(ValueId v, BlockId pred, BlockId phiBlock) const;
-  Range transfer(const Inst& inst) const;
+  Range transfer(ValueId id, const Inst& inst) const;
   bool sweep(bool narrowing);
 
   const Function& f_;
@@ -170,7 +186,97 @@ private:
   std::unordered_map<ValueId, std::vector<Constraint>> constraints_;
   std::vector<Range> ranges_;
   std::vector<int> growths_;
+  std::unordered_map<ValueId, Range> entryLoads_;
 };
+
+// The loads of a local that nothing may have written yet on any path from
+// the entry read its value at the start. A store writes its local; an
+// indirect store, and a block that may call a subprogram (which shares the
+// locals), may write any.
+void Analysis::findEntryLoads(const std::vector<std::optional<Range>>& entry) {
+  if (entry.empty() || f_.blocks.empty()) {
+    return;
+  }
+  using Written = std::bitset<kLocalCount>;
+  const auto write = [&](const Inst& inst, Written& w) {
+    if (inst.op == Op::StVar) {
+      const std::int64_t n = varNumberOf(inst);
+      if (n >= 1 && n <= kLocalCount) {
+        w.set(static_cast<std::size_t>(n - 1));
+      }
+    } else if (inst.op == Op::StInd ||
+               (inst.op == Op::Nc && ncMayShareFrame(f_, inst))) {
+      w.set();
+    }
+  };
+  std::vector<Written> out(f_.blocks.size());
+  const auto in = [&](BlockId b) {
+    Written w;
+    for (BlockId p : cfg_.preds[b]) {
+      w |= out[p];
+    }
+    return w;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (BlockId b : cfg_.rpo) {
+      Written w = in(b);
+      for (ValueId id : f_.blocks[b].insts) {
+        write(f_.insts[id], w);
+      }
+      if (w != out[b]) {
+        out[b] = w;
+        changed = true;
+      }
+    }
+  }
+  for (BlockId b : cfg_.rpo) {
+    Written w = in(b);
+    for (ValueId id : f_.blocks[b].insts) {
+      const Inst& inst = f_.insts[id];
+      const std::int64_t n = inst.op == Op::LdVar ? varNumberOf(inst) : 0;
+      if (n >= 1 && n <= static_cast<std::int64_t>(entry.size()) &&
+          !w.test(static_cast<std::size_t>(n - 1)) &&
+          entry[static_cast<std::size_t>(n - 1)]) {
+        entryLoads_.emplace(id, *entry[static_cast<std::size_t>(n - 1)]);
+      }
+      write(inst, w);
+    }
+  }
+}
+
+// A block no run reaches: a condition that dominates it cannot hold, or
+// every way in comes from such blocks.
+std::vector<bool> Analysis::reachable() const {
+  const std::size_t n = f_.blocks.size();
+  std::vector<bool> dead(n, false);
+  for (const auto& [value, list] : constraints_) {
+    for (const Constraint& c : list) {
+      const Range o = ranges_[c.other];
+      if (isEmpty(o) || !isEmpty(meet(ranges_[value], bound(c.op, c.other)))) {
+        continue;
+      }
+      for (BlockId b : cfg_.rpo) {
+        dead[b] = dead[b] || dominates(c.block, b);
+      }
+    }
+  }
+  std::vector<bool> reach(n, false);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (BlockId b : cfg_.rpo) {
+      bool in = b == 0;
+      for (BlockId p : cfg_.preds[b]) {
+        in = in || reach[p];
+      }
+      if (in && !dead[b] && !reach[b]) {
+        reach[b] = true;
+        changed = true;
+      }
+    }
+  }
+  return reach;
+}
 
 // Pre- and post-order numbers of the dominator tree, for O(1) dominance.
 void Analysis::numberDominatorTree() {
@@ -237,8 +343,8 @@ void Analysis::comparisons(ValueId cond, bool sense, Each each) const {
   }
 }
 
-// A block entered only from a condbr (its single predecessor) is guarded by
-// the condition's truth on that edge.
+// A block entered only from a condbr (its single reachable predecessor) is
+// guarded by the condition's truth on that edge.
 void Analysis::collectConstraints() {
   for (BlockId b : cfg_.rpo) {
     const Inst& term = f_.insts[f_.blocks[b].insts.back()];
@@ -247,7 +353,10 @@ void Analysis::collectConstraints() {
     }
     for (int t = 0; t < 2; ++t) {
       BlockId s = term.targets[t];
-      if (cfg_.preds[s].size() != 1) {
+      // The only way in that a run can take (a block no path from the
+      // entry reaches never runs).
+      if (std::count_if(cfg_.preds[s].begin(), cfg_.preds[s].end(),
+                        [&](BlockId p) { return cfg_.reachable(p); }) != 1) {
         continue;
       }
       comparisons(term.ops[0], t == 0, [&](ValueId v, RelOp op, ValueId other) {
@@ -263,11 +372,14 @@ Range Analysis::bound(RelOp op, ValueId other) const {
   if (isEmpty(o)) {
     return Range{}; // not computed yet: no information
   }
+  // A double below (above) a bound is at most the double next to it.
   switch (op) {
     case RelOp::Lt:
+      return Range{-kInf, std::nextafter(o.hi, -kInf)};
     case RelOp::Le:
       return Range{-kInf, o.hi};
     case RelOp::Gt:
+      return Range{std::nextafter(o.lo, kInf), kInf};
     case RelOp::Ge:
       return Range{o.lo, kInf};
     case RelOp::Eq:
@@ -306,7 +418,7 @@ Range Analysis::phiInput(ValueId v, BlockId pred, BlockId phiBlock) const {
   return r;
 }
 
-Range Analysis::transfer(const Inst& inst) const {
+Range Analysis::transfer(ValueId id, const Inst& inst) const {
   if (inst.op == Op::Phi) {
     Range r = kEmpty;
     for (std::size_t i = 0; i < inst.ops.size(); ++i) {
@@ -320,6 +432,10 @@ Range Analysis::transfer(const Inst& inst) const {
   }
   if (inst.op == Op::Vacant) {
     return Range{0, 0};
+  }
+  if (inst.op == Op::LdVar) {
+    const auto known = entryLoads_.find(id);
+    return known == entryLoads_.end() ? Range{} : known->second;
   }
   Range a = inst.ops.empty() ? Range{} : operand(inst.ops[0], inst.block);
   Range b = inst.ops.size() < 2 ? Range{} : operand(inst.ops[1], inst.block);
@@ -348,7 +464,7 @@ Range Analysis::transfer(const Inst& inst) const {
     case BinOp::Mul:
       return multiply(a, b);
     case BinOp::Div:
-      return outward(divide(a, b));
+      return divide(a, b);
     case BinOp::Mod:
     case BinOp::And:
     case BinOp::Or:
@@ -364,7 +480,7 @@ bool Analysis::sweep(bool narrowing) {
   for (BlockId b : cfg_.rpo) {
     for (ValueId id : f_.blocks[b].insts) {
       const Inst& inst = f_.insts[id];
-      Range now = transfer(inst);
+      Range now = transfer(id, inst);
       Range& old = ranges_[id];
       if (inst.op == Op::Phi && !isEmpty(old)) {
         if (narrowing) {
@@ -405,10 +521,19 @@ std::vector<Range> Analysis::run() {
 } // namespace
 
 std::vector<Range> valueRanges(const Function& f) {
+  return analyseRanges(f, {}).values;
+}
+
+RangeFacts analyseRanges(const Function& f,
+                         const std::vector<std::optional<Range>>& entry) {
   if (f.blocks.empty()) {
-    return std::vector<Range>(f.insts.size(), Range{});
+    return {std::vector<Range>(f.insts.size(), Range{}), {}};
   }
-  return Analysis(f).run();
+  Analysis analysis(f, entry);
+  RangeFacts facts;
+  facts.values = analysis.run();
+  facts.reachable = analysis.reachable();
+  return facts;
 }
 
 } // namespace mbc::ir

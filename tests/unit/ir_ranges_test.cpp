@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "ir_test_support.h"
@@ -42,9 +43,11 @@ b3:
   ret
 }
 )mbir");
-  EXPECT_EQ(r[2], (Range{0, 4})); // 0, and 3 + 1 after the last round
-  EXPECT_EQ(r[7], (Range{10, 13}));
-  EXPECT_EQ(r[6], (Range{1, 4}));
+  // In the body the counter is below 3: at most the double below 3.
+  const double below3 = std::nextafter(3.0, 0.0);
+  EXPECT_EQ(r[2], (Range{0, below3 + 1})); // 0, and that + 1 after a round
+  EXPECT_EQ(r[7], (Range{10, below3 + 10}));
+  EXPECT_EQ(r[6], (Range{1, below3 + 1}));
 }
 
 TEST(IrRanges, UnknownValuesAndDivisionByAPossibleZero) {
@@ -121,6 +124,48 @@ b2:
 )mbir");
   EXPECT_EQ(r[2], (Range{1, kInf}));
   EXPECT_EQ(r[4], (Range{2, kInf}));
+}
+
+RangeFacts factsOf(std::string_view text,
+                   const std::vector<std::optional<Range>>& entry) {
+  Module m = parseText(text);
+  return analyseRanges(m.functions.at(0), entry);
+}
+
+// IF [#24 GE 0] ... ELSE N900 with X in 0..20: N900 is never reached, though
+// a block no path reaches also jumps there; 10 - #24 spans the zero.
+TEST(IrRanges, EntryRangesDecideWhichBlocksRunsReach) {
+  const char* text = R"mbir(func @O9040 "" {
+b0:
+  %1 = ldvar #24
+  %5 = const 10
+  %2 = tonum %1
+  %3 = const 0
+  %4 = ge %2, %3
+  condbr %4, b1, b2
+b1:
+  %6 = sub %5, %2
+  ret
+b2:
+  %7 = const 1
+  stvar #3000, %7
+  ret
+b3:
+  br b2
+}
+)mbir";
+  std::vector<std::optional<Range>> entry(33, Range{0, 0});
+  entry[23] = Range{0, 20};
+  RangeFacts facts = factsOf(text, entry);
+  EXPECT_EQ(facts.values[6], (Range{-10, 10}));
+  EXPECT_TRUE(facts.reachable[1]);
+  EXPECT_FALSE(facts.reachable[2]);
+  EXPECT_FALSE(facts.reachable[3]);
+  // Below zero is possible once the range allows it.
+  entry[23] = Range{-1, 20};
+  EXPECT_TRUE(factsOf(text, entry).reachable[2]);
+  // With nothing known, the load is every number.
+  EXPECT_TRUE(factsOf(text, {}).reachable[2]);
 }
 
 } // namespace
