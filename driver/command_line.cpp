@@ -13,9 +13,12 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <string_view>
 #include <unistd.h>
 
 #include "runner/help_formatter.h"
@@ -348,6 +351,27 @@ void defineBatch(CLI::App& app, Reader& r) {
   addRunningOptions(*cmd, r, runner::RunOutputs::None);
 }
 
+/// `X=0..20` or `R=5`: a letter and the range of its value.
+std::optional<toolchain::ArgumentRange> argumentRange(std::string_view text) {
+  if (text.size() < 3 || text[1] != '=') {
+    return std::nullopt;
+  }
+  toolchain::ArgumentRange range;
+  range.letter =
+      static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  const std::string_view value = text.substr(2);
+  const std::size_t dots = value.find("..");
+  if (range.letter < 'A' || range.letter > 'Z' ||
+      !runner::parseNumber(value.substr(0, dots), range.lo) ||
+      !runner::parseNumber(
+          dots == std::string_view::npos ? value : value.substr(dots + 2),
+          range.hi) ||
+      range.lo > range.hi) {
+    return std::nullopt;
+  }
+  return range;
+}
+
 void defineCheck(CLI::App& app, Reader& r) {
   CLI::App* cmd = app.add_subcommand(
       "check", "Report the errors and warnings of a program, run nothing");
@@ -357,6 +381,33 @@ void defineCheck(CLI::App& app, Reader& r) {
       r.error,
       [&r](const std::string& v) { return stored(r.o.run.machinePath, v); })
       ->group("Input");
+  const std::string group = "Alarms over argument ranges";
+  runner::addValueOption(
+      *cmd, "--main", "O1234|<NAME>",
+      "the program the ranges are for (default: the first one in the input)",
+      r.error,
+      [&r](const std::string& v) { return stored(r.o.run.mainProgram, v); })
+      ->group(group);
+  runner::addValueOption(
+      *cmd, "--arg", "X=LO..HI",
+      "a G65 argument of the main program and the range of its value (or "
+      "one value, X=5); the blocks that may alarm over the ranges are "
+      "reported (repeatable)",
+      r.error,
+      [&r](const std::string& v) {
+        const std::optional<toolchain::ArgumentRange> range = argumentRange(v);
+        if (!range) {
+          return fmt::format(
+              "--arg expects LETTER=LO..HI or LETTER=VALUE, got '{}'", v);
+        }
+        r.o.argRanges.push_back(*range);
+        return std::string();
+      })
+      ->group(group);
+  addFlag(*cmd, "--prove", r.o.prove,
+          "exit 0 only when the range analysis shows that no block can raise "
+          "an alarm it decides (docs/check.md)",
+          group);
 }
 
 void defineEmitIr(CLI::App& app, Reader& r) {

@@ -56,7 +56,22 @@ int dispatch(int argc, char** argv) {
           (static_cast<long>(mbrt_parameter(machine.get(), 3401)) & 1) != 0;
     }
     load.checkWarnings = true;
-    return mbc::toolchain::loadUnit(options->files, load, cu) ? 0 : 1;
+    if (!mbc::toolchain::loadUnit(options->files, load, cu)) {
+      return 1;
+    }
+    if (options->prove) {
+      // The verdict after the findings, as the last line.
+      if (cu.blocksThatMayAlarm > 0) {
+        std::fprintf(stderr, "mbc: not proved: %d block%s may raise an alarm\n",
+                     cu.blocksThatMayAlarm,
+                     cu.blocksThatMayAlarm == 1 ? "" : "s");
+        return 1;
+      }
+      std::fputs("mbc: proved: no block can raise an alarm the range "
+                 "analysis decides\n",
+                 stderr);
+    }
+    return 0;
   }
   return runCommand(*options);
 }

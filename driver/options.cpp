@@ -11,6 +11,10 @@ toolchain::LoadOptions loadOptions(const Options& o) {
   load.errors = o.strict.value_or(!runs) ? ErrorMode::Refuse : ErrorMode::Alarm;
   load.includeDirs = o.includeDirs;
   load.diagnostics = o.diagnostics;
+  if (o.command == "check" && (o.prove || !o.argRanges.empty())) {
+    load.alarmRanges =
+        toolchain::AlarmRangeRequest{o.run.mainProgram, o.argRanges};
+  }
   return load;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "runner/run_options.h"
+#include "toolchain/argument_ranges.h"
 #include "toolchain/compile_unit.h"
 #include "toolchain/engine.h"
 #include "toolchain/request.h"
@@ -48,6 +49,9 @@ struct Options {
   std::vector<std::string> includeDirs; // -I DIR: where called programs are
   toolchain::DiagnosticOutput
       diagnostics; // --diagnostics-format, --color, -w, -Werror
+  // check --arg X=0..20 and --prove: the range analysis of alarms
+  std::vector<toolchain::ArgumentRange> argRanges;
+  bool prove = false;
 };
 
 /// How the commands read their input (compile_unit.h). Errors in the input:

@@ -120,9 +120,7 @@ std::vector<int> argumentLocals(const std::vector<const Word*>& args) {
   std::vector<int> locals;
   IjkSets sets;
   for (const Word* w : args) {
-    const bool ijk = w->letter >= 'I' && w->letter <= 'K';
-    locals.push_back(ijk ? sets.next(w->letter - 'I')
-                         : argumentLocal(w->letter));
+    locals.push_back(nextArgumentLocal(w->letter, sets));
   }
   return locals;
 }

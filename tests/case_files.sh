@@ -15,7 +15,7 @@ for suite in programs diag seeds; do
     case=${file%%.*}
     extension=${file#"$case"}
     case $extension in
-      .nc | .check | .status | .stderr | .args | .dprnt | .toolpath.jsonl | \
+      .nc | .check | .check-args | .status | .stderr | .args | .dprnt | .toolpath.jsonl | \
         .vars.json | .machine.json | .flat.args | .flat.machine.json) ;;
       *)
         echo "tests/$suite/$file: not a file of a golden case (NAME.nc, NAME.check, ...)"

@@ -11,6 +11,7 @@ import sys
 root = pathlib.Path(__file__).resolve().parent.parent
 table = (root / "frontend" / "diagnostic_kinds.def").read_text()
 kinds = re.findall(r'^DIAG\((\w+), \w+, \w+, "(.*)"\)$', table, re.M)
+kinds += re.findall(r'^WARNING\((\w+), "[^"]*", "(.*)"\)$', table, re.M)
 expected = "".join(
     path.read_text(errors="replace")
     for pattern in ("*.check", "*.stderr")

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The same diagnostics in every format: for each program of tests/diag,
-`mbc check` as text, as JSON and as SARIF 2.1.0 (with and without -Werror)
+`mbc check` (with the options of its NAME.check-args) as text, as JSON and
+as SARIF 2.1.0 (with and without -Werror)
 must name the same diagnostics (file, line, column, severity, message, in
 order, notes after their diagnostic) and the same fix-its, and the SARIF
 log must have the structure the SARIF 2.1.0 specification requires of what
@@ -105,7 +106,11 @@ def main():
     programs = sorted(p for p in os.listdir(diag_dir) if p.endswith(".nc"))
     failures = 0
     for name in programs:
-        for extra in ([], ["-Werror"]):
+        # NAME.check-args: the case's own options (run_case.sh).
+        args_path = os.path.join(diag_dir, name[:-3] + ".check-args")
+        own = (open(args_path).read().split()
+               if os.path.exists(args_path) else [])
+        for extra in (own, [*own, "-Werror"]):
             status, text = run(mbc, diag_dir, [name, *extra])
             expected = from_text(text)
             s_json, j = run(mbc, diag_dir,

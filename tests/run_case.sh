@@ -7,6 +7,7 @@
 #                 expected outputs of `mbc run`
 # CASE.check      expected standard error of `mbc check` (its exit status is
 #                 CASE.status) -- for programs that must be diagnosed
+# CASE.check-args extra `mbc check` arguments, one per line (optional)
 # MBC_ENGINE=interp|ir|jit|aot picks the engine (default: mbc's, jit; aot:
 # an executable made by `mbc build`, run with the same options): the
 # expected outputs are the same files, since every engine must give
@@ -44,7 +45,11 @@ compare() { # expected actual label
 }
 
 if [ -f "$name.check" ]; then
-  "$mbc" check "$name.nc" 2>"$work/check" >/dev/null
+  check_args=()
+  if [ -f "$name.check-args" ]; then
+    mapfile -t check_args < <(grep -v '^[[:space:]]*$' "$name.check-args")
+  fi
+  "$mbc" check "$name.nc" "${check_args[@]}" 2>"$work/check" >/dev/null
   status=$?
   compare "$name.check" "$work/check" "check diagnostics"
 else

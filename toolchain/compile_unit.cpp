@@ -13,6 +13,7 @@
 #include <set>
 #include <utility>
 
+#include "toolchain/alarm_ranges.h"
 #include "toolchain/call_checks.h"
 #include "toolchain/program_search.h"
 
@@ -120,6 +121,11 @@ bool parseInputs(const std::vector<SourceText>& texts,
       SemaOptions{load.defaultMachine, load.latheSystem, load.checkWarnings});
   if (load.checkWarnings && diags.totalErrors() == 0) {
     checkCallsAgainstCallees(out, diags);
+    if (load.alarmRanges) {
+      out.blocksThatMayAlarm =
+          checkAlarmRanges(out, *load.alarmRanges, diags, failure);
+      return out.blocksThatMayAlarm >= 0;
+    }
   }
   return true;
 }

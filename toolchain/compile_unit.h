@@ -6,9 +6,11 @@
 #include "frontend/diagnostics.h"
 #include "frontend/source.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "toolchain/argument_ranges.h"
 #include "toolchain/diagnostic_formats.h"
 
 namespace mbc::toolchain {
@@ -16,6 +18,9 @@ namespace mbc::toolchain {
 struct CompiledUnit {
   SourceManager sources;
   Unit unit;
+  // mbc check --arg/--prove: the blocks the range analysis finds may
+  // alarm (-1 when it could not run).
+  int blocksThatMayAlarm = 0;
 };
 
 /// How loadUnit reads the input.
@@ -31,6 +36,8 @@ struct LoadOptions {
   ErrorMode errors = ErrorMode::Refuse;
   std::vector<std::string> includeDirs; // -I: more places to find programs
   DiagnosticOutput diagnostics;
+  // mbc check --arg/--prove: the main program and its argument ranges.
+  std::optional<AlarmRangeRequest> alarmRanges;
 };
 
 /// An input given as text rather than a file (the Python package's

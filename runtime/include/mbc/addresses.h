@@ -83,6 +83,14 @@ struct IjkSets {
   }
 };
 
+/// The local the next argument word of a call sets: I, J and K by the
+/// sets of specification II, the other letters by specification I; 0 for
+/// a letter that is no argument or an eleventh set.
+constexpr int nextArgumentLocal(char letter, IjkSets& sets) {
+  return letter >= 'I' && letter <= 'K' ? sets.next(letter - 'I')
+                                        : argumentLocal(letter);
+}
+
 /// The program number a call's P names, rounded half away from zero as the
 /// control rounds addresses; none when no program can have it (PS0076).
 inline std::optional<int> calledProgramNumber(double p) {
