@@ -9,6 +9,7 @@
 #include <mbc/engine.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <set>
 
@@ -19,9 +20,11 @@ namespace {
 class FunctionLowering {
 public:
   FunctionLowering(const Program& program, Module& module, Function& fn,
-                   const LowerOptions& options, bool startsAtSequence)
+                   const LowerOptions& options, bool startsAtSequence,
+                   bool returnsToSequence)
       : program_(program), module_(module), fn_(fn), options_(options),
-        startsAtSequence_(startsAtSequence) {}
+        startsAtSequence_(startsAtSequence),
+        returnsToSequence_(returnsToSequence) {}
 
   void run();
 
@@ -54,6 +57,7 @@ private:
   Function& fn_;
   const LowerOptions& options_;
   bool startsAtSequence_;      // some M98 Q may enter it (mayStartAtSequence)
+  bool returnsToSequence_;     // some M99 P may return (mayReturnToSequence)
   std::vector<BlockId> heads_; // head block of each source block, + exit
   BlockId cur_ = 0;
   std::uint32_t line_ = 0;
@@ -284,10 +288,10 @@ void FunctionLowering::addSequenceTable(SequenceCases& cases,
 // A call or an NC block goes on with the next block, or, when the callee
 // leaves by M99 P, at the landing that switches on the sequence number: one
 // table per program rather than one per call keeps the IR linear in the
-// number of calls and N numbers.
+// number of calls and N numbers (and none when no M99 P is in the unit).
 void FunctionLowering::resumeAfter(ValueId flow, int index) {
   std::vector<BlockId> targets{head(index + 1)};
-  if (!sequences_.empty()) {
+  if (!sequences_.empty() && returnsToSequence_) {
     targets.push_back(landing(index));
   }
   bool landing = targets.size() == 2;
@@ -476,23 +480,24 @@ bool isLiteral(const Word& w, double value) {
          w.value->kind == ExprKind::Number && w.value->number == value;
 }
 
-// Only an M98 or M198 block with Q starts a program at a sequence number.
-// Where the unit has none, no program needs the start's case table, whose
-// edges into every N would cost the optimiser what it knows there. Calls
-// reach only the programs of their own unit, so the answer is exact; an M
-// code computed at run time (M#1 Q5) counts as a call.
-bool mayStartAtSequence(const Unit& unit) {
+// Whether some NC block of the unit has an M code that may be one of
+// `codes` (an M code computed at run time may be any) and a word `letter`.
+// Calls reach only the programs of their own unit, so the answer is exact.
+bool someBlockMayBe(const Unit& unit, std::initializer_list<double> codes,
+                    char letter) {
+  const auto mayBe = [&](const Word& w) {
+    return w.letter == 'M' &&
+           (w.kind == mbc::WordKind::Value ||
+            std::any_of(codes.begin(), codes.end(),
+                        [&](double code) { return isLiteral(w, code); }));
+  };
+  const auto has = [&](const Word& w) { return w.letter == letter; };
   for (const Program& p : unit.programs) {
     for (const mbc::Block& b : p.blocks) {
       const std::vector<Word>& words = b.stmt.words;
-      const auto hasQ = [](const Word& w) { return w.letter == 'Q'; };
-      const auto mayCall = [](const Word& w) {
-        return w.letter == 'M' && (w.kind == mbc::WordKind::Value ||
-                                   isLiteral(w, 98) || isLiteral(w, 198));
-      };
       if (b.stmt.kind == StmtKind::Nc &&
-          std::any_of(words.begin(), words.end(), hasQ) &&
-          std::any_of(words.begin(), words.end(), mayCall)) {
+          std::any_of(words.begin(), words.end(), has) &&
+          std::any_of(words.begin(), words.end(), mayBe)) {
         return true;
       }
     }
@@ -500,11 +505,27 @@ bool mayStartAtSequence(const Unit& unit) {
   return false;
 }
 
+// Only an M98 or M198 block with Q starts a program at a sequence number.
+// Where the unit has none, no program needs the start's case table, whose
+// edges into every N would cost the optimiser what it knows there.
+bool mayStartAtSequence(const Unit& unit) {
+  return someBlockMayBe(unit, {98, 198}, 'Q');
+}
+
+// Only an M99 P comes back at an N of its caller, or jumps to one in a
+// main program. Where the unit has none, no call needs the landing, whose
+// table per calling block grows with the blocks times the N numbers when
+// N numbers repeat (CAM output that numbers each operation from N1).
+bool mayReturnToSequence(const Unit& unit) {
+  return someBlockMayBe(unit, {99}, 'P');
+}
+
 } // namespace
 
 Module lower(const Unit& unit, const SourceManager& sources,
              const LowerOptions& options) {
   const bool startsAtSequence = mayStartAtSequence(unit);
+  const bool returnsToSequence = mayReturnToSequence(unit);
   Module m;
   m.functions.resize(unit.programs.size());
   for (std::size_t i = 0; i < unit.programs.size(); ++i) {
@@ -513,7 +534,8 @@ Module lower(const Unit& unit, const SourceManager& sources,
     fn.name = p.name;
     fn.number = p.number;
     fn.file = sources.name(p.file);
-    FunctionLowering(p, m, fn, options, startsAtSequence).run();
+    FunctionLowering(p, m, fn, options, startsAtSequence, returnsToSequence)
+        .run();
   }
   return m;
 }

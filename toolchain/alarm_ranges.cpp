@@ -99,31 +99,6 @@ const ir::Function* numbered(const ir::Module& m, int number) {
   return nullptr;
 }
 
-/// Whether some block of the module is an M99 P: only then may a call
-/// come back at a label rather than after the calling block.
-bool returnsToLabels(const ir::Module& m) {
-  for (const ir::Function& f : m.functions) {
-    for (const ir::Inst& inst : f.insts) {
-      if (inst.op != ir::Op::Nc) {
-        continue;
-      }
-      bool m99 = false;
-      bool p = false;
-      const auto& words = inst.get<ir::Words>().words;
-      for (std::size_t i = 0; i < words.size(); ++i) {
-        const ir::Inst& value = f.insts[inst.ops[i]];
-        m99 = m99 || (words[i].letter == 'M' && value.op == ir::Op::Const &&
-                      value.get<ir::Number>().value == 99);
-        p = p || words[i].letter == 'P';
-      }
-      if (m99 && p) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 /// The constant code `letter` of an nc, if it has one.
 std::optional<double> codeOf(const ir::Function& f, const ir::Inst& nc,
                              char letter) {
@@ -139,11 +114,9 @@ std::optional<double> codeOf(const ir::Function& f, const ir::Inst& nc,
 
 /// Prunes the ways out of a block that no run takes, for the analysis
 /// alone: a block of M99 (without P), M02 or M30 leaves the program and
-/// never goes on to the next; and when no M99 P can ask, no call comes
-/// back at a label (the landing blocks that switch on its N).
-void dropDeadEdges(ir::Module& module, bool landings) {
+/// never goes on to the next, and #3000 stops the run in its block.
+void dropDeadEdges(ir::Module& module) {
   for (ir::Function& f : module.functions) {
-    // #3000 stops the run in its block.
     for (const ir::Block& block : f.blocks) {
       const bool alarms = std::any_of(
           block.insts.begin(), block.insts.end(), [&](ir::ValueId id) {
@@ -177,9 +150,6 @@ void dropDeadEdges(ir::Module& module, bool landings) {
         inst.op = ir::Op::Ret;
         inst.ops.clear();
         inst.targets.clear();
-      } else if (!landings && inst.get<ir::SequenceCases>().landing) {
-        inst.get<ir::SequenceCases>().landing = false;
-        inst.targets.resize(1);
       }
     }
   }
@@ -515,7 +485,7 @@ int checkAlarmRanges(const CompiledUnit& cu, const AlarmRangeRequest& request,
     failure = "the IR of the input could not be built";
     return -1;
   }
-  dropDeadEdges(module, returnsToLabels(module));
+  dropDeadEdges(module);
   const std::string name = request.mainProgram.empty()
                                ? cu.unit.programs.empty()
                                      ? std::string()

@@ -3,13 +3,16 @@
 ; of the run, an alarm) goes to one block per function that maps mbc.resume's
 ; answer to the status, and an M99 P that cannot come back (no N an M98 can
 ; return to) to one block that raises PS0128. The M98 block's M99 P goes to
-; the landing of N10. (#100 keeps N10 and M30 from being one run of
+; the landing of N10 (O2000's M99 P10 makes the unit need landings at
+; all). (#100 keeps N10 and M30 from being one run of
 ; constant blocks, codegen/constant_block_runs.nc.)
 G00 X1.
 M98 P2000
 N10 G01 X2. F100
 #100 = 1
 M30
+O2000
+M99 P10
 ; CHECK-LABEL: define internal i32 @mbc.body.MAIN(
 ; CHECK: [[R1:%[0-9]+]] = call i32 @mbc.resume(ptr %0, ptr %flow, ptr %2)
 ; CHECK-NEXT: switch i32 [[R1]], label %left [

@@ -26,38 +26,35 @@ M99
 ; CHECK-NEXT: [[V7:%[0-9]+]] = const 2000{{$}}
 ; CHECK-NEXT: [[V8:%[0-9]+]] = const 20{{$}}
 ; CHECK-NEXT: [[V9:%[0-9]+]] = nc M:int [[V6]], P:int [[V7]], Q:int [[V8]]{{$}}
-; CHECK-NEXT: resume [[V9]], b2, b8{{$}}
+; CHECK-NEXT: resume [[V9]], b2 []{{$}}
 ; CHECK-NEXT: b2:{{$}}
 ; CHECK-NEXT: begin 10{{$}}
-; CHECK-NEXT: [[V14:%[0-9]+]] = const 98{{$}}
-; CHECK-NEXT: [[V15:%[0-9]+]] = const 10{{$}}
-; CHECK-NEXT: [[V16:%[0-9]+]] = nc M:int [[V14]], Q:int [[V15]]{{$}}
-; CHECK-NEXT: resume [[V16]], b3, b8{{$}}
+; CHECK-NEXT: [[V12:%[0-9]+]] = const 98{{$}}
+; CHECK-NEXT: [[V13:%[0-9]+]] = const 10{{$}}
+; CHECK-NEXT: [[V14:%[0-9]+]] = nc M:int [[V12]], Q:int [[V13]]{{$}}
+; CHECK-NEXT: resume [[V14]], b3 []{{$}}
 ; CHECK-NEXT: b3:{{$}}
 ; CHECK-NEXT: begin 11{{$}}
-; CHECK-NEXT: [[V19:%[0-9]+]] = const 30{{$}}
-; CHECK-NEXT: [[V20:%[0-9]+]] = nc M:int [[V19]]{{$}}
-; CHECK-NEXT: resume [[V20]], b4, b8{{$}}
+; CHECK-NEXT: [[V17:%[0-9]+]] = const 30{{$}}
+; CHECK-NEXT: [[V18:%[0-9]+]] = nc M:int [[V17]]{{$}}
+; CHECK-NEXT: resume [[V18]], b4 []{{$}}
 ; CHECK-NEXT: b4:{{$}}
 ; CHECK-NEXT: begin 12{{$}}
-; CHECK-NEXT: [[V23:%[0-9]+]] = const 10{{$}}
-; CHECK-NEXT: [[V24:%[0-9]+]] = const 1{{$}}
-; CHECK-NEXT: [[V25:%[0-9]+]] = const 1{{$}}
-; CHECK-NEXT: [[V26:%[0-9]+]] = const 100{{$}}
-; CHECK-NEXT: [[V27:%[0-9]+]] = nc N:int [[V23]], G:int [[V24]], X:dec [[V25]], F:dec [[V26]]{{$}}
-; CHECK-NEXT: resume [[V27]], b5, b8{{$}}
+; CHECK-NEXT: [[V21:%[0-9]+]] = const 10{{$}}
+; CHECK-NEXT: [[V22:%[0-9]+]] = const 1{{$}}
+; CHECK-NEXT: [[V23:%[0-9]+]] = const 1{{$}}
+; CHECK-NEXT: [[V24:%[0-9]+]] = const 100{{$}}
+; CHECK-NEXT: [[V25:%[0-9]+]] = nc N:int [[V21]], G:int [[V22]], X:dec [[V23]], F:dec [[V24]]{{$}}
+; CHECK-NEXT: resume [[V25]], b5 []{{$}}
 ; CHECK-NEXT: b5:{{$}}
 ; CHECK-NEXT: begin 13{{$}}
-; CHECK-NEXT: [[V30:%[0-9]+]] = const 99{{$}}
-; CHECK-NEXT: [[V31:%[0-9]+]] = nc M:int [[V30]]{{$}}
-; CHECK-NEXT: resume [[V31]], b6, b8{{$}}
+; CHECK-NEXT: [[V28:%[0-9]+]] = const 99{{$}}
+; CHECK-NEXT: [[V29:%[0-9]+]] = nc M:int [[V28]]{{$}}
+; CHECK-NEXT: resume [[V29]], b6 []{{$}}
 ; CHECK-NEXT: b6:{{$}}
 ; CHECK-NEXT: ret !13{{$}}
 ; CHECK-NEXT: b7:{{$}}
 ; CHECK-NEXT: switch [[V0]] [10: b4]{{$}}
-; CHECK-NEXT: b8:{{$}}
-; CHECK-NEXT: [[V10:%[0-9]+]] = retseq !9{{$}}
-; CHECK-NEXT: switch [[V10]] [10: b4] !9{{$}}
 ; CHECK-NEXT: }{{$}}
 ; CHECK-LABEL: func @O2000 #2000 "{{.*}}" {
 ; CHECK-NEXT: b0:{{$}}
@@ -71,17 +68,14 @@ M99
 ; CHECK-NEXT: [[V7:%[0-9]+]] = const 0{{$}}
 ; CHECK-NEXT: [[V8:%[0-9]+]] = const 2{{$}}
 ; CHECK-NEXT: [[V9:%[0-9]+]] = nc N:int [[V6]], G:int [[V7]], X:dec [[V8]]{{$}}
-; CHECK-NEXT: resume [[V9]], b2, b5{{$}}
+; CHECK-NEXT: resume [[V9]], b2 []{{$}}
 ; CHECK-NEXT: b2:{{$}}
 ; CHECK-NEXT: begin 16{{$}}
-; CHECK-NEXT: [[V14:%[0-9]+]] = const 99{{$}}
-; CHECK-NEXT: [[V15:%[0-9]+]] = nc M:int [[V14]]{{$}}
-; CHECK-NEXT: resume [[V15]], b3, b5{{$}}
+; CHECK-NEXT: [[V12:%[0-9]+]] = const 99{{$}}
+; CHECK-NEXT: [[V13:%[0-9]+]] = nc M:int [[V12]]{{$}}
+; CHECK-NEXT: resume [[V13]], b3 []{{$}}
 ; CHECK-NEXT: b3:{{$}}
 ; CHECK-NEXT: ret !16{{$}}
 ; CHECK-NEXT: b4:{{$}}
 ; CHECK-NEXT: switch [[V0]] [20: b1]{{$}}
-; CHECK-NEXT: b5:{{$}}
-; CHECK-NEXT: [[V10:%[0-9]+]] = retseq !15{{$}}
-; CHECK-NEXT: switch [[V10]] [20: b1] !15{{$}}
 ; CHECK-NEXT: }{{$}}

@@ -10,12 +10,15 @@
 ; profile), a T, S or B code, or a G code FANUC does not have (a custom G
 ; code, which may be modal as well). Plain motion drops it, unless some
 ; block of the module may start a modal call (G66, a custom G code): then
-; every block may call.
+; every block may call. (O2000's M99 P10 makes the unit need landings at
+; all: lowering/no_landing_without_m99p.nc.)
 N10 G01 X1. F100.
 M06
 T1
 G01 X3. M05
 M30
+O2000
+M99P10
 ; CHECK-LABEL: func @MAIN
 ; CHECK: nc N:int {{.*}}, G:int {{.*}}, X:dec {{.*}}, F:dec
 ; CHECK-NEXT: resume {{%[0-9]+}}, b{{[0-9]+}} []
