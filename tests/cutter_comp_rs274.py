@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from rs274_oracle import rs274
+
 RADIUS = 5.0  # D1 in mbc's offset memory; a 10 mm tool in rs274's table
 
 # Contours: (side, start point, moves); a move is ("G1", x, y) or
@@ -97,8 +99,7 @@ def rs274_moves(folder, program):
     # rs274 reads its tool table in inches.
     table.write_text(f"T1 P1 D{2 * RADIUS / 25.4:.9f} Z0 ;\n")
     out = folder / "canon.txt"
-    subprocess.run(["rs274", "-t", str(table), "-g", str(path), str(out)],
-                   check=True, capture_output=True, stdin=subprocess.DEVNULL)
+    rs274(folder, "-t", table, "-g", path, out)
     moves = []
     for kind, args in CANON.findall(out.read_text()):
         values = [float(v) for v in args.split(",")]

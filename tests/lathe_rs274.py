@@ -17,7 +17,7 @@ import re
 import subprocess
 import sys
 
-from rs274_oracle import collect
+from rs274_oracle import collect, rs274
 
 # One block per row: the FANUC lathe's and LinuxCNC's.
 MOVES = [
@@ -70,8 +70,7 @@ def run_rs274(folder, text):
     program = folder / "lathe.ngc"
     program.write_text(text)
     out = folder / "canon.txt"
-    subprocess.run(["rs274", "-g", str(program), str(out)],
-                   check=True, capture_output=True, stdin=subprocess.DEVNULL)
+    rs274(folder, "-g", program, out)
     moves = []
     for line in out.read_text().splitlines():
         if arc := ARC.search(line):

@@ -17,7 +17,7 @@ import re
 import subprocess
 import sys
 
-from rs274_oracle import collect
+from rs274_oracle import collect, rs274
 
 # One move per row: the FANUC block (in G16) and LinuxCNC's.
 MOVES = [
@@ -53,8 +53,7 @@ def rs274_points(folder):
                        "\n".join(linuxcnc for _, linuxcnc in MOVES) +
                        "\nM2\n")
     out = folder / "canon.txt"
-    subprocess.run(["rs274", "-g", str(program), str(out)],
-                   check=True, capture_output=True, stdin=subprocess.DEVNULL)
+    rs274(folder, "-g", program, out)
     points = [(float(x), float(y))
               for x, y in ENDPOINT.findall(out.read_text())]
     return points[1:]

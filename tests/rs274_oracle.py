@@ -1,8 +1,10 @@
 """What the rs274 oracle tests share: both sides run in a scratch folder,
 and a side that loses or gains a move fails before any comparison."""
 
+import os
 import pathlib
 import shutil
+import subprocess
 import tempfile
 
 
@@ -22,3 +24,13 @@ def collect(mbc_side, rs274_side, expected):
               f"expected {expected}")
         return 1
     return ours, theirs
+
+
+def rs274(folder, *args):
+    """Runs LinuxCNC's rs274 in `folder`. It keeps its tool table in
+    $HOME/.tool.mmap, which it truncates as it starts: runs that share a
+    HOME (the oracle tests side by side under ctest -j) spoil each other's
+    tools, so each gets `folder` as its HOME."""
+    subprocess.run(["rs274", *map(str, args)], check=True,
+                   capture_output=True, stdin=subprocess.DEVNULL,
+                   env={**os.environ, "HOME": str(folder)})
