@@ -338,7 +338,8 @@ public:
   ProgramCheck(const Program& p, bool main, const FlowEntries& entries,
                const Calls& calls, DiagnosticEngine& diags)
       : p_(p), main_(main), calls_(calls), diags_(diags), in_(p.blocks.size()),
-        entered_(p.blocks.size(), false), tested_(testedLocals(p)) {
+        entered_(p.blocks.size(), false), tested_(testedLocals(p)),
+        loopWrites_(loopWrites(p, calls)) {
     for (const int i : enteredBlocks(p, entries)) {
       entered_[static_cast<std::size_t>(i)] = true;
       in_[static_cast<std::size_t>(i)].reached = true;
@@ -377,6 +378,7 @@ private:
       }
     }
     if (!entered_[0]) {
+      forget(start, loopWrites_[0]);
       in_[0] = start;
     }
   }
@@ -406,6 +408,7 @@ private:
         if (edge.cond != nullptr) {
           passCondition(next, *edge.cond, edge.outcome);
         }
+        forget(next, loopWrites_[to]);
         if (merge(in_[to], next) && !queued[to]) {
           work.push_back(to);
           queued[to] = true;
@@ -486,6 +489,48 @@ private:
     }
   }
 
+  /// Per block that a way back enters (a WHILE, a backward GOTO's label),
+  /// the locals its loop writes. Their facts are forgotten there: a value
+  /// one round of a loop sets for the next (the previous point of a path)
+  /// is vacant only on a first round that the loop's own conditions
+  /// usually rule out, which this analysis cannot see.
+  static std::vector<std::bitset<kLocalCount>> loopWrites(const Program& p,
+                                                          const Calls& calls) {
+    std::vector<std::bitset<kLocalCount>> writes(p.blocks.size());
+    for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
+      for (const FlowEdge& edge : successors(p, i)) {
+        for (int j = edge.to; j >= 0 && j <= i; ++j) {
+          writes[static_cast<std::size_t>(edge.to)] |=
+              writtenBy(p.blocks[static_cast<std::size_t>(j)].stmt, calls);
+        }
+      }
+    }
+    return writes;
+  }
+
+  /// The locals a block may write.
+  static std::bitset<kLocalCount> writtenBy(const Stmt& s, const Calls& calls) {
+    std::bitset<kLocalCount> written;
+    if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
+      if (s.target.index) {
+        written.set();
+      } else if (isLocal(s.target.number)) {
+        written.set(static_cast<std::size_t>(s.target.number - 1));
+      }
+    } else if (maySetLocals(s, calls)) {
+      written.set();
+    }
+    return written;
+  }
+
+  static void forget(State& st, const std::bitset<kLocalCount>& locals) {
+    for (std::size_t k = 0; k < st.locals.size(); ++k) {
+      if (locals.test(k)) {
+        st.locals[k] = Fact{};
+      }
+    }
+  }
+
   /// The locals the program tests against #0 somewhere.
   static std::bitset<kLocalCount> testedLocals(const Program& p) {
     std::bitset<kLocalCount> tested;
@@ -515,6 +560,7 @@ private:
   std::vector<State> in_;
   std::vector<bool> entered_;
   const std::bitset<kLocalCount> tested_;
+  const std::vector<std::bitset<kLocalCount>> loopWrites_;
   std::bitset<kLocalCount> unpassedReported_;
 };
 
