@@ -249,29 +249,33 @@ void Analysis::findEntryLoads(const std::vector<std::optional<Range>>& entry) {
 // every way in comes from such blocks.
 std::vector<bool> Analysis::reachable() const {
   const std::size_t n = f_.blocks.size();
+  // Marked where the edge of a condition that cannot hold enters, then
+  // down the dominator tree: reverse post-order visits a block's
+  // immediate dominator before it.
   std::vector<bool> dead(n, false);
   for (const auto& [value, list] : constraints_) {
     for (const Constraint& c : list) {
-      const Range o = ranges_[c.other];
-      if (isEmpty(o) || !isEmpty(meet(ranges_[value], bound(c.op, c.other)))) {
-        continue;
-      }
-      for (BlockId b : cfg_.rpo) {
-        dead[b] = dead[b] || dominates(c.block, b);
-      }
+      dead[c.block] = dead[c.block] ||
+                      (!isEmpty(ranges_[c.other]) &&
+                       isEmpty(meet(ranges_[value], bound(c.op, c.other))));
     }
   }
+  for (BlockId b : cfg_.rpo) {
+    dead[b] = dead[b] || (b != 0 && dead[cfg_.idom[b]]);
+  }
   std::vector<bool> reach(n, false);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (BlockId b : cfg_.rpo) {
-      bool in = b == 0;
-      for (BlockId p : cfg_.preds[b]) {
-        in = in || reach[p];
-      }
-      if (in && !dead[b] && !reach[b]) {
-        reach[b] = true;
-        changed = true;
+  std::vector<BlockId> work;
+  if (!cfg_.rpo.empty()) {
+    reach[0] = true;
+    work.push_back(0);
+  }
+  while (!work.empty()) {
+    const BlockId b = work.back();
+    work.pop_back();
+    for (BlockId s : cfg_.succs[b]) {
+      if (!reach[s] && !dead[s]) {
+        reach[s] = true;
+        work.push_back(s);
       }
     }
   }
