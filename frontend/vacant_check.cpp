@@ -23,18 +23,6 @@ namespace mbc {
 
 namespace {
 
-/// The programs a code may call as a subprogram, on the locals of the
-/// block's program: O9000 (T), O9001-O9009 (M), O9028 (B), O9029 (S).
-constexpr bool codeCalledSubprogram(int number) {
-  return (number >= 9000 && number <= 9009) || number == 9028 || number == 9029;
-}
-
-/// O9000-O9029 may be called by codes a profile names, with arguments
-/// the unit does not show.
-constexpr bool codeCalled(int number) {
-  return number >= 9000 && number <= 9029;
-}
-
 enum class Origin { Start, Unpassed, Assigned };
 
 /// `#to = #from` on the way from where the vacancy began.
@@ -216,7 +204,7 @@ Calls callsOf(const Unit& unit) {
   Calls calls;
   for (const Program& p : unit.programs) {
     calls.codesWriteLocals =
-        calls.codesWriteLocals || codeCalledSubprogram(p.number);
+        calls.codesWriteLocals || codeMayCallSubprogram(p.number);
     for (const Block& b : p.blocks) {
       const Stmt& s = b.stmt;
       const bool macro = isMacroCallStmt(s);
@@ -370,7 +358,7 @@ private:
       }
     } else if (passed != calls_.passed.end() && !calls_.computedMacroCall &&
                !calls_.subprograms.contains(p_.name) &&
-               !codeCalled(p_.number)) {
+               !codeMayCallProgram(p_.number)) {
       for (int n = 1; n <= kLocalCount; ++n) {
         if (!passed->second.test(static_cast<std::size_t>(n - 1))) {
           start.locals[n - 1] = vacantFrom(Origin::Unpassed, n);

@@ -171,7 +171,7 @@ class Analysis {
 public:
   explicit Analysis(const ir::Module& m) : m_(m) {
     for (const ir::Function& f : m.functions) {
-      codeCalled_ = codeCalled_ || (f.number >= 9000 && f.number <= 9029);
+      codeCalled_ = codeCalled_ || codeMayCallProgram(f.number);
     }
   }
 
@@ -262,7 +262,7 @@ private:
     }
     if (codeCalled_) {
       for (const ir::Function& g : m_.functions) {
-        if (g.number >= 9000 && g.number <= 9029) {
+        if (codeMayCallProgram(g.number)) {
           enter(g, {});
         }
       }

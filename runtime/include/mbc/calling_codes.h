@@ -65,4 +65,25 @@ inline constexpr bool letterMayCall(char letter) {
   return letter == 'T' || letter == 'S' || letter == 'B';
 }
 
+/// The subprograms T, S and B codes call.
+inline constexpr int kTCodeProgram = 9000;
+inline constexpr int kSCodeProgram = 9029;
+inline constexpr int kBCodeProgram = 9028;
+
+/// Whether some code may call program `number` on some machine, with
+/// words a check of the program text does not see as a call: O9000-O9029.
+inline constexpr bool codeMayCallProgram(int number) {
+  return number >= kTCodeProgram &&
+         number < kMacroMCodes.firstProgram + kMacroMCodes.size;
+}
+
+/// Whether a code may call program `number` as a subprogram, on the
+/// caller's locals: O9000 (T), O9001-O9009 (M), O9028 (B), O9029 (S).
+inline constexpr bool codeMayCallSubprogram(int number) {
+  return number == kTCodeProgram || number == kSCodeProgram ||
+         number == kBCodeProgram ||
+         (number >= kSubprogramMCodes.firstProgram &&
+          number < kSubprogramMCodes.firstProgram + kSubprogramMCodes.size);
+}
+
 } // namespace mbc

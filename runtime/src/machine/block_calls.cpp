@@ -23,9 +23,6 @@ std::string pointedWordText(char letter, double value) {
 
 namespace {
 
-constexpr int kTProgram = 9000;
-constexpr int kSProgram = 9029;
-constexpr int kBProgram = 9028;
 constexpr int kTCommon = 149;
 constexpr int kSCommon = 147;
 constexpr int kBCommon = 146;
@@ -244,9 +241,12 @@ void wantCodeSubprograms(const mbrt_ctx& ctx, const BlockCodes& codes,
                         fmt::format("{}{}", letter, *code), letter});
     }
   };
-  want(codes.t, ctx.profile.parameterBit(6001, 5), 'T', kTProgram, kTCommon);
-  want(codes.s, ctx.profile.parameterBit(6007, 5), 'S', kSProgram, kSCommon);
-  want(codes.b, ctx.profile.parameterBit(6007, 4), 'B', kBProgram, kBCommon);
+  want(codes.t, ctx.profile.parameterBit(6001, 5), 'T', kTCodeProgram,
+       kTCommon);
+  want(codes.s, ctx.profile.parameterBit(6007, 5), 'S', kSCodeProgram,
+       kSCommon);
+  want(codes.b, ctx.profile.parameterBit(6007, 4), 'B', kBCodeProgram,
+       kBCommon);
 }
 
 std::string flowText(const mbrt_flow& flow) {
