@@ -99,15 +99,17 @@ int bareLocal(const Expr& e) {
                                                                          : 0;
 }
 
+/// Whether `e` is `#0`, the variable that is always vacant.
+bool isNull(const Expr& e) {
+  return e.isBareVariable() && e.kind == ExprKind::Var && e.var == 0;
+}
+
 /// The local `e` tests against #0 (`#n EQ #0`, `#0 NE #n`), or 0.
 int vacancyTest(const Expr& e) {
   if (e.kind != ExprKind::Compare ||
       (e.relOp != RelOp::Eq && e.relOp != RelOp::Ne)) {
     return 0;
   }
-  const auto isNull = [](const Expr& x) {
-    return x.isBareVariable() && x.kind == ExprKind::Var && x.var == 0;
-  };
   if (isNull(*e.args[1])) {
     return bareLocal(*e.args[0]);
   }
@@ -171,8 +173,7 @@ void assign(State& st, const Stmt& s, SourceRange block) {
       copied.copies.push_back({block, n, from});
     }
     target = copied;
-  } else if (value.isBareVariable() && value.kind == ExprKind::Var &&
-             value.var == 0) {
+  } else if (isNull(value)) {
     target = vacantFrom(Origin::Assigned, n, block);
   } else {
     target = Fact{};
@@ -261,10 +262,7 @@ State transfer(State st, const Block& b, const Calls& calls) {
     taken.reached = assume(taken, *s.cond, true);
     assign(taken, s, b.range);
     st.reached = assume(st, *s.cond, false);
-    if (!st.reached) {
-      return taken;
-    }
-    merge(st, taken);
+    merge(st, taken); // either side may be a way no run takes
   } else if (maySetLocals(s, calls)) {
     forgetLocals(st);
   }

@@ -18,15 +18,6 @@ std::optional<double> constant(const Function& f, ValueId v) {
                               : std::nullopt;
 }
 
-const Function* numbered(const Module& module, int number) {
-  for (const Function& f : module.functions) {
-    if (f.number == number) {
-      return &f;
-    }
-  }
-  return nullptr;
-}
-
 /// The subprogram an nc block calls with M98 or M198 P, nullptr for none;
 /// `computed` when its P is no constant or names no program of the module.
 const Function* subprogramCalled(const Module& module, const Function& f,
@@ -45,7 +36,7 @@ const Function* subprogramCalled(const Module& module, const Function& f,
   if (!calls) {
     return nullptr;
   }
-  const Function* callee = p ? numbered(module, static_cast<int>(*p)) : nullptr;
+  const Function* callee = p ? module.numbered(static_cast<int>(*p)) : nullptr;
   computed = computed || callee == nullptr;
   return callee;
 }

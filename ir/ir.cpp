@@ -70,6 +70,15 @@ bool payloadFits(Op op, const Payload& p) {
   return false;
 }
 
+const Function* Module::numbered(int number) const {
+  for (const Function& f : functions) {
+    if (f.number == number) {
+      return &f;
+    }
+  }
+  return nullptr;
+}
+
 StringRef Module::intern(const std::string& s) {
   for (std::size_t i = 0; i < strings.size(); ++i) {
     if (strings[i] == s) {

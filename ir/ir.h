@@ -244,6 +244,9 @@ struct Module {
   /// The reference of `s`, added once however often it is interned.
   StringRef intern(const std::string& s);
 
+  /// The function of O number `number`; nullptr for none.
+  const Function* numbered(int number) const;
+
   /// The string `ref` names; nullptr for none or one out of range.
   const std::string* text(StringRef ref) const {
     return ref != 0 && ref <= strings.size() ? &strings[ref - 1] : nullptr;

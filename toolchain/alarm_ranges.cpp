@@ -90,15 +90,6 @@ bool writable(int n) {
          !unmodelledVariable(n, nullptr);
 }
 
-const ir::Function* numbered(const ir::Module& m, int number) {
-  for (const ir::Function& f : m.functions) {
-    if (f.number == number) {
-      return &f;
-    }
-  }
-  return nullptr;
-}
-
 /// The constant code `letter` of an nc, if it has one.
 std::optional<double> codeOf(const ir::Function& f, const ir::Inst& nc,
                              char letter) {
@@ -110,6 +101,36 @@ std::optional<double> codeOf(const ir::Function& f, const ir::Inst& nc,
     }
   }
   return std::nullopt;
+}
+
+/// What an nc block calls by P: whether a code of it calls that way (M98,
+/// M198, G65, G66, G66.1), and its P, a constant or the computed value.
+struct CallByP {
+  bool calls = false;
+  std::optional<double> constant;
+  std::optional<ir::ValueId> computed;
+};
+
+CallByP callByP(const ir::Function& f, const ir::Inst& nc) {
+  CallByP call;
+  const auto& words = nc.get<ir::Words>().words;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const ir::Inst& value = f.insts[nc.ops[i]];
+    const bool constant = value.op == ir::Op::Const;
+    const double v = constant ? value.get<ir::Number>().value : 0;
+    if (words[i].letter == 'P') {
+      call.constant = constant ? std::optional(v) : std::nullopt;
+      call.computed = constant ? std::nullopt : std::optional(nc.ops[i]);
+    } else if (constant && callsByP(words[i].letter, v)) {
+      call.calls = true;
+    }
+  }
+  return call;
+}
+
+/// The function a constant P names; nullptr for none.
+const ir::Function* calledFunction(const ir::Module& m, double p) {
+  return m.numbered(calledProgramNumber(p).value_or(-1));
 }
 
 /// Prunes the ways out of a block that no run takes, for the analysis
@@ -244,15 +265,10 @@ private:
              const ir::RangeFacts& facts) {
     if (inst.op == ir::Op::CallMacro) {
       const ir::Inst& p = f.insts[inst.ops[0]];
-      const ir::Function* callee =
-          p.op == ir::Op::Const
-              ? numbered(
-                    m_,
-                    calledProgramNumber(p.get<ir::Number>().value).value_or(-1))
-              : nullptr;
       if (p.op != ir::Op::Const) {
         enterAll();
-      } else if (callee != nullptr) {
+      } else if (const ir::Function* callee =
+                     calledFunction(m_, p.get<ir::Number>().value)) {
         enter(*callee, arguments(inst, facts.values));
       }
       return;
@@ -260,36 +276,23 @@ private:
     if (inst.op != ir::Op::Nc) {
       return;
     }
-    if (codeCalled_) {
+    // A code may call O9000-O9029 from any block, with nothing known.
+    if (codeCalled_ && !codesEntered_) {
+      codesEntered_ = true;
       for (const ir::Function& g : m_.functions) {
         if (codeMayCallProgram(g.number)) {
           enter(g, {});
         }
       }
     }
-    const auto& words = inst.get<ir::Words>().words;
-    bool calling = false;
-    std::optional<double> p;
-    bool computed = false;
-    for (std::size_t i = 0; i < words.size(); ++i) {
-      const ir::Inst& value = f.insts[inst.ops[i]];
-      const bool constant = value.op == ir::Op::Const;
-      const double v = constant ? value.get<ir::Number>().value : 0;
-      if (words[i].letter == 'P') {
-        p = constant ? std::optional(v) : std::nullopt;
-        computed = !constant;
-      } else if (constant && callsByP(words[i].letter, v)) {
-        calling = true;
-      }
-    }
-    if (!calling) {
+    const CallByP call = callByP(f, inst);
+    if (!call.calls) {
       return;
     }
-    if (computed) {
+    if (call.computed) {
       enterAll();
-    } else if (p) {
-      if (const ir::Function* callee =
-              numbered(m_, calledProgramNumber(*p).value_or(-1))) {
+    } else if (call.constant) {
+      if (const ir::Function* callee = calledFunction(m_, *call.constant)) {
         enter(*callee, {}); // an M98's locals are its caller's
       }
     }
@@ -419,7 +422,7 @@ private:
   void checkProgramNumber(const ir::Function& f, const ir::Inst& inst,
                           const Range& p) {
     const bool known =
-        everyNumber(p, [&](int n) { return numbered(m_, n) != nullptr; });
+        everyNumber(p, [&](int n) { return m_.numbered(n) != nullptr; });
     if (!known) {
       add(f, inst, alarmText(AlarmId::ProgramNotFound),
           "the called program's number " + rangeText(p));
@@ -429,30 +432,24 @@ private:
   void checkBlock(const ir::Function& f, const ir::Inst& inst,
                   const std::vector<Range>& values) {
     const auto& words = inst.get<ir::Words>().words;
-    bool calling = false;
-    const Range* p = nullptr;
     for (std::size_t i = 0; i < words.size(); ++i) {
-      const ir::Inst& value = f.insts[inst.ops[i]];
       const Range& r = values[inst.ops[i]];
-      if (value.op == ir::Op::Const &&
-          callsByP(words[i].letter, value.get<ir::Number>().value)) {
-        calling = true;
-      } else if (words[i].letter == 'P' && value.op != ir::Op::Const) {
-        p = &r;
-      } else if (words[i].letter == 'F' && value.type == ir::Type::Num &&
-                 holds(r, 0)) {
-        // A bare variable may be vacant (no F word): only a number counts.
+      // A bare variable may be vacant (no F word): only a number counts.
+      if (words[i].letter == 'F' &&
+          f.insts[inst.ops[i]].type == ir::Type::Num && holds(r, 0)) {
         add(f, inst, alarmText(AlarmId::FeedZero),
             "F " + rangeText(r) + ": a cutting move at feed 0 alarms");
       }
     }
-    if (calling && p != nullptr) {
-      checkProgramNumber(f, inst, *p);
+    const CallByP call = callByP(f, inst);
+    if (call.calls && call.computed) {
+      checkProgramNumber(f, inst, values[*call.computed]);
     }
   }
 
   const ir::Module& m_;
   bool codeCalled_ = false;
+  bool codesEntered_ = false;
   std::map<const ir::Function*, Entry> entries_;
   std::map<const ir::Function*, int> visits_;
   std::set<const ir::Function*> work_;
