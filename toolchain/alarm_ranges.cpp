@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "toolchain/ir_pipeline.h"
+#include "toolchain/main_program.h"
 
 namespace mbc::toolchain {
 
@@ -483,21 +484,15 @@ int checkAlarmRanges(const CompiledUnit& cu, const AlarmRangeRequest& request,
     return -1;
   }
   dropDeadEdges(module);
-  const std::string name = request.mainProgram.empty()
-                               ? cu.unit.programs.empty()
-                                     ? std::string()
-                                     : cu.unit.programs.front().name
-                               : request.mainProgram;
-  const ir::Function* main = nullptr;
-  for (const ir::Function& f : module.functions) {
-    if (f.name == name) {
-      main = &f;
-    }
-  }
-  if (main == nullptr) {
-    failure = fmt::format("no program {} in the input", name);
+  // Functions are lowered in the order of the unit's programs.
+  const int index = findMain(cu.unit, request.mainProgram);
+  if (index < 0) {
+    failure = request.mainProgram.empty()
+                  ? "the input has no programs"
+                  : missingMainMessage(cu.unit, request.mainProgram);
     return -1;
   }
+  const ir::Function* main = &module.functions[static_cast<std::size_t>(index)];
   // The main program's locals are vacant but for the arguments.
   Entry entry(kLocalCount, Range{0, 0});
   IjkSets sets;

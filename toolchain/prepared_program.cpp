@@ -10,43 +10,11 @@
 #include <cstdio>
 #include <optional>
 
-#include "toolchain/closest_match.h"
 #include "toolchain/ir_pipeline.h"
 #include "toolchain/jit_compiler.h"
+#include "toolchain/main_program.h"
 
 namespace mbc::toolchain {
-
-namespace {
-
-int findMain(const Unit& unit, const std::string& wanted) {
-  if (unit.programs.empty()) {
-    return -1;
-  }
-  if (wanted.empty()) {
-    return 0;
-  }
-  for (int i = 0; i < static_cast<int>(unit.programs.size()); ++i) {
-    const Program& p = unit.programs[i];
-    if (namesProgram(p.name, p.number, wanted)) {
-      return i;
-    }
-  }
-  return -1;
-}
-
-// "no program 9001 in the input; did you mean 'O9001'?"
-std::string missingMainMessage(const Unit& unit, const std::string& wanted) {
-  std::vector<std::string> names;
-  for (const Program& p : unit.programs) {
-    names.push_back(p.name);
-  }
-  const std::string guess = closestMatch(wanted, names);
-  return fmt::format(
-      "no program {} in the input{}", wanted,
-      guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess));
-}
-
-} // namespace
 
 int PreparedProgram::prepare(const Request& r, runner::PhaseTimes& phases) {
   const auto start = std::chrono::steady_clock::now();
