@@ -39,8 +39,8 @@ TEST(RuntimeParameterInput, WhatMbcCannotFollowStops) {
   };
 
   const Case cases[] = {
-      {"N1320 P1 R500.", AlarmId::Unsupported,
-       "parameter 1320 is not one mbc models"},
+      {"N1322 P1 R500.", AlarmId::Unsupported,
+       "parameter 1322 is not one mbc models"},
       {"N1006 P1 R1", AlarmId::Unsupported, "says what the machine is"},
       {"N3410 R-1.", AlarmId::IllegalExpressionFormat,
        "must be a number from 0"},
@@ -106,7 +106,7 @@ TEST(RuntimeParameterRead, ValuesBitsAxesAndAlarms) {
   };
 
   const Case cases[] = {
-      {0, 1320, 0, 0, AlarmId::Unsupported},        // not modelled
+      {0, 1322, 0, 0, AlarmId::Unsupported},        // not modelled
       {0, 1241, 0, 0, AlarmId::ArgumentOutOfRange}, // needs an axis
       {MBRT_PARAMETER_AXIS, 3410, 0, 1, AlarmId::ArgumentOutOfRange},
       {MBRT_PARAMETER_AXIS, 1241, 0, 5, AlarmId::ArgumentOutOfRange},

@@ -81,6 +81,17 @@ mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail,
   return static_cast<mbrt_status>(id);
 }
 
+mbrt_status raiseAt(mbrt_ctx& ctx, const BlockPlace& place, AlarmId id,
+                    std::string_view detail) {
+  const BlockPlace running{ctx.run.block.file, ctx.run.block.line};
+  ctx.run.block.file = place.file;
+  ctx.run.block.line = place.line;
+  const mbrt_status status = raise(ctx, id, detail);
+  ctx.run.block.file = running.file;
+  ctx.run.block.line = running.line;
+  return status;
+}
+
 void sendMessage(mbrt_ctx& ctx, std::string_view text) {
   if (ctx.host.messageSink.fn == nullptr) {
     return;

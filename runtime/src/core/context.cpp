@@ -98,6 +98,7 @@ void RunControl::startRun(bool illegalMain) {
   cycleLabel = 0;
   cycleBlock = BlockPlace{};
   shapeCycle = 0;
+  dryRun = false;
   interrupted = false;
   outOfMemory = false;
   illegalMainNumber = illegalMain;

@@ -374,6 +374,9 @@ struct RunControl {
   // shape, not the tool's path, so the stages below neither compensate
   // them nor check their feed.
   int shapeCycle = 0;
+  // The dry run that finds a shape's compensated path (lathe_shapes.cpp):
+  // its moves are no tool's, so no stroke limit stops them.
+  bool dryRun = false;
   SignalFlag interrupted;
   SignalFlag outOfMemory;
   bool illegalMainNumber = false; // PS0074 at the first block
@@ -606,6 +609,11 @@ namespace mbc::rt {
 /// of a run is kept. Returns the id as an mbrt_status.
 mbrt_status raise(mbrt_ctx& ctx, AlarmId id, std::string_view detail = {},
                   int macroNumber = 0);
+
+/// raise at another block than the one running: a move that waited for
+/// later blocks alarms at its own.
+mbrt_status raiseAt(mbrt_ctx& ctx, const BlockPlace& place, AlarmId id,
+                    std::string_view detail);
 
 /// "file:line: ", or "" without a file: how alarms, messages and trace
 /// lines name the block.

@@ -33,7 +33,7 @@ double axisParameterValue(const Profile& profile, int number, int axis) {
                  ? profile.rotationDegrees[static_cast<std::size_t>(axis)]
                  : 360.0;
     default:
-      return 0.0;
+      return profile.axisParameter(number, axis);
   }
 }
 

@@ -239,11 +239,13 @@ mbrt_status compensatedPath(mbrt_ctx& ctx, int code, const Shape& shape,
   path = Shape{shape.start, {}, {}};
   PathCollector collector{&ctx, &path.moves};
   ctx.host.motionSink = {collectMove, &collector};
+  ctx.run.dryRun = true;
   mbrt_status status = runMoves(ctx, shape.moves, code, ctx.machine.modal.feed,
                                 ctx.machine.modal.compensation, &shape.file);
   if (status == 0) {
     status = releaseHeldMoves(ctx);
   }
+  ctx.run.dryRun = false;
   *ctx.compensation = compensation;
   restoreSnapshot(ctx, before);
   return status;

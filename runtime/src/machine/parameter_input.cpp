@@ -152,9 +152,10 @@ mbrt_status parameterInputBlock(mbrt_ctx& ctx, const mbrt_word* words,
                      fmt::format("P{}: the axis number is 1 to {}", axis,
                                  ctx.axisCount()));
     }
-    profile.axisParameters[parameter][static_cast<std::size_t>(axis) - 1] =
+    profile.axisParameterValues(parameter)[static_cast<std::size_t>(axis) - 1] =
         newValue;
     flattenParameter(ctx, parameter, static_cast<int>(axis), newValue);
+    deriveParameterFields(profile);
     return 0;
   }
   profile.parameters[parameter] = newValue;

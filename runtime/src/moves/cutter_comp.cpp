@@ -292,16 +292,8 @@ bool interferes(const mbrt_ctx& ctx, const HeldMove& move, PlanePoint from,
   return std::fabs(tool - programmed) > std::numbers::pi;
 }
 
-mbrt_status raiseAt(mbrt_ctx& ctx, const HeldMove& move, AlarmId id,
-                    std::string_view detail) {
-  const char* file = ctx.run.block.file;
-  const int line = ctx.run.block.line;
-  ctx.run.block.file = move.origin.file;
-  ctx.run.block.line = move.origin.line;
-  const mbrt_status status = raise(ctx, id, detail);
-  ctx.run.block.file = file;
-  ctx.run.block.line = line;
-  return status;
+BlockPlace placeOf(const HeldMove& move) {
+  return {move.origin.file, move.origin.line};
 }
 
 MoveOrigin originOf(const HeldMove& move) {
@@ -312,13 +304,14 @@ MoveOrigin originOf(const HeldMove& move) {
 }
 
 /// A move without motion in the plane: the tool keeps its vector.
-void moveStill(mbrt_ctx& ctx, const HeldMove& move) {
+mbrt_status moveStill(mbrt_ctx& ctx, const HeldMove& move) {
   const PlaneIndex plane = planeIndex(ctx);
   const AxisCounts target =
       placeAt(move, plane, pointOf(toolPosition(ctx), plane));
-  if (target != toolPosition(ctx)) {
-    moveWorkStraight(ctx, target, move.rapid, originOf(move));
+  if (target == toolPosition(ctx)) {
+    return 0;
   }
+  return moveWorkStraight(ctx, target, move.rapid, originOf(move));
 }
 
 /// The tool centre at the end of a move on a vector perpendicular to it.
@@ -329,12 +322,12 @@ PlanePoint perpendicularEnd(const mbrt_ctx& ctx, const HeldMove& move) {
 }
 
 /// A move as programmed, without offset.
-void moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
+mbrt_status moveAsProgrammed(mbrt_ctx& ctx, const HeldMove& move) {
   if (move.arc) {
-    moveWorkArc(ctx, move.end, centerOf(move), move.clockwise, originOf(move));
-  } else {
-    moveWorkStraight(ctx, move.end, move.rapid, originOf(move));
+    return moveWorkArc(ctx, move.end, centerOf(move), move.clockwise,
+                       originOf(move));
   }
+  return moveWorkStraight(ctx, move.end, move.rapid, originOf(move));
 }
 
 /// The held move leaves along `points` (Corner), then the moves without
@@ -356,10 +349,10 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
   const PlanePoint from = pointOf(toolPosition(ctx), plane);
   if (check && interferes(ctx, move, from, points.front())) {
     if (ctx.profile.parameterBit(19607, 5)) {
-      return raiseAt(ctx, move, AlarmId::Unsupported,
+      return raiseAt(ctx, placeOf(move), AlarmId::Unsupported,
                      "interference avoidance (parameter 19607#5 CAV)");
     }
-    return raiseAt(ctx, move, AlarmId::InterferenceInCrc,
+    return raiseAt(ctx, placeOf(move), AlarmId::InterferenceInCrc,
                    fmt::format("the tool path of this {} runs against the "
                                "programmed direction with offset {}",
                                move.arc ? "arc" : "move",
@@ -370,24 +363,25 @@ mbrt_status leave(mbrt_ctx& ctx, const std::vector<PlanePoint>& points,
   const bool fullCircle =
       move.arc && pointOf(move.start, plane).x == pointOf(move.end, plane).x &&
       pointOf(move.start, plane).y == pointOf(move.end, plane).y;
+  mbrt_status status = 0;
   if (move.arc) {
     if (first != toolPosition(ctx) || fullCircle) {
-      moveWorkArc(ctx, first, centerOf(move), move.clockwise, origin);
+      status = moveWorkArc(ctx, first, centerOf(move), move.clockwise, origin);
     }
   } else if (first != toolPosition(ctx)) {
-    moveWorkStraight(ctx, first, move.rapid, origin);
+    status = moveWorkStraight(ctx, first, move.rapid, origin);
   }
-  for (std::size_t i = 1; i < points.size(); ++i) {
+  for (std::size_t i = 1; i < points.size() && status == 0; ++i) {
     const AxisCounts link = placeAt(move, plane, points[i]);
     if (link != toolPosition(ctx)) {
-      moveWorkStraight(ctx, link, move.rapid, origin);
+      status = moveWorkStraight(ctx, link, move.rapid, origin);
     }
   }
-  for (std::size_t i = 1; i < held.size(); ++i) {
+  for (std::size_t i = 1; i < held.size() && status == 0; ++i) {
     const PlacedAs stillPlaced(ctx, held[i].placement);
-    moveStill(ctx, held[i]);
+    status = moveStill(ctx, held[i]);
   }
-  return 0;
+  return status;
 }
 
 /// The offset value of the modal D (geometry + wear as the offset memory
@@ -543,8 +537,7 @@ mbrt_status cancel(mbrt_ctx& ctx, HeldMove& move) {
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     end[axis] -= move.tipShift[axis];
   }
-  moveWorkStraight(ctx, end, move.rapid, originOf(move));
-  return 0;
+  return moveWorkStraight(ctx, end, move.rapid, originOf(move));
 }
 
 } // namespace
@@ -570,17 +563,15 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
                pointOf(move.start, plane).y == pointOf(move.end, plane).y;
   if (move.still) {
     if (state.held.empty()) {
-      moveStill(ctx, move);
-    } else {
-      state.held.push_back(std::move(move));
+      return moveStill(ctx, move);
     }
+    state.held.push_back(std::move(move));
     return 0;
   }
   ++state.planeMoves;
   if (!offsetOn(ctx)) {
     if (!state.engaged) {
-      moveAsProgrammed(ctx, move);
-      return 0;
+      return moveAsProgrammed(ctx, move);
     }
     return cancel(ctx, move);
   }
@@ -646,7 +637,7 @@ mbrt_status compensateMove(mbrt_ctx& ctx, HeldMove move) {
     if (corner.noSolution) {
       const HeldMove failed = held;
       state.held.clear();
-      return raiseAt(ctx, failed, AlarmId::NoSolutionAtCrc,
+      return raiseAt(ctx, placeOf(failed), AlarmId::NoSolutionAtCrc,
                      "the offset paths of this move and the next do not "
                      "meet");
     }
@@ -676,8 +667,7 @@ mbrt_status cancelCompensation(mbrt_ctx& ctx, HeldMove move) {
   if (const mbrt_status status = releaseHeldMoves(ctx)) {
     return status;
   }
-  moveStill(ctx, move);
-  return 0;
+  return moveStill(ctx, move);
 }
 
 mbrt_status suspendCompensation(mbrt_ctx& ctx, std::uint32_t mask) {
@@ -723,8 +713,10 @@ mbrt_status cancelVectorHere(mbrt_ctx& ctx) {
       return status;
     }
   } else if (here != toolPosition(ctx)) {
-    moveWorkStraight(ctx, here, ctx.machine.modal.motion == 0,
-                     blockOrigin(ctx));
+    if (const mbrt_status status = moveWorkStraight(
+            ctx, here, ctx.machine.modal.motion == 0, blockOrigin(ctx))) {
+      return status;
+    }
   }
   state.engaged = false;
   return 0;
@@ -815,7 +807,7 @@ mbrt_status cornerArc(mbrt_ctx& ctx, const MotionWords& words) {
   if (tool != toolPosition(ctx)) {
     MoveOrigin origin = blockOrigin(ctx);
     origin.programmed = &here;
-    moveWorkArc(ctx, tool, corner, arc.side > 0, origin);
+    return moveWorkArc(ctx, tool, corner, arc.side > 0, origin);
   }
   return 0;
 }

@@ -4,8 +4,18 @@
 #pragma once
 
 #include "context.h"
+#include "plane_geometry.h"
 
 namespace mbc::rt {
+
+/// An arc of the plane axes `p` and `q` (indexes into positions) about
+/// `center`, from `from` (workpiece counts), turning `sweep` radians.
+struct ArcPath {
+  int p, q;
+  PlanePoint center, from;
+  double sweep;
+  bool clockwise;
+};
 
 /// Where a block's points go on the machine: its frames (G52, G92, mirror,
 /// scaling, rotation, the tool length offset, a lathe's tool offsets) and

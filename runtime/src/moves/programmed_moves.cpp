@@ -157,8 +157,7 @@ mbrt_status moveToMachine(mbrt_ctx& ctx, const AxisCounts& work,
       return status;
     }
   }
-  moveStraightTo(ctx, work, machine, rapid, blockOrigin(ctx, cycle));
-  return 0;
+  return moveStraightTo(ctx, work, machine, rapid, blockOrigin(ctx, cycle));
 }
 
 /// A rapid to machine coordinates on the axes in `mask`, when it moves.
@@ -336,9 +335,9 @@ mbrt_status moveArcFrom(mbrt_ctx& ctx, const MotionWords& words,
   }
   const MoveOrigin origin = blockOrigin(ctx);
   ctx.machine.program = target;
-  moveArcTo(ctx, work, workCenter, startRadius * frame.scale,
-            sweepBetween(from, to, center, clockwise), turnsClockwise, origin);
-  return 0;
+  return moveArcTo(ctx, work, workCenter, startRadius * frame.scale,
+                   sweepBetween(from, to, center, clockwise), turnsClockwise,
+                   origin);
 }
 
 } // namespace

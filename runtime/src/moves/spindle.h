@@ -16,15 +16,7 @@ namespace mbc::rt {
 double lineTurnMinutes(const mbrt_ctx& ctx, const MoveOrigin& origin,
                        const AxisCounts& from, const AxisCounts& to);
 
-/// The same over an arc of the plane axes `p` and `q` about `center`, from
-/// `start` (workpiece counts), turning `sweep` radians.
-struct ArcPath {
-  int p, q;
-  PlanePoint center, from;
-  double sweep;
-  bool clockwise;
-};
-
+/// The same over an arc (`start`: the control point's workpiece position).
 double arcTurnMinutes(const mbrt_ctx& ctx, const MoveOrigin& origin,
                       const ArcPath& arc, const AxisCounts& start);
 

@@ -15,6 +15,7 @@
 #include "lathe_codes.h"
 #include "machine_unit.h"
 #include "spindle.h"
+#include "stroke_check.h"
 
 namespace mbc::rt {
 
@@ -215,9 +216,14 @@ void widenBoxByArc(mbrt_ctx& ctx, int p, int q, Point center, Point start,
 
 } // namespace
 
-void moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
-                    const AxisCounts& machine, bool rapid,
-                    const MoveOrigin& origin) {
+mbrt_status moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
+                           const AxisCounts& machine, bool rapid,
+                           const MoveOrigin& origin) {
+  if (checksStroke(ctx)) {
+    if (const mbrt_status status = checkLineStroke(ctx, machine, origin)) {
+      return status;
+    }
+  }
   const Travel length = travel(ctx, machine, 0, 0.0);
   advanceClock(ctx, length, rapid, length.units, origin,
                rapid ? 0.0
@@ -226,55 +232,66 @@ void moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
                                        work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
+  return 0;
 }
 
-void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
-                      const MoveOrigin& origin) {
-  moveStraightTo(ctx, work, workToMachine(ctx, work), rapid, origin);
+mbrt_status moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
+                             const MoveOrigin& origin) {
+  return moveStraightTo(ctx, work, workToMachine(ctx, work), rapid, origin);
 }
 
 namespace {
 
 /// moveArcTo from `workStart`, the control point's workpiece position,
 /// which the caller has already found.
-void arcFromStart(mbrt_ctx& ctx, const AxisCounts& workStart,
-                  const AxisCounts& work, PlanePoint center, double radius,
-                  double sweep, bool clockwise, const MoveOrigin& origin) {
+mbrt_status arcFromStart(mbrt_ctx& ctx, const AxisCounts& workStart,
+                         const AxisCounts& work, PlanePoint center,
+                         double radius, double sweep, bool clockwise,
+                         const MoveOrigin& origin) {
   const auto [p, q] = planeIndex(ctx);
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
   const AxisCounts machine = workToMachine(ctx, work);
-  advanceClock(
-      ctx,
-      travel(ctx, machine, (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
-             radius * sweep),
-      false, radius * sweep / ctx.scale(), origin,
-      arcTurnMinutes(ctx, origin, {p, q, center, from, sweep, clockwise},
-                     workStart));
+  const ArcPath arc{p, q, center, from, sweep, clockwise};
+  if (checksStroke(ctx)) {
+    if (const mbrt_status status =
+            checkArcStroke(ctx, work, machine, arc, origin)) {
+      return status;
+    }
+  }
+  advanceClock(ctx,
+               travel(ctx, machine,
+                      (std::uint32_t{1} << p) | (std::uint32_t{1} << q),
+                      radius * sweep),
+               false, radius * sweep / ctx.scale(), origin,
+               arcTurnMinutes(ctx, origin, arc, workStart));
   moveTo(ctx, clockwise ? MBRT_MOTION_CW : MBRT_MOTION_CCW, work, machine,
          center, origin);
   widenBoxByArc(ctx, p, q, center, from, radius, sweep, clockwise);
+  return 0;
 }
 
 } // namespace
 
-void moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
-               double radius, double sweep, bool clockwise,
-               const MoveOrigin& origin) {
-  arcFromStart(ctx, machineToWork(ctx, ctx.machine.position), work, center,
-               radius, sweep, clockwise, origin);
+mbrt_status moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
+                      double radius, double sweep, bool clockwise,
+                      const MoveOrigin& origin) {
+  return arcFromStart(ctx, machineToWork(ctx, ctx.machine.position), work,
+                      center, radius, sweep, clockwise, origin);
 }
 
-void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
-                 bool clockwise, const MoveOrigin& origin) {
+mbrt_status moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work,
+                        PlanePoint center, bool clockwise,
+                        const MoveOrigin& origin) {
   const auto [p, q] = planeIndex(ctx);
   const AxisCounts workStart = machineToWork(ctx, ctx.machine.position);
   const Point from{static_cast<double>(workStart[p]),
                    static_cast<double>(workStart[q])};
   const Point to{static_cast<double>(work[p]), static_cast<double>(work[q])};
-  arcFromStart(ctx, workStart, work, center,
-               std::hypot(from.x - center.x, from.y - center.y),
-               sweepBetween(from, to, center, clockwise), clockwise, origin);
+  return arcFromStart(ctx, workStart, work, center,
+                      std::hypot(from.x - center.x, from.y - center.y),
+                      sweepBetween(from, to, center, clockwise), clockwise,
+                      origin);
 }
 
 void switchUnits(mbrt_ctx& ctx, bool inch) {

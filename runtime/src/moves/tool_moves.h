@@ -56,23 +56,29 @@ const AxisCounts& programPosition(const mbrt_ctx& ctx);
 /// Cutter compensation's moves (cutter_comp.h): the control point goes
 /// straight, or on an arc about `center` (the plane's axes), to a position
 /// in the workpiece frame, as the block of `origin` commanded.
-void moveWorkStraight(mbrt_ctx& ctx, const AxisCounts& work, bool rapid,
-                      const MoveOrigin& origin);
-void moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
-                 bool clockwise, const MoveOrigin& origin);
+///
+/// Every move here is checked against the strokes first (stroke_check.h):
+/// past one, it alarms at the block of `origin` and does not move.
+[[nodiscard]] mbrt_status moveWorkStraight(mbrt_ctx& ctx,
+                                           const AxisCounts& work, bool rapid,
+                                           const MoveOrigin& origin);
+[[nodiscard]] mbrt_status moveWorkArc(mbrt_ctx& ctx, const AxisCounts& work,
+                                      PlanePoint center, bool clockwise,
+                                      const MoveOrigin& origin);
 
 /// A straight move of the control point to `machine` (workpiece position
 /// `work`).
-void moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
-                    const AxisCounts& machine, bool rapid,
-                    const MoveOrigin& origin);
+[[nodiscard]] mbrt_status moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
+                                         const AxisCounts& machine, bool rapid,
+                                         const MoveOrigin& origin);
 
 /// An arc of the control point to `work` about `center` (workpiece counts
 /// in the plane), `radius` long and turning through `sweep` radians as the
 /// program's frame measures them.
-void moveArcTo(mbrt_ctx& ctx, const AxisCounts& work, PlanePoint center,
-               double radius, double sweep, bool clockwise,
-               const MoveOrigin& origin);
+[[nodiscard]] mbrt_status moveArcTo(mbrt_ctx& ctx, const AxisCounts& work,
+                                    PlanePoint center, double radius,
+                                    double sweep, bool clockwise,
+                                    const MoveOrigin& origin);
 
 /// Advances the simulated clock by a dwell.
 void dwell(mbrt_ctx& ctx, double seconds);

@@ -25,6 +25,10 @@ constexpr ParameterSpec codeTableSpec(const CodeTable& table, double low,
 constexpr std::array kParameters = {
     // 2nd, 3rd and 4th reference positions (G30), machine coordinates, mm.
     ParameterSpec{1241, 1243, -999999, 999999, 0, false, true},
+    // Stored stroke check 1: the + and - ends of each axis's stroke, machine
+    // coordinates. Unset, 1320 is below 1321: FANUC's infinite stroke.
+    ParameterSpec{1320, 1320, -999999, 999999, -999999, false, true},
+    ParameterSpec{1321, 1321, -999999, 999999, 999999, false, true},
     ParameterSpec{1, 1, 0, 255, 0, true},                 // #1 FCV (lathe)
     ParameterSpec{1006, 1006, 0, 255, 0, true, true},     // #0 ROT: rotary axis
     ParameterSpec{1008, 1008, 0, 255, 0, true, true},     // #0 ROA, #1 RAB

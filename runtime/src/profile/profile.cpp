@@ -65,13 +65,12 @@ void parseAxisParameter(const json& item, const std::string& path, int n,
                            "axis",
                            profile.axes.size()));
   }
-  AxisValues values{};
+  AxisValues& values = profile.axisParameterValues(n);
   for (std::size_t axis = 0; axis < item.size(); ++axis) {
     const std::string itemPath = fmt::format("{}[{}]", path, axis);
     values[axis] = number(item[axis], itemPath);
     checkRange(spec, values[axis], itemPath);
   }
-  profile.axisParameters[n] = values;
 }
 
 void parseParameters(const json& value, Profile& profile) {
@@ -92,6 +91,13 @@ void parseParameters(const json& value, Profile& profile) {
       fail(path, *error);
     }
     profile.parameters[*n] = x;
+  }
+  const bool plus = profile.axisParameters.count(1320) != 0;
+  if (plus != (profile.axisParameters.count(1321) != 0)) {
+    fail(child("parameters", plus ? "1320" : "1321"),
+         fmt::format("needs {} too: a stroke has two ends (give 1320 below "
+                     "1321 on an axis without a stroke)",
+                     plus ? 1321 : 1320));
   }
   deriveParameterFields(profile);
 }
@@ -129,6 +135,16 @@ void deriveParameterFields(Profile& profile) {
   profile.v15 = profile.parameterBit(6000, 3);
   profile.clearOnReset = profile.parameterBit(3402, 6);
   profile.rigidTappingCode = profile.parameter(5210);
+  profile.strokeMask = 0;
+  for (int axis = 0; axis < static_cast<int>(profile.axes.size()); ++axis) {
+    const double high = profile.axisParameter(1320, axis);
+    const double low = profile.axisParameter(1321, axis);
+    if (high >= low) {
+      profile.strokeMask |= std::uint32_t{1} << axis;
+      profile.strokeLow[static_cast<std::size_t>(axis)] = low;
+      profile.strokeHigh[static_cast<std::size_t>(axis)] = high;
+    }
+  }
   profile.codeCalls =
       profile.parameterBit(6001, 5) || profile.parameterBit(6007, 4) ||
       profile.parameterBit(6007, 5) ||
@@ -464,8 +480,20 @@ double Profile::parameter(int number) const {
 }
 
 double Profile::axisParameter(int number, int axis) const {
-  const auto it = axisParameters.find(number);
-  return it != axisParameters.end() ? it->second[axis] : 0.0;
+  if (const auto it = axisParameters.find(number); it != axisParameters.end()) {
+    return it->second[axis];
+  }
+  const ParameterSpec* spec = findParameter(number);
+  return spec != nullptr ? spec->fallback : 0.0;
+}
+
+AxisValues& Profile::axisParameterValues(int number) {
+  const auto [it, added] = axisParameters.try_emplace(number);
+  if (added) {
+    const ParameterSpec* spec = findParameter(number);
+    it->second.fill(spec != nullptr ? spec->fallback : 0.0);
+  }
+  return it->second;
 }
 
 bool Profile::parameterBit(int number, int bit) const {

@@ -77,6 +77,12 @@ struct Profile {
   // The parameters the profile sets (parameters.h has the others' defaults).
   std::map<int, double> parameters;
   std::map<int, AxisValues> axisParameters; // 1241: one value per axis
+  // Stored stroke check 1 (1320/1321, derived): bit n, axis n has a stroke,
+  // strokeLow[n]..strokeHigh[n] in machine coordinates, mm (a diameter axis
+  // in diameter) or degrees.
+  std::uint32_t strokeMask = 0;
+  AxisValues strokeLow{};
+  AxisValues strokeHigh{};
   int toolOffsetCount = 400;
   char toolOffsetMemory = 'C';         // offset memory type A, B or C
   std::vector<ToolOffset> toolOffsets; // index 0 unused
@@ -118,9 +124,13 @@ struct Profile {
 
   bool lathe() const { return series == Series::Lathe; }
 
-  /// A per-axis parameter's value for `axis`, 0 when the profile does not
-  /// set it.
+  /// A per-axis parameter's value for `axis`, its unset value (parameters.h)
+  /// when the profile does not set it.
   double axisParameter(int number, int axis) const;
+
+  /// The values of per-axis parameter `number`, every axis at its unset
+  /// value until the profile or a program sets it.
+  AxisValues& axisParameterValues(int number);
 };
 
 struct ParameterSpec;
