@@ -152,7 +152,7 @@ bool mayChangeOrLeave(const Program& p, int i, int first, int last,
   }
   if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
     return s.target.index != nullptr || vars.contains(s.target.number) ||
-           s.target.number == 3000;
+           s.target.number == kMacroAlarmVariable;
   }
   if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
     return !s.gotoBlock || *s.gotoBlock < first || *s.gotoBlock > last;

@@ -2,6 +2,7 @@
 #include "frontend/flow_graph.h"
 
 #include "frontend/sema.h"
+#include <mbc/limits.h>
 
 #include <fmt/format.h>
 
@@ -13,7 +14,6 @@ namespace mbc {
 namespace {
 
 /// The control's own alarm stops the flow where a program writes it.
-constexpr int kAlarmVariable = 3000;
 
 bool computedGoto(const Stmt& s) {
   return (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) &&
@@ -36,8 +36,8 @@ bool hasCode(const Stmt& s, char letter, double code) {
 
 std::string flowEnd(const Stmt& s) {
   if (s.kind == StmtKind::Assign && !s.target.index &&
-      s.target.number == kAlarmVariable) {
-    return fmt::format("#{}", kAlarmVariable);
+      s.target.number == kMacroAlarmVariable) {
+    return fmt::format("#{}", kMacroAlarmVariable);
   }
   if (s.kind != StmtKind::Nc) {
     return "";

@@ -1,43 +1,28 @@
 // The range analysis of alarms (see alarm_ranges.h).
 #include "toolchain/alarm_ranges.h"
 
-#include "ir/lower.h"
-#include "ir/passes/ranges.h"
-#include <mbc/addresses.h>
 #include <mbc/alarm.h>
 #include <mbc/arith.h>
-#include <mbc/calling_codes.h>
 #include <mbc/limits.h>
 #include <mbc/sysvars.h>
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
-#include <map>
-#include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
-
-#include "toolchain/ir_pipeline.h"
-#include "toolchain/main_program.h"
 
 namespace mbc::toolchain {
 
 namespace {
 
 using ir::Range;
-/// What a function's locals hold when it starts; empty: nothing known.
-using Entry = std::vector<std::optional<Range>>;
 
 /// A range of whole numbers wider than this is not searched value by
 /// value (variable and program numbers).
 constexpr double kMaxSearched = 10000;
-/// A function whose start is widened more often than this gets nothing
-/// known instead (a recursion, or a long chain of calls).
-constexpr int kMaxVisits = 4;
-constexpr int kAlarmVariable = 3000;
 
 bool bounded(const Range& r) {
   return std::isfinite(r.lo) && std::isfinite(r.hi);
@@ -45,10 +30,6 @@ bool bounded(const Range& r) {
 
 bool holds(const Range& r, double x) {
   return r.lo <= x && x <= r.hi;
-}
-
-Range join(const Range& a, const Range& b) {
-  return Range{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
 }
 
 std::string rangeText(const Range& r) {
@@ -91,92 +72,6 @@ bool writable(int n) {
          !unmodelledVariable(n, nullptr);
 }
 
-/// The constant code `letter` of an nc, if it has one.
-std::optional<double> codeOf(const ir::Function& f, const ir::Inst& nc,
-                             char letter) {
-  const auto& words = nc.get<ir::Words>().words;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    const ir::Inst& value = f.insts[nc.ops[i]];
-    if (words[i].letter == letter && value.op == ir::Op::Const) {
-      return value.get<ir::Number>().value;
-    }
-  }
-  return std::nullopt;
-}
-
-/// What an nc block calls by P: whether a code of it calls that way (M98,
-/// M198, G65, G66, G66.1), and its P, a constant or the computed value.
-struct CallByP {
-  bool calls = false;
-  std::optional<double> constant;
-  std::optional<ir::ValueId> computed;
-};
-
-CallByP callByP(const ir::Function& f, const ir::Inst& nc) {
-  CallByP call;
-  const auto& words = nc.get<ir::Words>().words;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    const ir::Inst& value = f.insts[nc.ops[i]];
-    const bool constant = value.op == ir::Op::Const;
-    const double v = constant ? value.get<ir::Number>().value : 0;
-    if (words[i].letter == 'P') {
-      call.constant = constant ? std::optional(v) : std::nullopt;
-      call.computed = constant ? std::nullopt : std::optional(nc.ops[i]);
-    } else if (constant && callsByP(words[i].letter, v)) {
-      call.calls = true;
-    }
-  }
-  return call;
-}
-
-/// The function a constant P names; nullptr for none.
-const ir::Function* calledFunction(const ir::Module& m, double p) {
-  return m.numbered(calledProgramNumber(p).value_or(-1));
-}
-
-/// Prunes the ways out of a block that no run takes, for the analysis
-/// alone: a block of M99 (without P), M02 or M30 leaves the program and
-/// never goes on to the next, and #3000 stops the run in its block.
-void dropDeadEdges(ir::Module& module) {
-  for (ir::Function& f : module.functions) {
-    for (const ir::Block& block : f.blocks) {
-      const bool alarms = std::any_of(
-          block.insts.begin(), block.insts.end(), [&](ir::ValueId id) {
-            const ir::Inst& inst = f.insts[id];
-            return inst.op == ir::Op::StVar &&
-                   inst.get<ir::VarNumber>().number == kAlarmVariable;
-          });
-      if (alarms) {
-        ir::Inst& term = f.insts[block.insts.back()];
-        term.op = ir::Op::Ret;
-        term.ops.clear();
-        term.targets.clear();
-      }
-    }
-    for (ir::Inst& inst : f.insts) {
-      if (inst.op != ir::Op::Resume) {
-        continue;
-      }
-      const ir::Inst& nc = f.insts[inst.ops[0]];
-      if (nc.op != ir::Op::Nc) {
-        continue;
-      }
-      const auto& words = nc.get<ir::Words>().words;
-      const bool jumps =
-          std::any_of(words.begin(), words.end(),
-                      [](const ir::AddressWord& w) { return w.letter == 'P'; });
-      const std::optional<double> code = codeOf(f, nc, 'M');
-      const bool leaves =
-          code && (*code == 2 || *code == 30 || (*code == 99 && !jumps));
-      if (leaves) {
-        inst.op = ir::Op::Ret;
-        inst.ops.clear();
-        inst.targets.clear();
-      }
-    }
-  }
-}
-
 /// One block that may alarm.
 struct Finding {
   std::string function;
@@ -191,136 +86,27 @@ std::string alarmText(AlarmId id) {
 
 class Analysis {
 public:
-  explicit Analysis(const ir::Module& m) : m_(m) {
-    for (const ir::Function& f : m.functions) {
-      codeCalled_ = codeCalled_ || codeMayCallProgram(f.number);
-    }
-  }
+  explicit Analysis(const UnitRanges& unit) : unit_(unit) {}
 
-  void start(const ir::Function& main, Entry entry) {
-    enter(main, std::move(entry));
-    while (!work_.empty()) {
-      const ir::Function* f = *work_.begin();
-      work_.erase(work_.begin());
-      visit(*f, false);
-    }
-    // Every start is final now: report with it.
-    for (const auto& [f, known] : entries_) {
-      visit(*f, true);
+  void run() {
+    for (const ir::Function& f : unit_.module().functions) {
+      const ir::RangeFacts* facts = unit_.facts(f);
+      if (facts == nullptr) {
+        continue;
+      }
+      for (std::size_t b = 0; b < f.blocks.size(); ++b) {
+        if (facts->reachable[b]) {
+          for (ir::ValueId id : f.blocks[b].insts) {
+            check(f, f.insts[id], facts->values);
+          }
+        }
+      }
     }
   }
 
   const std::vector<Finding>& findings() const { return findings_; }
 
 private:
-  /// Joins `entry` into what `f` starts with; queues it when that grew.
-  void enter(const ir::Function& f, Entry entry) {
-    auto [it, added] = entries_.try_emplace(&f, entry);
-    if (!added) {
-      Entry& known = it->second;
-      if (known.empty()) {
-        return;
-      }
-      Entry joined;
-      if (!entry.empty() && ++visits_[&f] <= kMaxVisits) {
-        joined = known;
-        for (std::size_t i = 0; i < joined.size(); ++i) {
-          joined[i] = joined[i] && entry[i]
-                          ? std::optional(join(*joined[i], *entry[i]))
-                          : std::nullopt;
-        }
-      }
-      if (joined == known) {
-        return;
-      }
-      known = std::move(joined);
-    }
-    work_.insert(&f);
-  }
-
-  void enterAll() {
-    for (const ir::Function& f : m_.functions) {
-      enter(f, {});
-    }
-  }
-
-  void visit(const ir::Function& f, bool report) {
-    const ir::RangeFacts facts = ir::analyseRanges(f, entries_.at(&f));
-    for (std::size_t b = 0; b < f.blocks.size(); ++b) {
-      if (!facts.reachable[b]) {
-        continue;
-      }
-      for (ir::ValueId id : f.blocks[b].insts) {
-        const ir::Inst& inst = f.insts[id];
-        if (report) {
-          check(f, inst, facts.values);
-        } else {
-          calls(f, inst, facts);
-        }
-      }
-    }
-  }
-
-  /// The programs an instruction calls, and what their locals start with.
-  void calls(const ir::Function& f, const ir::Inst& inst,
-             const ir::RangeFacts& facts) {
-    if (inst.op == ir::Op::CallMacro) {
-      const ir::Inst& p = f.insts[inst.ops[0]];
-      if (p.op != ir::Op::Const) {
-        enterAll();
-      } else if (const ir::Function* callee =
-                     calledFunction(m_, p.get<ir::Number>().value)) {
-        enter(*callee, arguments(inst, facts.values));
-      }
-      return;
-    }
-    if (inst.op != ir::Op::Nc) {
-      return;
-    }
-    // A code may call O9000-O9029 from any block, with nothing known.
-    if (codeCalled_ && !codesEntered_) {
-      codesEntered_ = true;
-      for (const ir::Function& g : m_.functions) {
-        if (codeMayCallProgram(g.number)) {
-          enter(g, {});
-        }
-      }
-    }
-    const CallByP call = callByP(f, inst);
-    if (!call.calls) {
-      return;
-    }
-    if (call.computed) {
-      enterAll();
-    } else if (call.constant) {
-      if (const ir::Function* callee = calledFunction(m_, *call.constant)) {
-        enter(*callee, {}); // an M98's locals are its caller's
-      }
-    }
-  }
-
-  /// What a G65's macro starts with: its arguments' ranges, the rest
-  /// vacant (0). A literal without a decimal point may be scaled down to
-  /// the least input increment (X10 is 0.010 mm or 0.0010 inch).
-  static Entry arguments(const ir::Inst& call,
-                         const std::vector<Range>& values) {
-    Entry entry(kLocalCount, Range{0, 0});
-    const auto& words = call.get<ir::Words>().words;
-    IjkSets sets;
-    for (std::size_t i = 0; i < words.size(); ++i) {
-      const int local = nextArgumentLocal(words[i].letter, sets);
-      if (local < 1 || local > kLocalCount) {
-        continue;
-      }
-      Range r = values[call.ops[ir::firstWordOperand(call.op) + i]];
-      if (words[i].kind == ir::WordKind::Int) {
-        r = join(r, Range{r.lo / 10000, r.hi / 10000});
-      }
-      entry[static_cast<std::size_t>(local - 1)] = r;
-    }
-    return entry;
-  }
-
   void add(const ir::Function& f, const ir::Inst& inst, std::string alarm,
            std::string why) {
     findings_.push_back({f.name, inst.line, std::move(alarm), std::move(why)});
@@ -359,8 +145,8 @@ private:
         }
         return;
       case ir::Op::StVar:
-        if (inst.get<ir::VarNumber>().number == kAlarmVariable) {
-          add(f, inst, fmt::format("the alarm of #{}", kAlarmVariable),
+        if (inst.get<ir::VarNumber>().number == kMacroAlarmVariable) {
+          add(f, inst, fmt::format("the alarm of #{}", kMacroAlarmVariable),
               "a run with the arguments given may reach it");
         }
         return;
@@ -422,8 +208,8 @@ private:
 
   void checkProgramNumber(const ir::Function& f, const ir::Inst& inst,
                           const Range& p) {
-    const bool known =
-        everyNumber(p, [&](int n) { return m_.numbered(n) != nullptr; });
+    const bool known = everyNumber(
+        p, [&](int n) { return unit_.module().numbered(n) != nullptr; });
     if (!known) {
       add(f, inst, alarmText(AlarmId::ProgramNotFound),
           "the called program's number " + rangeText(p));
@@ -448,12 +234,7 @@ private:
     }
   }
 
-  const ir::Module& m_;
-  bool codeCalled_ = false;
-  bool codesEntered_ = false;
-  std::map<const ir::Function*, Entry> entries_;
-  std::map<const ir::Function*, int> visits_;
-  std::set<const ir::Function*> work_;
+  const UnitRanges& unit_;
   std::vector<Finding> findings_;
 };
 
@@ -476,34 +257,10 @@ SourceRange blockAt(const Unit& unit, const std::string& name,
 
 } // namespace
 
-int checkAlarmRanges(const CompiledUnit& cu, const AlarmRangeRequest& request,
-                     DiagnosticEngine& diags, std::string& failure) {
-  ir::Module module;
-  if (!buildModule(cu, false, module) || !optimizeModule(module, IrPasses{})) {
-    failure = "the IR of the input could not be built";
-    return -1;
-  }
-  dropDeadEdges(module);
-  // Functions are lowered in the order of the unit's programs.
-  const int index = findMain(cu.unit, request.mainProgram);
-  if (index < 0) {
-    failure = request.mainProgram.empty()
-                  ? "the input has no programs"
-                  : missingMainMessage(cu.unit, request.mainProgram);
-    return -1;
-  }
-  const ir::Function* main = &module.functions[static_cast<std::size_t>(index)];
-  // The main program's locals are vacant but for the arguments.
-  Entry entry(kLocalCount, Range{0, 0});
-  IjkSets sets;
-  for (const ArgumentRange& arg : request.args) {
-    const int local = nextArgumentLocal(arg.letter, sets);
-    if (local >= 1 && local <= kLocalCount) {
-      entry[static_cast<std::size_t>(local - 1)] = Range{arg.lo, arg.hi};
-    }
-  }
-  Analysis analysis(module);
-  analysis.start(*main, std::move(entry));
+int checkAlarmRanges(const CompiledUnit& cu, const UnitRanges& unit,
+                     DiagnosticEngine& diags) {
+  Analysis analysis(unit);
+  analysis.run();
   std::set<std::tuple<std::string, std::uint32_t, std::string>> said;
   int count = 0;
   for (const Finding& finding : analysis.findings()) {

@@ -8,17 +8,13 @@
 
 #include "frontend/diagnostics.h"
 
-#include <string>
-
-#include "toolchain/argument_ranges.h"
 #include "toolchain/compile_unit.h"
+#include "toolchain/value_ranges.h"
 
 namespace mbc::toolchain {
 
-/// The blocks that may alarm, reported to `diags`; -1 (with `failure`
-/// said) when the main program is not in the unit or the IR could not be
-/// built. The unit must have no errors.
-int checkAlarmRanges(const CompiledUnit& cu, const AlarmRangeRequest& request,
-                     DiagnosticEngine& diags, std::string& failure);
+/// The blocks that may alarm, reported to `diags`.
+int checkAlarmRanges(const CompiledUnit& cu, const UnitRanges& unit,
+                     DiagnosticEngine& diags);
 
 } // namespace mbc::toolchain

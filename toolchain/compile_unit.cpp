@@ -122,9 +122,12 @@ bool parseInputs(const std::vector<SourceText>& texts,
   if (load.checkWarnings && diags.totalErrors() == 0) {
     checkCallsAgainstCallees(out, diags);
     if (load.alarmRanges) {
-      out.blocksThatMayAlarm =
-          checkAlarmRanges(out, *load.alarmRanges, diags, failure);
-      return out.blocksThatMayAlarm >= 0;
+      UnitRanges ranges;
+      if (!ranges.build(out, *load.alarmRanges, failure)) {
+        out.blocksThatMayAlarm = -1;
+        return false;
+      }
+      out.blocksThatMayAlarm = checkAlarmRanges(out, ranges, diags);
     }
   }
   return true;
