@@ -8,6 +8,7 @@
 #include "driver/unknown_arguments.h"
 #include "driver/version_text.h"
 #include "ir/pass_manager.h"
+#include <mbc/addresses.h>
 
 #include <fmt/format.h>
 
@@ -399,6 +400,13 @@ void defineCheck(CLI::App& app, Reader& r) {
         if (!range) {
           return fmt::format(
               "--arg expects LETTER=LO..HI or LETTER=VALUE, got '{}'", v);
+        }
+        IjkSets fresh;
+        if (nextArgumentLocal(range->letter, fresh) < 1) {
+          // As `mbc run --arg` refuses it (PS0125).
+          return fmt::format("--arg {}: {} cannot be a macro argument (G, L, "
+                             "N, O and P are not)",
+                             v, range->letter);
         }
         r.o.argRanges.push_back(*range);
         return std::string();
