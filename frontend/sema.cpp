@@ -433,7 +433,8 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
     warnFlow(unit, diags);
     // Vacancy needs every block read: a block in error says too little.
     if (diags.totalErrors() == 0) {
-      warnVacantReads(unit, diags);
+      warnVacantReads(unit, diags,
+                      {options.argumentProgram, options.argumentLocals});
     }
   }
 }

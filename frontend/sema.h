@@ -6,6 +6,7 @@
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct SemaOptions {
   /// notes a review wants are given (mbc check).
   char latheSystem = 0;
   bool reviewNotes = false;
+  /// mbc check --arg: the program that runs as the main one (its index in
+  /// the unit, -1 for none) and its locals the arguments set (bit n - 1
+  /// for #n), which are not vacant when it starts.
+  int argumentProgram = -1;
+  std::uint64_t argumentLocals = 0;
 };
 
 void checkUnit(Unit& unit, DiagnosticEngine& diags,

@@ -322,10 +322,11 @@ std::vector<std::pair<const Expr*, const Word*>> readsOf(const Stmt& s) {
 class ProgramCheck {
 public:
   ProgramCheck(const Program& p, bool main, const FlowEntries& entries,
-               const Calls& calls, DiagnosticEngine& diags)
-      : p_(p), main_(main), calls_(calls), diags_(diags), in_(p.blocks.size()),
-        entered_(p.blocks.size(), false), tested_(testedLocals(p)),
-        loopWrites_(loopWrites(p, calls)) {
+               const Calls& calls, DiagnosticEngine& diags, bool run,
+               std::uint64_t given)
+      : p_(p), main_(main), run_(run), given_(given), calls_(calls),
+        diags_(diags), in_(p.blocks.size()), entered_(p.blocks.size(), false),
+        tested_(testedLocals(p)), loopWrites_(loopWrites(p, calls)) {
     for (const int i : enteredBlocks(p, entries)) {
       entered_[static_cast<std::size_t>(i)] = true;
       in_[static_cast<std::size_t>(i)].reached = true;
@@ -350,15 +351,19 @@ private:
     State start;
     start.reached = true;
     const auto passed = calls_.passed.find(p_.name);
-    if (main_) {
+    const auto given = [&](int n) { return (given_ >> (n - 1) & 1) != 0; };
+    if (main_ || (run_ && passed == calls_.passed.end())) {
       for (int n = 1; n <= kLocalCount; ++n) {
-        start.locals[n - 1] = vacantFrom(Origin::Start, n);
+        if (!given(n)) {
+          start.locals[n - 1] = vacantFrom(Origin::Start, n);
+        }
       }
     } else if (passed != calls_.passed.end() && !calls_.computedMacroCall &&
                !calls_.subprograms.contains(p_.name) &&
                !codeMayCallProgram(p_.number)) {
       for (int n = 1; n <= kLocalCount; ++n) {
-        if (!passed->second.test(static_cast<std::size_t>(n - 1))) {
+        if (!passed->second.test(static_cast<std::size_t>(n - 1)) &&
+            !given(n)) {
           start.locals[n - 1] = vacantFrom(Origin::Unpassed, n);
         }
       }
@@ -541,6 +546,10 @@ private:
 
   const Program& p_;
   const bool main_;
+  // Run as the main program with arguments (mbc check --arg): the locals
+  // they set.
+  const bool run_;
+  const std::uint64_t given_;
   const Calls& calls_;
   DiagnosticEngine& diags_;
   std::vector<State> in_;
@@ -552,12 +561,16 @@ private:
 
 } // namespace
 
-void warnVacantReads(const Unit& unit, DiagnosticEngine& diags) {
+void warnVacantReads(const Unit& unit, DiagnosticEngine& diags,
+                     const MainArguments& arguments) {
   const FlowEntries entries = flowEntriesOf(unit);
   const Calls calls = callsOf(unit);
   const std::vector<bool> main = mainPrograms(unit);
   for (std::size_t i = 0; i < unit.programs.size(); ++i) {
-    ProgramCheck(unit.programs[i], main[i], entries, calls, diags).run();
+    const bool run = static_cast<int>(i) == arguments.program;
+    ProgramCheck(unit.programs[i], main[i], entries, calls, diags, run,
+                 run ? arguments.locals : 0)
+        .run();
   }
 }
 

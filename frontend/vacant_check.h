@@ -8,6 +8,8 @@
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
+#include <cstdint>
+
 namespace mbc {
 
 /// Warns of the vacant reads of every program of the unit, with notes on
@@ -18,6 +20,14 @@ namespace mbc {
 /// whose calls in the unit all leave its letter out. After a call that
 /// may write the locals, and where code elsewhere may jump in, nothing is
 /// known. Needs the GOTO targets and loops the semantic checks resolve.
-void warnVacantReads(const Unit& unit, DiagnosticEngine& diags);
+/// `arguments`: the program run as the main one with arguments (mbc check
+/// --arg), whose locals they set are not vacant.
+struct MainArguments {
+  int program = -1;         // index in the unit
+  std::uint64_t locals = 0; // bit n - 1 for #n
+};
+
+void warnVacantReads(const Unit& unit, DiagnosticEngine& diags,
+                     const MainArguments& arguments);
 
 } // namespace mbc

@@ -4,6 +4,8 @@
 
 #include "frontend/parser.h"
 #include "frontend/sema.h"
+#include <mbc/addresses.h>
+#include <mbc/limits.h>
 #include <mbc/read_file.h>
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 
 #include "toolchain/alarm_ranges.h"
 #include "toolchain/call_checks.h"
+#include "toolchain/main_program.h"
 #include "toolchain/program_search.h"
 
 namespace mbc::toolchain {
@@ -116,9 +119,18 @@ bool parseInputs(const std::vector<SourceText>& texts,
   if (!loadCalledPrograms(files, load, diags, options, out, failure)) {
     return false;
   }
-  checkUnit(
-      out.unit, diags,
-      SemaOptions{load.defaultMachine, load.latheSystem, load.checkWarnings});
+  SemaOptions sema{load.defaultMachine, load.latheSystem, load.checkWarnings};
+  if (load.alarmRanges) {
+    sema.argumentProgram = findMain(out.unit, load.alarmRanges->mainProgram);
+    IjkSets sets;
+    for (const ArgumentRange& arg : load.alarmRanges->args) {
+      const int local = nextArgumentLocal(arg.letter, sets);
+      if (local >= 1 && local <= kLocalCount) {
+        sema.argumentLocals |= std::uint64_t{1} << (local - 1);
+      }
+    }
+  }
+  checkUnit(out.unit, diags, sema);
   if (load.checkWarnings && diags.totalErrors() == 0) {
     checkCallsAgainstCallees(out, diags);
     if (load.alarmRanges) {
