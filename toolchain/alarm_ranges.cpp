@@ -238,23 +238,6 @@ private:
   std::vector<Finding> findings_;
 };
 
-/// The source range of line `line` of program `name`: its block.
-SourceRange blockAt(const Unit& unit, const std::string& name,
-                    std::uint32_t line) {
-  for (const Program& p : unit.programs) {
-    if (p.name != name) {
-      continue;
-    }
-    for (const Block& b : p.blocks) {
-      if (b.line == static_cast<int>(line)) {
-        return b.range;
-      }
-    }
-    return p.range;
-  }
-  return {};
-}
-
 } // namespace
 
 int checkAlarmRanges(const CompiledUnit& cu, const UnitRanges& unit,

@@ -19,6 +19,7 @@
 #include "toolchain/call_checks.h"
 #include "toolchain/main_program.h"
 #include "toolchain/program_search.h"
+#include "toolchain/reach_box.h"
 
 namespace mbc::toolchain {
 
@@ -140,6 +141,14 @@ bool parseInputs(const std::vector<SourceText>& texts,
         return false;
       }
       out.blocksThatMayAlarm = checkAlarmRanges(out, ranges, diags);
+      if (load.machine) {
+        const Reach reach = checkReach(out, ranges, *load.machine, diags);
+        out.strokeFindings = reach.findings;
+        out.reachDecided = reach.decided;
+        for (const ir::Range& r : reach.box) {
+          out.reachBox.emplace_back(r.lo, r.hi);
+        }
+      }
     }
   }
   return true;

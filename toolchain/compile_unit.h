@@ -12,6 +12,7 @@
 
 #include "toolchain/argument_ranges.h"
 #include "toolchain/diagnostic_formats.h"
+#include "toolchain/machine_facts.h"
 
 namespace mbc::toolchain {
 
@@ -21,6 +22,12 @@ struct CompiledUnit {
   // mbc check --arg/--prove: the blocks the range analysis finds may
   // alarm (-1 when it could not run).
   int blocksThatMayAlarm = 0;
+  // mbc check --arg/--prove --machine: where the tool may go, per axis in
+  // machine coordinates, and the blocks that may pass a stroke's end or
+  // where the analysis lost the tool (reach_box.h).
+  std::vector<std::pair<double, double>> reachBox;
+  bool reachDecided = true;
+  int strokeFindings = 0;
 };
 
 /// How loadUnit reads the input.
@@ -38,6 +45,8 @@ struct LoadOptions {
   DiagnosticOutput diagnostics;
   // mbc check --arg/--prove: the main program and its argument ranges.
   std::optional<AlarmRangeRequest> alarmRanges;
+  // ... and the machine of --machine, where the tool goes on it.
+  std::optional<MachineFacts> machine;
 };
 
 /// An input given as text rather than a file (the Python package's

@@ -269,6 +269,23 @@ const ir::RangeFacts* UnitRanges::facts(const ir::Function& f) const {
   return it != facts_.end() ? &it->second : nullptr;
 }
 
+/// The source range of line `line` of program `name`: its block.
+SourceRange blockAt(const Unit& unit, const std::string& name,
+                    std::uint32_t line) {
+  for (const Program& p : unit.programs) {
+    if (p.name != name) {
+      continue;
+    }
+    for (const Block& b : p.blocks) {
+      if (b.line == static_cast<int>(line)) {
+        return b.range;
+      }
+    }
+    return p.range;
+  }
+  return {};
+}
+
 const ir::Function* UnitRanges::called(double p) const {
   return module_.numbered(calledProgramNumber(p).value_or(-1));
 }

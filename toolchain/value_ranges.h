@@ -28,6 +28,11 @@ struct CallByP {
 
 CallByP callByP(const ir::Function& f, const ir::Inst& nc);
 
+/// The source range of line `line` of program `name`: its block (where
+/// the analyses report an instruction of that line).
+SourceRange blockAt(const Unit& unit, const std::string& name,
+                    std::uint32_t line);
+
 class UnitRanges {
 public:
   UnitRanges() = default;
