@@ -20,9 +20,10 @@ all: build
 
 # `make bench` adds its contenders: LinuxCNC's rs274 and valgrind.
 BENCH_PACKAGES := linuxcnc-uspace valgrind libbenchmark-dev
-# The tests' oracles: LinuxCNC's rs274, and a locale with a decimal comma
-# (the toolpath's numbers must not follow the C locale).
-TEST_PACKAGES := linuxcnc-uspace locales-all
+# The tests' oracles: LinuxCNC's rs274, a locale with a decimal comma (the
+# toolpath's numbers must not follow the C locale), and Neovim, a real
+# editor's LSP client for mbc lsp.
+TEST_PACKAGES := linuxcnc-uspace locales-all neovim
 
 deps:
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(DEB_PACKAGES)"
@@ -101,7 +102,7 @@ fuzz: deps
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(FUZZ_PACKAGES)"
 	CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_BUILD_DIR) \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMBC_FUZZ=ON
-	cmake --build $(FUZZ_BUILD_DIR) -j$(JOBS) --target fuzz_frontend fuzz_pipeline fuzz_profile
+	cmake --build $(FUZZ_BUILD_DIR) -j$(JOBS) --target fuzz_frontend fuzz_pipeline fuzz_profile fuzz_lsp
 	tools/fuzz.sh $(FUZZ_BUILD_DIR) $(SECONDS)
 
 # Random programs under every engine against the interpreter

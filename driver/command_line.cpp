@@ -494,6 +494,11 @@ void defineBuild(CLI::App& app, Reader& r) {
   addPassOptions(*cmd, r);
 }
 
+void defineLsp(CLI::App& app) {
+  app.add_subcommand("lsp", "Serve an editor: the Language Server Protocol on "
+                            "standard input and output (docs/editors.md)");
+}
+
 void defineHelp(CLI::App& app, Reader& r) {
   CLI::App* cmd =
       app.add_subcommand("help", "Show the help of mbc or of one command");
@@ -503,6 +508,9 @@ void defineHelp(CLI::App& app, Reader& r) {
 // The combinations of options that make no sense.
 std::string checkCombinations(const Options& o) {
   const bool producesFile = o.command == "compile" || o.command == "build";
+  if (o.command == "lsp") {
+    return ""; // its input is the editor's messages
+  }
   if (o.files.empty()) {
     return "no input file";
   }
@@ -599,6 +607,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
   defineEmitIr(app, r);
   defineCompile(app, r);
   defineBuild(app, r);
+  defineLsp(app);
   defineHelp(app, r);
   for (CLI::App* cmd : app.get_subcommands({})) {
     cmd->allow_extras();

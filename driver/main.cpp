@@ -13,6 +13,8 @@
 #include <exception>
 #include <new>
 
+#include "lsp/server.h"
+
 namespace {
 
 int dispatch(int argc, char** argv) {
@@ -36,6 +38,9 @@ int dispatch(int argc, char** argv) {
   }
   if (options->command == "check") {
     return checkCommand(*options);
+  }
+  if (options->command == "lsp") {
+    return mbc::lsp::runServer(stdin, stdout);
   }
   return runCommand(*options);
 }

@@ -2,11 +2,11 @@
 # Runs the libFuzzer targets of tests/fuzz for SECONDS each (make fuzz).
 #   tools/fuzz.sh BUILD_DIR SECONDS
 # Each target's corpus grows in BUILD_DIR/fuzz-corpus/TARGET, seeded from
-# the golden programs and diagnostics cases (Macro B) or the machine
-# profiles beside them (JSON). A crash, a leak, a sanitizer report or an
-# input slower than 10 s stops the run with status 1 and leaves the input in
-# BUILD_DIR/fuzz-crashes: turn it into a regression test (tests/diag or
-# tests/programs) before fixing it.
+# the golden programs and diagnostics cases (Macro B), the machine profiles
+# beside them (JSON) or the editor sessions of tests/fuzz/lsp. A crash, a
+# leak, a sanitizer report or an input slower than 10 s stops the run with
+# status 1 and leaves the input in BUILD_DIR/fuzz-crashes: turn it into a
+# regression test (tests/diag or tests/programs) before fixing it.
 set -u
 build=$1
 seconds=$2
@@ -14,7 +14,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 crashes=$build/fuzz-crashes
 mkdir -p "$crashes"
 status=0
-for target in frontend pipeline profile; do
+for target in frontend pipeline profile lsp; do
   corpus=$build/fuzz-corpus/$target
   mkdir -p "$corpus"
   # The seeds are copied: libFuzzer writes into the corpus folders it is
@@ -22,6 +22,9 @@ for target in frontend pipeline profile; do
   if [ "$target" = profile ]; then
     cp -n "$root"/tests/programs/*.machine.json "$root"/tests/fuzz/profiles/* \
       "$corpus"/ 2>/dev/null
+    dict=()
+  elif [ "$target" = lsp ]; then
+    cp -n "$root"/tests/fuzz/lsp/* "$corpus"/ 2>/dev/null
     dict=()
   else
     cp -n "$root"/tests/programs/*.nc "$root"/tests/diag/*.nc \

@@ -2,6 +2,7 @@
 // table (a G word that is not one may be a custom G code's macro call).
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace mbc {
@@ -11,6 +12,18 @@ bool isFanucGCode(int tenths);
 
 /// "G28", "G54.1", "G7.5": the code as a program writes it.
 std::string gCodeText(int tenths);
+
+/// What the manual calls G<tenths> in a column ('M' for a mill, 'A', 'B'
+/// or 'C' for a lathe's G code system), its modal group (0: one-shot, or
+/// its words are data) and whether mbc executes it; nothing for a code the
+/// column does not have.
+struct GCodeFacts {
+  const char* name;
+  int group;
+  bool modelled;
+};
+
+std::optional<GCodeFacts> gCodeFacts(char column, int tenths);
 
 /// The name of a FANUC G code that mbc does not execute yet (the run stops
 /// with MBC0001 at it), or nullptr for codes it executes and codes FANUC

@@ -5,6 +5,8 @@
 
 #include <mbc/limits.h>
 
+#include <optional>
+
 namespace mbc {
 
 enum class VarAccess { Missing, ReadOnly, ReadWrite };
@@ -25,5 +27,21 @@ struct UnmodelledVariable {
 
 /// Whether #n is such a variable (PS0115 when a block reads or writes it).
 bool unmodelledVariable(int n, UnmodelledVariable* out);
+
+/// A system variable of the control's map: the numbers its row covers,
+/// what it holds, whether a program may read and write it in mbc, whether
+/// it exists only on machines whose profile has it, and why it reads what
+/// it does (or why mbc does not have it), or nullptr.
+struct SystemVariableFacts {
+  long first;
+  long last;
+  const char* meaning;
+  bool readable;
+  bool writable;
+  bool byProfile;
+  const char* note;
+};
+
+std::optional<SystemVariableFacts> systemVariableFacts(int n);
 
 } // namespace mbc

@@ -641,6 +641,20 @@ bool unmodelledVariable(int n, UnmodelledVariable* out) {
   return true;
 }
 
+std::optional<SystemVariableFacts> systemVariableFacts(int n) {
+  const rt::SysVarRange* range = rt::findSystemVariable(n);
+  if (range == nullptr) {
+    return std::nullopt;
+  }
+  return SystemVariableFacts{range->first,
+                             range->last,
+                             range->meaning,
+                             range->read != nullptr,
+                             range->write != nullptr,
+                             range->byProfile,
+                             range->note};
+}
+
 bool dependsOnProfile(int n) {
   if (n >= kFirstExtendedCommon && n <= kLastExtendedCommon) {
     return true;

@@ -162,6 +162,15 @@ bool mbc::isFanucGCode(int tenths) {
   return mbc::rt::findGCodeRow('M', tenths) != nullptr;
 }
 
+std::optional<mbc::GCodeFacts> mbc::gCodeFacts(char column, int tenths) {
+  const mbc::rt::GCodeRow* row = mbc::rt::findGCodeRow(column, tenths);
+  if (row == nullptr) {
+    return std::nullopt;
+  }
+  return mbc::GCodeFacts{
+      row->name, mbc::rt::modalGroup(row->field, column != 'M'), row->modelled};
+}
+
 const char* mbc::unmodelledGCode(int tenths) {
   const mbc::rt::GCodeRow* row = mbc::rt::findGCodeRow('M', tenths);
   return row != nullptr && !row->modelled ? row->name : nullptr;

@@ -1,0 +1,201 @@
+// Hover texts (see hover.h). The facts come from mbc's own tables: the G
+// code table the runtime executes by, the system variable map, the
+// argument specifications and the calls of the unit.
+#include "lsp/hover.h"
+
+#include <mbc/addresses.h>
+#include <mbc/arith.h>
+#include <mbc/calling_codes.h>
+#include <mbc/g_codes.h>
+#include <mbc/limits.h>
+#include <mbc/sysvars.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace mbc::lsp {
+
+namespace {
+
+/// The M codes the control (and mbc) gives a meaning of its own; the others
+/// go to the machine, or call a program where a profile says so.
+const char* mCodeMeaning(double m) {
+  if (m == 0) {
+    return "program stop: the run goes on (mbc counts the stop)";
+  }
+  if (m == 1) {
+    return "optional stop: the run goes on (mbc counts the stop)";
+  }
+  if (m == 2 || m == 30) {
+    return "end of program: the run ends here";
+  }
+  if (m == 98) {
+    return "subprogram call: P names the program, L repeats it; the "
+           "subprogram shares the caller's locals";
+  }
+  if (m == 99) {
+    return "end of a subprogram or macro: back to the caller (M99 P: to "
+           "that N of the caller); in a main program, back to its start";
+  }
+  if (m == 198) {
+    return "subprogram call from the external device's folder";
+  }
+  return nullptr;
+}
+
+/// `code`: the word as the program writes it ("G01").
+std::string gCodeHover(std::string_view code, double value, char latheSystem) {
+  const int tenths = static_cast<int>(std::lround(value * 10));
+  const char column = latheSystem != 0 ? latheSystem : 'M';
+  const std::optional<GCodeFacts> facts = gCodeFacts(column, tenths);
+  if (!facts) {
+    return fmt::format(
+        "**{}**: not a G code of the {}. A machine profile can make it a "
+        "custom G code that calls O9010-O9019 (parameters 6050-6059); "
+        "otherwise a block with it alarms (PS0010).",
+        code, latheSystem != 0 ? "0i-TF" : "0i-MF");
+  }
+  std::string text = fmt::format("**{}**: {}", code, facts->name);
+  text += facts->group != 0
+              ? fmt::format(" (modal group {:02}, read back in #{})",
+                            facts->group, 4000 + facts->group)
+              : " (one-shot)";
+  text += facts->modelled ? "\n\nmbc executes it."
+                          : "\n\nmbc does not execute it yet: a run stops "
+                            "at this block with MBC0001.";
+  return text;
+}
+
+std::string mCodeHover(std::string_view code, double value) {
+  if (const char* meaning = mCodeMeaning(value)) {
+    return fmt::format("**{}**: {}", code, meaning);
+  }
+  return fmt::format("**{}**: a machine function: mbc passes it on (the "
+                     "toolpath does not change); a profile may make it call "
+                     "a subprogram or macro (parameters 6071-6089).",
+                     code);
+}
+
+/// The argument letters that set local #n: one of specification I, and
+/// the I, J, K of specification II.
+std::string argumentLetters(int n) {
+  std::string letters;
+  for (char letter = 'A'; letter <= 'Z'; ++letter) {
+    if (argumentLocal(letter) == n && (letter < 'I' || letter > 'K')) {
+      letters = fmt::format("`{}` (specification I)", letter);
+    }
+  }
+  if (n >= 4 && n <= 33) {
+    const int set = (n - 4) / 3 + 1;
+    const char member = static_cast<char>('I' + (n - 4) % 3);
+    const std::string two =
+        fmt::format("`{}{}` (specification II)", member, set);
+    letters = letters.empty()
+                  ? two
+                  : (set == 1 ? fmt::format("`{}`, or {}", member, two)
+                              : fmt::format("{}, or {}", letters, two));
+  }
+  return letters;
+}
+
+std::string variableHover(int n) {
+  if (n == 0) {
+    return "**#0**: always vacant; it cannot be written.";
+  }
+  if (isLocal(n)) {
+    const std::string letters = argumentLetters(n);
+    return fmt::format(
+        "**#{}**: local variable of the program or macro that "
+        "runs{}",
+        n,
+        letters.empty()
+            ? "."
+            : fmt::format("; a G65/G66 argument {} sets it.", letters));
+  }
+  if (n >= kFirstCommon && n <= kLastCommon) {
+    return fmt::format("**#{}**: common variable, shared by every program; "
+                       "vacant at power on.",
+                       n);
+  }
+  if (n >= kFirstNonvolatile && n <= kLastNonvolatile) {
+    return fmt::format("**#{}**: common variable, kept when the power is off "
+                       "(mbc run --vars keeps it in a state file).",
+                       n);
+  }
+  if (const std::optional<SystemVariableFacts> facts = systemVariableFacts(n)) {
+    std::string text = fmt::format("**#{}**: {}", n, facts->meaning);
+    if (!facts->readable) {
+      text +=
+          fmt::format("\n\nmbc does not model it: a block that reads or "
+                      "writes it alarms (PS0115){}",
+                      facts->note != nullptr ? fmt::format(": {}", facts->note)
+                                             : std::string("."));
+      return text;
+    }
+    text += facts->writable ? "\n\nRead and write." : "\n\nRead only.";
+    if (facts->byProfile) {
+      text += " It exists on machines whose profile has it.";
+    }
+    if (facts->note != nullptr) {
+      text += fmt::format(" {}", facts->note);
+    }
+    return text;
+  }
+  return fmt::format("**#{}**: no variable of the control: a block that "
+                     "reads or writes it alarms (PS0115).",
+                     n);
+}
+
+/// The blocks that jump to N`seq` of `program`.
+int jumpsTo(const Program& program, const Block& target) {
+  int count = 0;
+  for (const Block& b : program.blocks) {
+    if (b.stmt.gotoBlock &&
+        &program.blocks[static_cast<std::size_t>(*b.stmt.gotoBlock)] ==
+            &target) {
+      ++count;
+    }
+  }
+  return count;
+}
+
+} // namespace
+
+std::optional<Hover> hoverAt(const Found& found, std::string_view text,
+                             char latheSystem) {
+  if (found.onSequence) {
+    const int jumps = jumpsTo(*found.program, *found.block);
+    return Hover{fmt::format("**N{}**: sequence number of {}{}",
+                             found.block->seq, found.program->name,
+                             jumps == 0
+                                 ? std::string()
+                                 : fmt::format("; {} GOTO{} to it", jumps,
+                                               jumps == 1 ? "" : "s")),
+                 sequenceRange(*found.block, text)};
+  }
+  const Expr* e = found.expr;
+  if (e != nullptr && e->kind == ExprKind::Var) {
+    return Hover{variableHover(e->var), e->range};
+  }
+  if (e != nullptr && e->kind == ExprKind::Call) {
+    return Hover{fmt::format("**{}**: a function of Custom Macro B",
+                             builtinName(e->builtin)),
+                 e->range};
+  }
+  const Word* w = found.word;
+  if (w != nullptr && w->value && w->value->kind == ExprKind::Number) {
+    const std::string_view written =
+        text.substr(w->range.begin.offset, w->range.length);
+    if (w->letter == 'G') {
+      return Hover{gCodeHover(written, w->value->number, latheSystem),
+                   w->range};
+    }
+    if (w->letter == 'M') {
+      return Hover{mCodeHover(written, w->value->number), w->range};
+    }
+  }
+  return std::nullopt;
+}
+
+} // namespace mbc::lsp

@@ -1,0 +1,192 @@
+// Definitions and symbols (see navigation.h).
+#include "lsp/navigation.h"
+
+#include <mbc/addresses.h>
+#include <mbc/arith.h>
+#include <mbc/calling_codes.h>
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace mbc::lsp {
+
+namespace {
+
+constexpr int kFunctionSymbol = 12;
+constexpr int kKeySymbol = 20;
+constexpr int kNamespaceSymbol = 3;
+
+std::optional<double> constantOf(const Expr* e) {
+  if (e != nullptr && e->kind == ExprKind::Number) {
+    return e->number;
+  }
+  return std::nullopt;
+}
+
+const Word* wordOf(const Stmt& s, char letter) {
+  for (const Word& w : s.words) {
+    if (w.letter == letter) {
+      return &w;
+    }
+  }
+  return nullptr;
+}
+
+bool hasCode(const Stmt& s, char letter, double code) {
+  for (const Word& w : s.words) {
+    if (w.letter == letter && constantOf(w.value.get()) == code) {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The program number a block calls by P (M98, M198, G65, G66, G66.1).
+std::optional<int> calledNumber(const Stmt& s) {
+  if (s.kind == StmtKind::MacroCall) {
+    if (const std::optional<double> p = constantOf(s.program.get())) {
+      return calledProgramNumber(*p);
+    }
+    return std::nullopt;
+  }
+  bool calls = false;
+  for (const Word& w : s.words) {
+    if (const std::optional<double> v = constantOf(w.value.get())) {
+      calls = calls || callsByP(w.letter, *v);
+    }
+  }
+  const Word* p = wordOf(s, 'P');
+  if (!calls || p == nullptr) {
+    return std::nullopt;
+  }
+  if (const std::optional<double> v = constantOf(p->value.get())) {
+    return calledProgramNumber(*v);
+  }
+  return std::nullopt;
+}
+
+SourceRange wholeProgram(const Program& p) {
+  SourceRange r = p.range;
+  if (!p.blocks.empty()) {
+    const SourceRange& last = p.blocks.back().range;
+    r.length = std::max(r.length, endOf(last) - r.begin.offset);
+  }
+  return r;
+}
+
+Place placeOf(const SourceRange& r) {
+  return {r.begin.file, r};
+}
+
+} // namespace
+
+std::vector<Place> definitionOf(const Found& found,
+                                const toolchain::CompiledUnit& cu) {
+  std::vector<Place> out;
+  if (found.block == nullptr ||
+      (found.expr != nullptr && found.expr->kind == ExprKind::Var)) {
+    return out;
+  }
+  const Stmt& s = found.block->stmt;
+  if (s.gotoBlock) {
+    const Block& target =
+        found.program->blocks[static_cast<std::size_t>(*s.gotoBlock)];
+    out.push_back(placeOf(target.range));
+    return out;
+  }
+  if (const std::optional<int> number = calledNumber(s)) {
+    for (const Program& p : cu.unit.programs) {
+      if (p.number == *number && !p.duplicate) {
+        out.push_back(placeOf(p.range));
+      }
+    }
+    return out;
+  }
+  if (const std::optional<Return> r = returnAt(found)) {
+    out = returnPlaces(cu.unit, *r);
+  }
+  return out;
+}
+
+std::optional<Return> returnAt(const Found& found) {
+  if (found.block == nullptr) {
+    return std::nullopt;
+  }
+  const Stmt& s = found.block->stmt;
+  const Word* p = wordOf(s, 'P');
+  if (s.kind != StmtKind::Nc || !hasCode(s, 'M', 99) || p == nullptr) {
+    return std::nullopt;
+  }
+  const std::optional<double> n = constantOf(p->value.get());
+  if (!n) {
+    return std::nullopt;
+  }
+  return Return{found.program->number, static_cast<int>(*n)};
+}
+
+std::vector<Place> returnPlaces(const Unit& unit, const Return& r) {
+  std::vector<Place> out;
+  for (const Program& caller : unit.programs) {
+    bool calls = caller.number == r.callee;
+    for (const Block& b : caller.blocks) {
+      calls = calls || calledNumber(b.stmt) == r.callee;
+    }
+    for (const Block& b : caller.blocks) {
+      if (calls && b.seq == r.seq) {
+        out.push_back(placeOf(b.range));
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<Symbol> documentSymbols(const toolchain::CompiledUnit& cu,
+                                    std::uint32_t file) {
+  std::vector<Symbol> out;
+  const std::string_view text = cu.sources.text(file);
+  for (const Program& p : cu.unit.programs) {
+    if (p.file != file) {
+      continue;
+    }
+    Symbol program{p.name,          "program", kFunctionSymbol,
+                   wholeProgram(p), p.range,   {}};
+    // The symbols the open DO loops hold, innermost last.
+    std::vector<Symbol*> open{&program};
+    std::vector<int> ends{-1};
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      const Block& b = p.blocks[i];
+      while (open.size() > 1 && ends.back() < static_cast<int>(i)) {
+        open.pop_back();
+        ends.pop_back();
+      }
+      if (b.seq >= 0) {
+        const SourceRange n = sequenceRange(b, text);
+        open.back()->children.push_back({fmt::format("N{}", b.seq),
+                                         "label",
+                                         kKeySymbol,
+                                         b.range,
+                                         n.length > 0 ? n : b.range,
+                                         {}});
+      }
+      if (b.stmt.kind == StmtKind::While &&
+          b.stmt.match > static_cast<int>(i)) {
+        const Block& end = p.blocks[static_cast<std::size_t>(b.stmt.match)];
+        SourceRange all = b.range;
+        all.length = endOf(end.range) - b.range.begin.offset;
+        open.back()->children.push_back({fmt::format("DO{}", b.stmt.loopId),
+                                         b.stmt.cond ? "WHILE loop" : "loop",
+                                         kNamespaceSymbol,
+                                         all,
+                                         b.range,
+                                         {}});
+        open.push_back(&open.back()->children.back());
+        ends.push_back(b.stmt.match);
+      }
+    }
+    out.push_back(std::move(program));
+  }
+  return out;
+}
+
+} // namespace mbc::lsp

@@ -1,0 +1,639 @@
+// The language server (see server.h).
+#include "lsp/server.h"
+
+#include <mbc/engine.h>
+#include <mbc/runtime.h>
+#include <mbc/version.h>
+
+#include <fmt/format.h>
+
+#include <condition_variable>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "lsp/ast_lookup.h"
+#include "lsp/hover.h"
+#include "lsp/message_stream.h"
+#include "lsp/navigation.h"
+#include "lsp/uri.h"
+
+namespace mbc::lsp {
+
+using nlohmann::json;
+
+namespace {
+
+// The protocol's error codes.
+constexpr int kParseError = -32700;
+constexpr int kInvalidRequest = -32600;
+constexpr int kMethodNotFound = -32601;
+constexpr int kInvalidParams = -32602;
+constexpr int kServerNotInitialized = -32002;
+constexpr int kRequestCancelled = -32800;
+constexpr int kContentModified = -32801;
+
+// window/logMessage types.
+constexpr int kLogError = 1;
+constexpr int kLogWarning = 2;
+
+constexpr int kSyncIncremental = 2;
+
+/// A string member of an object, or nothing.
+std::optional<std::string> text(const json& object, const char* key) {
+  if (!object.is_object()) {
+    return std::nullopt;
+  }
+  const auto it = object.find(key);
+  if (it == object.end() || !it->is_string()) {
+    return std::nullopt;
+  }
+  return it->get<std::string>();
+}
+
+std::optional<Position> positionOf(const json& p) {
+  if (!p.is_object() || !p.contains("line") || !p.contains("character") ||
+      !p["line"].is_number_integer() || !p["character"].is_number_integer()) {
+    return std::nullopt;
+  }
+  const auto line = p["line"].get<std::int64_t>();
+  const auto character = p["character"].get<std::int64_t>();
+  if (line < 0 || character < 0 || line > INT32_MAX || character > INT32_MAX) {
+    return std::nullopt;
+  }
+  return Position{static_cast<int>(line), static_cast<int>(character)};
+}
+
+std::optional<Range> rangeOfJson(const json& r) {
+  if (!r.is_object()) {
+    return std::nullopt;
+  }
+  const std::optional<Position> start = positionOf(r.value("start", json()));
+  const std::optional<Position> end = positionOf(r.value("end", json()));
+  if (!start || !end) {
+    return std::nullopt;
+  }
+  return Range{*start, *end};
+}
+
+json toJson(Position p) {
+  return {{"line", p.line}, {"character", p.character}};
+}
+
+/// Why a message cannot be taken as a request or notification, or "".
+std::string malformed(const json& message) {
+  if (!message.is_object()) {
+    return "a message must be a JSON object";
+  }
+  if (!message.contains("method")) {
+    return message.contains("id") ? "" : "a message without a method";
+  }
+  if (!message["method"].is_string()) {
+    return "a method must be a string";
+  }
+  if (message.contains("id") && !message["id"].is_string() &&
+      !message["id"].is_number_integer()) {
+    return "an id must be a number or a string";
+  }
+  return "";
+}
+
+/// A document the request names: params.textDocument.uri.
+std::optional<std::string> documentUri(const json& params) {
+  return params.is_object() ? text(params.value("textDocument", json()), "uri")
+                            : std::nullopt;
+}
+
+} // namespace
+
+void Server::respond(const json& id, json result) {
+  send_(
+      json{{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}}.dump(
+          -1, ' ', false, json::error_handler_t::replace));
+}
+
+void Server::fail(const json& id, int code, const std::string& message) {
+  send_(json{{"jsonrpc", "2.0"},
+             {"id", id},
+             {"error", {{"code", code}, {"message", message}}}}
+            .dump(-1, ' ', false, json::error_handler_t::replace));
+}
+
+void Server::notify(const std::string& method, json params) {
+  send_(json{{"jsonrpc", "2.0"}, {"method", method}, {"params", params}}.dump(
+      -1, ' ', false, json::error_handler_t::replace));
+}
+
+void Server::log(int type, const std::string& message) {
+  notify("window/logMessage", {{"type", type}, {"message", message}});
+}
+
+void Server::problem(const std::string& what) {
+  log(kLogError, "mbc lsp: " + what);
+}
+
+void Server::handleBatch(const std::vector<std::string>& bodies) {
+  std::vector<json> messages;
+  for (const std::string& body : bodies) {
+    json message = json::parse(body, nullptr, false);
+    if (message.is_discarded()) {
+      fail(nullptr, kParseError, "the message is not JSON");
+      continue;
+    }
+    if (const std::string why = malformed(message); !why.empty()) {
+      fail(message.is_object() ? message.value("id", json()) : json(),
+           kInvalidRequest, why);
+      continue;
+    }
+    messages.push_back(std::move(message));
+  }
+  // What later messages of the batch say of earlier ones.
+  std::set<json> cancelled;
+  std::map<std::string, std::size_t> lastChange;
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    const json& m = messages[i];
+    const std::string method = m.value("method", "");
+    const json& params = m.contains("params") ? m["params"] : json();
+    if (method == "$/cancelRequest" && params.is_object() &&
+        params.contains("id")) {
+      cancelled.insert(params["id"]);
+    }
+    if (method == "textDocument/didChange" ||
+        method == "textDocument/didClose") {
+      if (const std::optional<std::string> uri = documentUri(params)) {
+        lastChange[*uri] = i;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < messages.size() && !exited_; ++i) {
+    const json& m = messages[i];
+    bool stale = false;
+    if (const std::optional<std::string> uri =
+            documentUri(m.value("params", json()))) {
+      const auto change = lastChange.find(*uri);
+      stale = change != lastChange.end() && change->second > i;
+    }
+    dispatch(m, stale, m.contains("id") && cancelled.count(m["id"]) != 0);
+  }
+  // One analysis per changed document.
+  for (auto& [uri, doc] : documents_) {
+    if (!doc.published && !exited_) {
+      publish(doc);
+    }
+  }
+}
+
+void Server::dispatch(const json& message, bool stale, bool cancelled) {
+  if (!message.contains("method")) {
+    return; // a response: the server sends no requests yet
+  }
+  const std::string method = message["method"].get<std::string>();
+  const json params = message.value("params", json::object());
+  if (!message.contains("id")) {
+    notification(method, params);
+    return;
+  }
+  const json& id = message["id"];
+  if (cancelled) {
+    fail(id, kRequestCancelled, "cancelled");
+  } else if (stale && method != "initialize" && method != "shutdown") {
+    fail(id, kContentModified,
+         "the document changed after the request: ask again");
+  } else {
+    request(id, method, params);
+  }
+}
+
+void Server::request(const json& id, const std::string& method,
+                     const json& params) {
+  if (method == "initialize") {
+    if (initialized_) {
+      fail(id, kInvalidRequest, "initialize was sent twice");
+      return;
+    }
+    respond(id, initialize(params));
+    return;
+  }
+  if (!initialized_) {
+    fail(id, kServerNotInitialized, "initialize comes first");
+    return;
+  }
+  if (shutdown_) {
+    fail(id, kInvalidRequest, "the server is shutting down");
+    return;
+  }
+  if (method == "shutdown") {
+    shutdown_ = true;
+    respond(id, nullptr);
+    return;
+  }
+  using Handler = std::optional<json> (Server::*)(const json&);
+  static const std::map<std::string, Handler> kHandlers = {
+      {"textDocument/hover", &Server::hover},
+      {"textDocument/definition", &Server::definition},
+      {"textDocument/documentSymbol", &Server::documentSymbol},
+  };
+  const auto handler = kHandlers.find(method);
+  if (handler == kHandlers.end()) {
+    fail(id, kMethodNotFound, fmt::format("mbc lsp has no method {}", method));
+    return;
+  }
+  if (std::optional<json> result = (this->*handler->second)(params)) {
+    respond(id, std::move(*result));
+  } else {
+    fail(id, kInvalidParams,
+         fmt::format("{}: the parameters name no open document or place",
+                     method));
+  }
+}
+
+void Server::notification(const std::string& method, const json& params) {
+  if (method == "exit") {
+    exited_ = true;
+    return;
+  }
+  if (!initialized_ || shutdown_) {
+    return; // dropped, as the protocol says
+  }
+  const std::optional<std::string> uri = documentUri(params);
+  if (method == "textDocument/didOpen" && uri) {
+    const json& item = params["textDocument"];
+    const std::optional<std::string> body = text(item, "text");
+    if (!body) {
+      log(kLogWarning, fmt::format("didOpen of {} without its text", *uri));
+      return;
+    }
+    Document& doc = documents_[*uri];
+    doc.text =
+        std::make_unique<TextDocument>(*uri, item.value("version", 0), *body);
+    doc.analysis.reset();
+    doc.published = false;
+    return;
+  }
+  const auto it = uri ? documents_.find(*uri) : documents_.end();
+  if (it == documents_.end()) {
+    return; // a document not open (or a notification of no document)
+  }
+  Document& doc = it->second;
+  if (method == "textDocument/didChange") {
+    const json changes = params.value("contentChanges", json::array());
+    for (const json& change : changes.is_array() ? changes : json::array()) {
+      const std::optional<std::string> body = text(change, "text");
+      if (!body) {
+        continue;
+      }
+      const std::optional<Range> range = change.contains("range")
+                                             ? rangeOfJson(change["range"])
+                                             : std::nullopt;
+      if (change.contains("range") && !range) {
+        log(kLogWarning, fmt::format("a change of {} with a bad range", *uri));
+        continue;
+      }
+      doc.text->apply(range, *body, encoding_);
+    }
+    doc.text->setVersion(
+        params["textDocument"].value("version", doc.text->version()));
+    doc.analysis.reset();
+    doc.published = false;
+  } else if (method == "textDocument/didClose") {
+    notify("textDocument/publishDiagnostics",
+           {{"uri", *uri}, {"diagnostics", json::array()}});
+    documents_.erase(it);
+  }
+}
+
+json Server::initialize(const json& params) {
+  initialized_ = true;
+  // UTF-8 positions when the client takes them: no counting of UTF-16.
+  const json encodings = params.is_object()
+                             ? params.value("capabilities", json::object())
+                                   .value("general", json::object())
+                                   .value("positionEncodings", json::array())
+                             : json::array();
+  for (const json& e : encodings.is_array() ? encodings : json::array()) {
+    if (e == "utf-8") {
+      encoding_ = Encoding::Utf8;
+    }
+  }
+  readWorkspaceSettings(params);
+  return {
+      {"capabilities",
+       {{"positionEncoding", encoding_ == Encoding::Utf8 ? "utf-8" : "utf-16"},
+        {"textDocumentSync",
+         {{"openClose", true}, {"change", kSyncIncremental}}},
+        {"hoverProvider", true},
+        {"definitionProvider", true},
+        {"documentSymbolProvider", true}}},
+      {"serverInfo", {{"name", "mbc"}, {"version", MBC_VERSION_STRING}}}};
+}
+
+void Server::readWorkspaceSettings(const json& params) {
+  if (!params.is_object()) {
+    return;
+  }
+  std::optional<std::string> root;
+  if (const std::optional<std::string> uri = text(params, "rootUri")) {
+    root = pathOfUri(*uri);
+  } else if (params.contains("workspaceFolders") &&
+             params["workspaceFolders"].is_array() &&
+             !params["workspaceFolders"].empty()) {
+    if (const std::optional<std::string> folder =
+            text(params["workspaceFolders"][0], "uri")) {
+      root = pathOfUri(*folder);
+    }
+  }
+  // The workspace's mbc.json, then the client's initialization options.
+  json settings = json::object();
+  if (root) {
+    root_ = *root;
+    std::ifstream file(std::filesystem::path(*root) / "mbc.json");
+    if (file) {
+      settings = json::parse(file, nullptr, false);
+      if (!settings.is_object()) {
+        log(kLogError, "mbc lsp: mbc.json of the workspace is not a JSON "
+                       "object; it is left out");
+        settings = json::object();
+      }
+    }
+  }
+  if (params.contains("initializationOptions") &&
+      params["initializationOptions"].is_object()) {
+    settings.update(params["initializationOptions"]);
+  }
+  const auto inRoot = [&](const std::string& path) {
+    const std::filesystem::path p(path);
+    return p.is_absolute() || root_.empty()
+               ? p.string()
+               : (std::filesystem::path(root_) / p).string();
+  };
+  if (settings.contains("include") && settings["include"].is_array()) {
+    for (const json& dir : settings["include"]) {
+      if (dir.is_string()) {
+        userIncludes_.push_back(inRoot(dir.get<std::string>()));
+      }
+    }
+  }
+  if (const std::optional<std::string> machine = text(settings, "machine")) {
+    useMachine(inRoot(*machine));
+  }
+  std::vector<std::string> folders = userIncludes_;
+  if (!root_.empty()) {
+    folders.insert(folders.begin(), root_);
+  }
+  index_.scan(folders);
+}
+
+void Server::useMachine(const std::string& path) {
+  char err[512] = "";
+  mbrt_ctx* ctx = mbrt_create_from_file(path.c_str(), err, sizeof err);
+  if (ctx == nullptr) {
+    log(kLogError, fmt::format("mbc lsp: the machine profile {}: {}; the "
+                               "built-in machine is used",
+                               path, err));
+    return;
+  }
+  settings_.defaultMachine = false;
+  settings_.latheSystem = static_cast<char>(mbrt_lathe_system(ctx));
+  mbrt_stats stats{};
+  mbrt_get_stats(ctx, &stats);
+  settings_.inch = std::string_view(stats.unit) == "inch";
+  settings_.decimalPointInput =
+      (static_cast<long>(mbrt_parameter(ctx, 3401)) & 1) != 0;
+  mbrt_destroy(ctx);
+}
+
+void Server::analyse(Document& doc) {
+  if (doc.analysis) {
+    return;
+  }
+  const std::optional<std::string> path = pathOfUri(doc.text->uri());
+  AnalysisSettings settings = settings_;
+  // Called programs are found beside the document, in the folders the
+  // workspace names, and at its root.
+  if (path) {
+    settings.includeDirs.push_back(
+        std::filesystem::path(*path).parent_path().string());
+  }
+  settings.includeDirs.insert(settings.includeDirs.end(), userIncludes_.begin(),
+                              userIncludes_.end());
+  if (!root_.empty()) {
+    settings.includeDirs.push_back(root_);
+  }
+  doc.analysis = lsp::analyse(path.value_or(doc.text->uri()), doc.text->text(),
+                              settings, index_);
+}
+
+std::string Server::uriOf(std::uint32_t file, const Analysis& analysis,
+                          const TextDocument& doc) const {
+  if (file == 0) {
+    return doc.uri();
+  }
+  std::error_code error;
+  const std::filesystem::path absolute =
+      std::filesystem::absolute(analysis.cu.sources.name(file), error);
+  return uriOfPath(error ? analysis.cu.sources.name(file) : absolute.string());
+}
+
+json Server::rangeOf(const SourceRange& range, const Analysis& analysis,
+                     const TextDocument& doc) const {
+  const auto toRange = [&](const TextDocument& text) {
+    return json{
+        {"start", toJson(text.positionOf(range.begin.offset, encoding_))},
+        {"end", toJson(text.positionOf(endOf(range), encoding_))}};
+  };
+  if (range.begin.file == 0) {
+    return toRange(doc);
+  }
+  return toRange(TextDocument(
+      "", 0, std::string(analysis.cu.sources.text(range.begin.file))));
+}
+
+void Server::publish(Document& doc) {
+  analyse(doc);
+  const Analysis& analysis = *doc.analysis;
+  json diagnostics = json::array();
+  for (std::size_t i = 0; i < analysis.diagnostics.size(); ++i) {
+    const Diagnostic& d = analysis.diagnostics[i];
+    if (d.range.begin.file != 0 && d.kind != DiagKind::TooManyErrors) {
+      continue; // a called program's: its own document says it
+    }
+    const char* flag = warningFlag(d.kind);
+    json one = {{"range", rangeOf(d.range, analysis, *doc.text)},
+                {"severity", analysis.severities[i] == Severity::Error ? 1 : 2},
+                {"code", flag != nullptr ? flag : kindName(d.kind)},
+                {"source", "mbc"},
+                {"message", d.message}};
+    json related = json::array();
+    for (const Diagnostic& note : d.notes) {
+      related.push_back(
+          {{"location",
+            {{"uri", uriOf(note.range.begin.file, analysis, *doc.text)},
+             {"range", rangeOf(note.range, analysis, *doc.text)}}},
+           {"message", note.message}});
+    }
+    if (!related.empty()) {
+      one["relatedInformation"] = related;
+    }
+    diagnostics.push_back(std::move(one));
+  }
+  if (!analysis.failure.empty()) {
+    log(kLogWarning, "mbc lsp: " + analysis.failure);
+  }
+  notify("textDocument/publishDiagnostics", {{"uri", doc.text->uri()},
+                                             {"version", doc.text->version()},
+                                             {"diagnostics", diagnostics}});
+  doc.published = true;
+}
+
+Server::Document* Server::document(const json& params) {
+  const std::optional<std::string> uri = documentUri(params);
+  const auto it = uri ? documents_.find(*uri) : documents_.end();
+  if (it == documents_.end()) {
+    return nullptr;
+  }
+  analyse(it->second);
+  return &it->second;
+}
+
+std::optional<Server::Place> Server::placeOf(const json& params) {
+  Document* doc = document(params);
+  const std::optional<Position> at =
+      positionOf(params.value("position", json()));
+  if (doc == nullptr || !at) {
+    return std::nullopt;
+  }
+  const auto offset =
+      static_cast<std::uint32_t>(doc->text->offsetOf(*at, encoding_));
+  return Place{doc,
+               findAt(doc->analysis->cu.unit, 0, doc->text->text(), offset)};
+}
+
+std::optional<json> Server::hover(const json& params) {
+  const std::optional<Place> place = placeOf(params);
+  if (!place) {
+    return std::nullopt;
+  }
+  const Document& doc = *place->doc;
+  const std::optional<Hover> hover =
+      hoverAt(place->found, doc.text->text(), settings_.latheSystem);
+  if (!hover) {
+    return json(nullptr);
+  }
+  return json{{"contents", {{"kind", "markdown"}, {"value", hover->markdown}}},
+              {"range", rangeOf(hover->range, *doc.analysis, *doc.text)}};
+}
+
+std::optional<json> Server::definition(const json& params) {
+  const std::optional<Place> at = placeOf(params);
+  if (!at) {
+    return std::nullopt;
+  }
+  Document* doc = at->doc;
+  const Analysis& analysis = *doc->analysis;
+  const Found& found = at->found;
+  json out = json::array();
+  for (const lsp::Place& place : definitionOf(found, analysis.cu)) {
+    out.push_back({{"uri", uriOf(place.file, analysis, *doc->text)},
+                   {"range", rangeOf(place.range, analysis, *doc->text)}});
+  }
+  // M99 P returns into the callers, which other open documents may hold.
+  if (const std::optional<Return> r = returnAt(found)) {
+    for (auto& [uri, other] : documents_) {
+      if (&other == doc) {
+        continue;
+      }
+      analyse(other);
+      for (const lsp::Place& place :
+           returnPlaces(other.analysis->cu.unit, *r)) {
+        if (place.file == 0) {
+          out.push_back(
+              {{"uri", uri},
+               {"range", rangeOf(place.range, *other.analysis, *other.text)}});
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::optional<json> Server::documentSymbol(const json& params) {
+  Document* doc = document(params);
+  if (doc == nullptr) {
+    return std::nullopt;
+  }
+  const Analysis& analysis = *doc->analysis;
+  const std::function<json(const Symbol&)> toJsonSymbol = [&](const Symbol& s) {
+    json children = json::array();
+    for (const Symbol& child : s.children) {
+      children.push_back(toJsonSymbol(child));
+    }
+    return json{{"name", s.name},
+                {"detail", s.detail},
+                {"kind", s.kind},
+                {"range", rangeOf(s.range, analysis, *doc->text)},
+                {"selectionRange", rangeOf(s.selection, analysis, *doc->text)},
+                {"children", children}};
+  };
+  json out = json::array();
+  for (const Symbol& s : documentSymbols(analysis.cu, 0)) {
+    out.push_back(toJsonSymbol(s));
+  }
+  return out;
+}
+
+int runServer(std::FILE* in, std::FILE* out) {
+  // The reader runs ahead on its own thread, so that a batch holds every
+  // message that arrived while the last one was served. It may still wait
+  // for input when the server exits: it owns the queue with it.
+  struct Queue {
+    std::mutex mutex;
+    std::condition_variable ready;
+    std::deque<Incoming> items;
+    bool ended = false;
+  };
+
+  const auto queue = std::make_shared<Queue>();
+  std::thread([queue, in] {
+    FileSource source(in);
+    MessageReader messages(source);
+    for (;;) {
+      Incoming next = messages.next();
+      const std::lock_guard lock(queue->mutex);
+      if (next.kind == Incoming::Kind::End) {
+        queue->ended = true;
+        queue->ready.notify_one();
+        return;
+      }
+      queue->items.push_back(std::move(next));
+      queue->ready.notify_one();
+    }
+  }).detach();
+  Server server([out](const std::string& body) { writeMessage(out, body); });
+  while (!server.exited()) {
+    std::deque<Incoming> batch;
+    {
+      std::unique_lock lock(queue->mutex);
+      queue->ready.wait(lock,
+                        [&] { return queue->ended || !queue->items.empty(); });
+      if (queue->items.empty()) {
+        break; // the input ended without exit
+      }
+      batch.swap(queue->items);
+    }
+    std::vector<std::string> bodies;
+    for (Incoming& item : batch) {
+      if (item.kind == Incoming::Kind::Problem) {
+        server.problem(item.problem);
+      } else {
+        bodies.push_back(std::move(item.body));
+      }
+    }
+    server.handleBatch(bodies);
+  }
+  return server.exitCode();
+}
+
+} // namespace mbc::lsp

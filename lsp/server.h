@@ -1,0 +1,102 @@
+// `mbc lsp`: a Language Server Protocol (3.17) server over the input and
+// output it is given. The server takes the client's messages in batches
+// (all that have arrived): a request a later message of the batch cancels,
+// or whose document a later change makes stale, is answered as such
+// rather than computed; the documents changed are analysed once per batch
+// and their diagnostics published.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lsp/analysis.h"
+#include "lsp/ast_lookup.h"
+#include "lsp/program_index.h"
+#include "lsp/text_document.h"
+
+namespace mbc::lsp {
+
+class Server {
+public:
+  using Send = std::function<void(const std::string&)>;
+
+  explicit Server(Send send) : send_(std::move(send)) {}
+
+  /// The messages that arrived together, in order.
+  void handleBatch(const std::vector<std::string>& bodies);
+
+  /// A message the input could not frame: said in the client's log.
+  void problem(const std::string& what);
+
+  bool exited() const { return exited_; }
+
+  /// 0 when the client asked to shut down before it said exit.
+  int exitCode() const { return shutdown_ ? 0 : 1; }
+
+private:
+  struct Document {
+    std::unique_ptr<TextDocument> text;
+    std::unique_ptr<Analysis> analysis; // null until analysed again
+    bool published = false;
+  };
+
+  void dispatch(const nlohmann::json& message, bool stale, bool cancelled);
+  void request(const nlohmann::json& id, const std::string& method,
+               const nlohmann::json& params);
+  void notification(const std::string& method, const nlohmann::json& params);
+
+  nlohmann::json initialize(const nlohmann::json& params);
+  void readWorkspaceSettings(const nlohmann::json& params);
+  void useMachine(const std::string& path);
+
+  std::optional<nlohmann::json> hover(const nlohmann::json& params);
+  std::optional<nlohmann::json> definition(const nlohmann::json& params);
+  std::optional<nlohmann::json> documentSymbol(const nlohmann::json& params);
+
+  /// The open document a request names, analysed; nullptr if none.
+  Document* document(const nlohmann::json& params);
+
+  /// What a request at a place (textDocument and position) is about.
+  struct Place {
+    Document* doc;
+    Found found;
+  };
+
+  std::optional<Place> placeOf(const nlohmann::json& params);
+  void analyse(Document& doc);
+  void publish(Document& doc);
+
+  nlohmann::json rangeOf(const SourceRange& range, const Analysis& analysis,
+                         const TextDocument& doc) const;
+  std::string uriOf(std::uint32_t file, const Analysis& analysis,
+                    const TextDocument& doc) const;
+
+  void respond(const nlohmann::json& id, nlohmann::json result);
+  void fail(const nlohmann::json& id, int code, const std::string& message);
+  void notify(const std::string& method, nlohmann::json params);
+  void log(int type, const std::string& message);
+
+  Send send_;
+  bool initialized_ = false;
+  bool shutdown_ = false;
+  bool exited_ = false;
+  Encoding encoding_ = Encoding::Utf16;
+  std::string root_;
+  AnalysisSettings settings_;
+  std::vector<std::string> userIncludes_;
+  ProgramIndex index_;
+  std::map<std::string, Document> documents_;
+};
+
+/// Serves `in` and `out` until the client says exit or the input ends;
+/// the exit status.
+int runServer(std::FILE* in, std::FILE* out);
+
+} // namespace mbc::lsp

@@ -1,0 +1,390 @@
+#!/usr/bin/env python3
+"""`mbc lsp` held to the Language Server Protocol by a client of its own.
+
+Each check starts the server, speaks to it over its standard input and
+output as an editor does (Content-Length framing, JSON-RPC 2.0), and checks
+what it answers on shop-style programs in a workspace of their own:
+lifecycle, diagnostics and their edits, hover, go to definition, document
+symbols, positions in UTF-16, cancelled and stale requests, and input that
+is not what the protocol allows.
+
+    lsp_protocol.py MBC
+"""
+
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+MBC = sys.argv[1]
+TIMEOUT = 60
+# The workspace's programs (tests/lsp), which tests/lsp_neovim.sh opens too.
+FIXTURES = pathlib.Path(__file__).resolve().parent / "lsp"
+PART = (FIXTURES / "part.nc").read_text()
+LIBRARY = (FIXTURES / "library.nc").read_text()
+
+
+
+
+class Client:
+    """One server process and what it sent."""
+
+    def __init__(self, root):
+        self.proc = subprocess.Popen([MBC, "lsp"], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE)
+        self.root = root
+        self.next_id = 1
+        self.messages = []
+        self.cond = threading.Condition()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        out = self.proc.stdout
+        while True:
+            length = None
+            while True:
+                line = out.readline()
+                if not line:
+                    return
+                if line in (b"\r\n", b"\n"):
+                    break
+                name, _, value = line.decode().partition(":")
+                if name.lower() == "content-length":
+                    length = int(value)
+            body = json.loads(out.read(length))
+            with self.cond:
+                self.messages.append(body)
+                self.cond.notify_all()
+
+    def raw(self, data):
+        self.proc.stdin.write(data)
+        self.proc.stdin.flush()
+
+    def frame(self, message):
+        body = json.dumps(message).encode()
+        return b"Content-Length: %d\r\n\r\n" % len(body) + body
+
+    def send(self, message):
+        self.raw(self.frame(message))
+
+    def request(self, method, params=None, send=True):
+        ident = self.next_id
+        self.next_id += 1
+        message = {"jsonrpc": "2.0", "id": ident, "method": method}
+        if params is not None:
+            message["params"] = params
+        if send:
+            self.send(message)
+        return ident, message
+
+    def notify(self, method, params):
+        self.send({"jsonrpc": "2.0", "method": method, "params": params})
+
+    def wait(self, test, what):
+        deadline = time.time() + TIMEOUT
+        with self.cond:
+            while True:
+                for m in self.messages:
+                    if test(m):
+                        self.messages.remove(m)
+                        return m
+                left = deadline - time.time()
+                if left <= 0 or self.proc.poll() is not None and not any(
+                        test(m) for m in self.messages):
+                    if left > 0:
+                        self.cond.wait(0.2)
+                        if any(test(m) for m in self.messages):
+                            continue
+                    raise AssertionError(f"no {what} from the server")
+                self.cond.wait(left)
+
+    def response(self, ident):
+        return self.wait(lambda m: m.get("id") == ident and "method" not in m,
+                         f"response to request {ident}")
+
+    def call(self, method, params=None):
+        return self.response(self.request(method, params)[0])
+
+    def ask(self, method, uri, line, character):
+        """The result of a request at a place of a document."""
+        return self.call(method, at(uri, line, character))["result"]
+
+    def diagnostics(self, uri, version=None):
+        return self.wait(
+            lambda m: m.get("method") == "textDocument/publishDiagnostics"
+            and m["params"]["uri"] == uri
+            and (version is None or m["params"].get("version") == version),
+            f"diagnostics of {uri}")["params"]["diagnostics"]
+
+    def start(self, options=None, encodings=None):
+        params = {"processId": None, "rootUri": self.root.as_uri(),
+                  "capabilities": {}}
+        if encodings:
+            params["capabilities"]["general"] = {"positionEncodings": encodings}
+        if options is not None:
+            params["initializationOptions"] = options
+        result = self.call("initialize", params)["result"]
+        self.notify("initialized", {})
+        return result
+
+    def open(self, name, text, version=1):
+        uri = (self.root / name).as_uri()
+        self.notify("textDocument/didOpen", {"textDocument": {
+            "uri": uri, "languageId": "fanuc-macro-b", "version": version,
+            "text": text}})
+        return uri
+
+    def stop(self):
+        assert self.call("shutdown")["result"] is None
+        self.notify("exit", {})
+        return self.proc.wait(TIMEOUT)
+
+
+def at(uri, line, character):
+    return {"textDocument": {"uri": uri},
+            "position": {"line": line, "character": character}}
+
+
+def expect(condition, what):
+    if not condition:
+        raise AssertionError(what)
+
+
+def workspace(tmp):
+    (tmp / "part.nc").write_text(PART)
+    (tmp / "lib").mkdir()
+    (tmp / "lib" / "library.nc").write_text(LIBRARY)
+    (tmp / "mbc.json").write_text(json.dumps({"include": ["lib"]}))
+    return tmp
+
+
+def with_part(tmp):
+    """A started server with part.nc open and analysed."""
+    c = Client(tmp)
+    c.start()
+    uri = c.open("part.nc", PART)
+    c.diagnostics(uri)
+    return c, uri
+
+
+def check_lifecycle(tmp):
+    c = Client(tmp)
+    early = c.call("textDocument/hover", at("file:///x.nc", 0, 0))
+    expect(early["error"]["code"] == -32002, f"before initialize: {early}")
+    caps = c.start()["capabilities"]
+    for capability in ("hoverProvider", "definitionProvider",
+                       "documentSymbolProvider"):
+        expect(caps.get(capability) is True, f"{capability} in {caps}")
+    expect(caps["textDocumentSync"]["change"] == 2, "incremental sync")
+    expect(caps["positionEncoding"] == "utf-16", "UTF-16 by default")
+    again = c.call("initialize", {"capabilities": {}})
+    expect(again["error"]["code"] == -32600, f"initialize twice: {again}")
+    expect(c.call("shutdown")["result"] is None, "shutdown")
+    late = c.call("textDocument/hover", at("file:///x.nc", 0, 0))
+    expect(late["error"]["code"] == -32600, f"after shutdown: {late}")
+    c.notify("exit", {})
+    expect(c.proc.wait(TIMEOUT) == 0, "exit after shutdown is status 0")
+    # Exit without shutdown, and an input that ends: status 1.
+    c = Client(tmp)
+    c.start()
+    c.notify("exit", {})
+    expect(c.proc.wait(TIMEOUT) == 1, "exit without shutdown is status 1")
+    c = Client(tmp)
+    c.start()
+    c.proc.stdin.close()
+    expect(c.proc.wait(TIMEOUT) == 1, "end of input is status 1")
+
+
+def check_diagnostics_and_edits(tmp):
+    c = Client(tmp)
+    c.start()
+    text = PART.replace("#1=#1+1", "#1=[#1+")
+    uri = c.open("part.nc", text)
+    diags = c.diagnostics(uri, 1)
+    errors = [d for d in diags if d["severity"] == 1]
+    expect(len(errors) == 1 and errors[0]["range"]["start"]["line"] == 11,
+           f"one error on line 12: {diags}")
+    expect(errors[0]["source"] == "mbc", "source")
+    # Called programs come from the workspace's library folder (mbc.json):
+    # no missing-program warning.
+    expect(not any(d["code"] == "missing-program" for d in diags),
+           f"the library's programs are found: {diags}")
+    # An incremental edit mends the line; the error goes.
+    line = text.splitlines()[11]
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 2},
+        "contentChanges": [{"range": {
+            "start": {"line": 11, "character": 0},
+            "end": {"line": 11, "character": len(line)}},
+            "text": "#1=#1+1"}]})
+    diags = c.diagnostics(uri, 2)
+    expect(not any(d["severity"] == 1 for d in diags), f"mended: {diags}")
+    # A warning with a note: a vacant local reaching an address.
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 3},
+        "contentChanges": [{"text": "%\nO1001(FACE)\nG90G00X#24Y0\nM30\n%\n"}]})
+    diags = c.diagnostics(uri, 3)
+    vacant = [d for d in diags if d["code"] == "vacant-address"]
+    expect(vacant and vacant[0]["severity"] == 2, f"vacant-address: {diags}")
+    related = vacant[0].get("relatedInformation", [])
+    expect(related and related[0]["location"]["uri"] == uri,
+           f"the note as related information: {vacant}")
+    c.notify("textDocument/didClose", {"textDocument": {"uri": uri}})
+    expect(c.diagnostics(uri) == [], "closing clears the diagnostics")
+    expect(c.stop() == 0, "clean exit")
+
+
+def check_hover(tmp):
+    c, uri = with_part(tmp)
+
+    def hover(line, character):
+        result = c.ask("textDocument/hover", uri, line, character)
+        return result["contents"]["value"] if result else ""
+
+    g01 = hover(10, 1)
+    expect("**G01**" in g01 and "linear interpolation" in g01
+           and "modal group 01" in g01, f"G01: {g01}")
+    expect("machine coordinates" in hover(13, 5), "#5021")
+    expect("Read only" in hover(13, 5), "#5021 is read only")
+    m98 = hover(14, 1)
+    expect("subprogram call" in m98, f"M98: {m98}")
+    label = hover(16, 1)
+    expect("N100" in label and "1 GOTO" in label, f"N100: {label}")
+    lib = c.open("lib/library.nc", LIBRARY)
+    c.diagnostics(lib)
+    arg = c.call("textDocument/hover", at(lib, 5, 8))["result"]
+    expect(arg and "argument `X`" in arg["contents"]["value"],
+           f"#24 names its argument: {arg}")
+    # A G code mbc does not execute, and one FANUC does not have.
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 2},
+        "contentChanges": [{"text": "%\nO1(X)\nG12.1\nG04.7\nM30\n%\n"}]})
+    c.diagnostics(uri, 2)
+    expect("does not execute it yet" in hover(2, 1), "G12.1 unmodelled")
+    expect("not a G code" in hover(3, 1), "G04.7 is none")
+    expect(c.call("textDocument/hover", at(uri, 0, 0))["result"] is None,
+           "nothing to say on %")
+    expect(c.stop() == 0, "clean exit")
+
+
+def check_definition_and_symbols(tmp):
+    c, uri = with_part(tmp)
+
+    goto = c.ask("textDocument/definition", uri, 13, 17)
+    expect(len(goto) == 1 and goto[0]["uri"] == uri
+           and goto[0]["range"]["start"]["line"] == 16, f"GOTO100: {goto}")
+    library = (tmp / "lib" / "library.nc").as_uri()
+    m98 = c.ask("textDocument/definition", uri, 14, 4)
+    expect(len(m98) == 1 and m98[0]["uri"] == library
+           and m98[0]["range"]["start"]["line"] == 1, f"M98P2000: {m98}")
+    g65 = c.ask("textDocument/definition", uri, 15, 4)
+    expect(len(g65) == 1 and g65[0]["range"]["start"]["line"] == 4,
+           f"G65P9040: {g65}")
+    lib = c.open("lib/library.nc", LIBRARY)
+    c.diagnostics(lib)
+    back = c.call("textDocument/definition", at(lib, 6, 2))["result"]
+    expect(any(d["uri"] == uri and d["range"]["start"]["line"] == 16
+               for d in back), f"M99P100 returns to the caller's N100: {back}")
+    symbols = c.call("textDocument/documentSymbol",
+                     {"textDocument": {"uri": uri}})["result"]
+    expect([s["name"] for s in symbols] == ["O1000"], f"programs: {symbols}")
+    children = [s["name"] for s in symbols[0]["children"]]
+    expect(children == ["DO1", "N100"], f"loop and label: {children}")
+    expect(c.stop() == 0, "clean exit")
+
+
+def check_positions(tmp):
+    # A character beyond the BMP counts two UTF-16 units, one character in
+    # UTF-8 its four bytes.
+    text = "%\nO1002\n(\U0001F600 FACE)G90G01X1.F100.\nM30\n%\n"
+    for encodings, column in ((None, 12), (["utf-8"], 14)):
+        c = Client(tmp)
+        caps = c.start(encodings=encodings)["capabilities"]
+        uri = c.open("emoji.nc", text)
+        c.diagnostics(uri)
+        hover = c.call("textDocument/hover", at(uri, 2, column + 1))["result"]
+        expect(hover and "G01" in hover["contents"]["value"],
+               f"{caps['positionEncoding']}: G01 at {column + 1}: {hover}")
+        start = hover["range"]["start"]["character"]
+        expect(start == column, f"{caps['positionEncoding']}: {start}")
+        expect(c.stop() == 0, "clean exit")
+
+
+def check_cancel_and_stale(tmp):
+    c = Client(tmp)
+    c.start()
+    # A long document keeps the server busy while the next messages arrive
+    # together.
+    big = "%\nO5000(3D FINISH)\n" + "".join(
+        f"G01X{i % 97}.Y{i % 89}.Z-{i % 7}.F1500.\n" for i in range(60000)) \
+        + "M30\n%\n"
+    slow = c.open("big.nc", big)
+    uri = c.open("part.nc", PART)
+    ident, hover = c.request("textDocument/hover", at(uri, 10, 1), send=False)
+    cancel = c.frame({"jsonrpc": "2.0", "method": "$/cancelRequest",
+                      "params": {"id": ident}})
+    c.raw(c.frame(hover) + cancel)
+    expect(c.response(ident)["error"]["code"] == -32800, "cancelled")
+    ident, hover = c.request("textDocument/hover", at(slow, 1, 1), send=False)
+    change = c.frame({"jsonrpc": "2.0", "method": "textDocument/didChange",
+                      "params": {"textDocument": {"uri": slow, "version": 2},
+                                 "contentChanges": [{"text": "%\nO1(X)\n%\n"}]}})
+    c.raw(c.frame(hover) + change)
+    expect(c.response(ident)["error"]["code"] == -32801, "stale")
+    expect(c.stop() == 0, "clean exit")
+
+
+def check_bad_input(tmp):
+    c = Client(tmp)
+    c.start()
+    c.raw(b"Content-Length: 9\r\n\r\n{not json")
+    expect(c.wait(lambda m: m.get("error", {}).get("code") == -32700,
+                  "parse error")["id"] is None, "a parse error has no id")
+    unknown = c.call("workspace/dance", {})
+    expect(unknown["error"]["code"] == -32601, f"unknown method: {unknown}")
+    bad = c.call("textDocument/hover", {"textDocument": {"uri": 5}})
+    expect(bad["error"]["code"] == -32602, f"bad params: {bad}")
+    c.send({"jsonrpc": "2.0", "id": 99, "method": 7})
+    expect(c.response(99)["error"]["code"] == -32600, "method not a string")
+    # Framing errors are logged and reading goes on.
+    c.raw(b"Content-Type: x\r\n\r\n")
+    c.raw(b"Content-Length: banana\r\n\r\n")
+    c.raw(b"no colon here\r\n\r\n")
+    logs = [c.wait(lambda m: m.get("method") == "window/logMessage",
+                   "a log of the bad header")["params"]["message"]
+            for _ in range(3)]
+    expect(all("mbc lsp" in log for log in logs), f"logged: {logs}")
+    # A document that is no Macro B, and one of 100 000 lines.
+    uri = c.open("notes.py", "import os\nprint('\\x00 \u00e9')\n" * 50)
+    expect(isinstance(c.diagnostics(uri), list), "a Python file")
+    big = "%\nO6000\n" + "G01X1.Y2.F100.\n" * 100000 + "M30\n%\n"
+    uri = c.open("huge.nc", big)
+    c.diagnostics(uri)
+    symbols = c.call("textDocument/documentSymbol",
+                     {"textDocument": {"uri": uri}})["result"]
+    expect(symbols[0]["name"] == "O6000", "the huge program's symbol")
+    expect(c.stop() == 0, "the server survived it all")
+
+
+def main():
+    checks = [check_lifecycle, check_diagnostics_and_edits, check_hover,
+              check_definition_and_symbols, check_positions,
+              check_cancel_and_stale, check_bad_input]
+    failures = 0
+    for check in checks:
+        with tempfile.TemporaryDirectory() as tmp:
+            try:
+                check(workspace(pathlib.Path(tmp)))
+                print(f"ok   {check.__name__}")
+            except AssertionError as e:
+                failures += 1
+                print(f"FAIL {check.__name__}: {e}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
