@@ -235,6 +235,7 @@ void Server::request(const json& id, const std::string& method,
       {"textDocument/hover", &Server::hover},
       {"textDocument/definition", &Server::definition},
       {"textDocument/documentSymbol", &Server::documentSymbol},
+      {"textDocument/codeAction", &Server::codeAction},
   };
   const auto handler = kHandlers.find(method);
   if (handler == kHandlers.end()) {
@@ -326,7 +327,8 @@ json Server::initialize(const json& params) {
          {{"openClose", true}, {"change", kSyncIncremental}}},
         {"hoverProvider", true},
         {"definitionProvider", true},
-        {"documentSymbolProvider", true}}},
+        {"documentSymbolProvider", true},
+        {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}}}},
       {"serverInfo", {{"name", "mbc"}, {"version", MBC_VERSION_STRING}}}};
 }
 
@@ -580,6 +582,55 @@ std::optional<json> Server::documentSymbol(const json& params) {
   json out = json::array();
   for (const Symbol& s : documentSymbols(analysis.cu, 0)) {
     out.push_back(toJsonSymbol(s));
+  }
+  return out;
+}
+
+std::optional<json> Server::codeAction(const json& params) {
+  Document* doc = document(params);
+  const std::optional<Range> range = rangeOfJson(params.value("range", json()));
+  if (doc == nullptr || !range) {
+    return std::nullopt;
+  }
+  const Analysis& analysis = *doc->analysis;
+  // The lines asked about, whole: an editor asks at the cursor.
+  const std::size_t begin =
+      doc->text->offsetOf({range->start.line, 0}, encoding_);
+  const std::size_t end =
+      doc->text->offsetOf({range->end.line + 1, 0}, encoding_);
+  json out = json::array();
+  // Each fix-it of a diagnostic there, as a quick fix that edits the
+  // document as the fix-it says.
+  for (const Diagnostic& d : analysis.diagnostics) {
+    if (d.range.begin.file != 0 || d.fixIts.empty() || endOf(d.range) < begin ||
+        d.range.begin.offset > end) {
+      continue;
+    }
+    json edits = json::array();
+    std::string title;
+    for (const FixIt& fix : d.fixIts) {
+      edits.push_back({{"range", rangeOf(fix.range, analysis, *doc->text)},
+                       {"newText", fix.replacement}});
+      const std::string_view replaced =
+          std::string_view(doc->text->text())
+              .substr(fix.range.begin.offset, fix.range.length);
+      title =
+          fix.range.length == 0 ? fmt::format("Insert '{}'", fix.replacement)
+          : fix.replacement.empty() ? fmt::format("Remove '{}'", replaced)
+                                    : fmt::format("Replace '{}' with '{}'",
+                                                  replaced, fix.replacement);
+    }
+    const char* flag = warningFlag(d.kind);
+    out.push_back(
+        {{"title", d.fixIts.size() == 1 ? title : "Apply mbc's fix-its"},
+         {"kind", "quickfix"},
+         {"isPreferred", true},
+         {"diagnostics",
+          json::array({{{"range", rangeOf(d.range, analysis, *doc->text)},
+                        {"message", d.message},
+                        {"source", "mbc"},
+                        {"code", flag != nullptr ? flag : kindName(d.kind)}}})},
+         {"edit", {{"changes", {{doc->text->uri(), edits}}}}}});
   }
   return out;
 }

@@ -59,6 +59,7 @@ private:
   std::optional<nlohmann::json> hover(const nlohmann::json& params);
   std::optional<nlohmann::json> definition(const nlohmann::json& params);
   std::optional<nlohmann::json> documentSymbol(const nlohmann::json& params);
+  std::optional<nlohmann::json> codeAction(const nlohmann::json& params);
 
   /// The open document a request names, analysed; nullptr if none.
   Document* document(const nlohmann::json& params);

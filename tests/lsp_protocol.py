@@ -238,6 +238,40 @@ def check_diagnostics_and_edits(tmp):
     expect(c.stop() == 0, "clean exit")
 
 
+def check_code_actions(tmp):
+    c = Client(tmp)
+    caps = c.start()["capabilities"]
+    expect(caps["codeActionProvider"]["codeActionKinds"] == ["quickfix"],
+           f"quick fixes: {caps}")
+    text = "%\nO1003(WINDOW)\n#1=5.\nIF[#1=5.]GOTO10\nN10M30\n%\n"
+    uri = c.open("window.nc", text)
+    diags = c.diagnostics(uri, 1)
+    expect(any(d["severity"] == 1 for d in diags), f"'=' in IF: {diags}")
+    actions = c.call("textDocument/codeAction", {
+        "textDocument": {"uri": uri},
+        "range": {"start": {"line": 3, "character": 0},
+                  "end": {"line": 3, "character": 0}},
+        "context": {"diagnostics": diags}})["result"]
+    expect(len(actions) == 1 and actions[0]["title"] == "Replace '=' with 'EQ'"
+           and actions[0]["kind"] == "quickfix", f"the fix-it: {actions}")
+    edit = actions[0]["edit"]["changes"][uri][0]
+    expect(edit["range"]["start"] == {"line": 3, "character": 5}
+           and edit["newText"] == "EQ", f"the edit: {edit}")
+    # The editor applies it: the error goes.
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 2},
+        "contentChanges": [{"range": edit["range"], "text": edit["newText"]}]})
+    expect(not any(d["severity"] == 1 for d in c.diagnostics(uri, 2)),
+           "fixed")
+    none = c.call("textDocument/codeAction", {
+        "textDocument": {"uri": uri},
+        "range": {"start": {"line": 1, "character": 0},
+                  "end": {"line": 1, "character": 0}},
+        "context": {"diagnostics": []}})["result"]
+    expect(none == [], f"no fix on a line without one: {none}")
+    expect(c.stop() == 0, "clean exit")
+
+
 def check_hover(tmp):
     c, uri = with_part(tmp)
 
@@ -371,7 +405,8 @@ def check_bad_input(tmp):
 
 
 def main():
-    checks = [check_lifecycle, check_diagnostics_and_edits, check_hover,
+    checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
+              check_hover,
               check_definition_and_symbols, check_positions,
               check_cancel_and_stale, check_bad_input]
     failures = 0
