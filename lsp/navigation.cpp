@@ -1,13 +1,16 @@
 // Definitions and symbols (see navigation.h).
 #include "lsp/navigation.h"
 
+#include "frontend/called_programs.h"
 #include <mbc/addresses.h>
 #include <mbc/arith.h>
 #include <mbc/calling_codes.h>
+#include <mbc/limits.h>
 
 #include <fmt/format.h>
 
 #include <optional>
+#include <set>
 
 namespace mbc::lsp {
 
@@ -137,6 +140,129 @@ std::vector<Place> returnPlaces(const Unit& unit, const Return& r) {
         out.push_back(placeOf(b.range));
       }
     }
+  }
+  return out;
+}
+
+namespace {
+
+/// Calls `visit` on every expression of a statement, inner ones included.
+template <typename Visit> void eachExpr(const Expr* e, Visit& visit) {
+  if (e == nullptr) {
+    return;
+  }
+  visit(*e);
+  for (const ExprPtr& arg : e->args) {
+    eachExpr(arg.get(), visit);
+  }
+}
+
+template <typename Visit> void eachExpr(const Stmt& s, Visit visit) {
+  for (const std::vector<Word>* words : {&s.words, &s.leadCodes}) {
+    for (const Word& w : *words) {
+      eachExpr(w.value.get(), visit);
+    }
+  }
+  for (const Expr* e : {s.target.index.get(), s.value.get(), s.cond.get(),
+                        s.program.get(), s.repeat.get()}) {
+    eachExpr(e, visit);
+  }
+  for (const PrintItem& item : s.items) {
+    eachExpr(item.value.get(), visit);
+  }
+}
+
+/// Reads and writes of #n in a program.
+void variablePlaces(const Program& p, int n, std::vector<Place>& out) {
+  for (const Block& b : p.blocks) {
+    const Stmt& s = b.stmt;
+    if ((s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) &&
+        !s.target.index && s.target.number == n) {
+      out.push_back(placeOf(s.target.range));
+    }
+    eachExpr(s, [&](const Expr& e) {
+      if (e.kind == ExprKind::Var && e.var == n) {
+        out.push_back(placeOf(e.range));
+      }
+    });
+  }
+}
+
+} // namespace
+
+SharedName sharedNameOf(const Found& found) {
+  if (found.expr != nullptr && found.expr->kind == ExprKind::Var &&
+      !isLocal(found.expr->var)) {
+    return {found.expr->var, -1};
+  }
+  if (found.block != nullptr) {
+    if (const std::optional<int> n = calledNumber(found.block->stmt)) {
+      return {-1, *n};
+    }
+  }
+  if (found.block == nullptr && found.program != nullptr &&
+      found.program->number >= 0) {
+    return {-1, found.program->number}; // on the O line
+  }
+  return {};
+}
+
+std::vector<Place> placesOf(const SharedName& name, const Unit& unit,
+                            std::uint32_t file, bool declaration) {
+  std::vector<Place> out;
+  for (const Program& p : unit.programs) {
+    if (p.file != file) {
+      continue;
+    }
+    if (name.variable >= 0) {
+      variablePlaces(p, name.variable, out);
+      continue;
+    }
+    if (declaration && p.number == name.program && !p.duplicate) {
+      out.push_back(placeOf(p.range));
+    }
+    for (const Block& b : p.blocks) {
+      if (calledNumber(b.stmt) == name.program) {
+        const std::optional<ProgramCall> call = programCallOf(b.stmt);
+        out.push_back(placeOf(call ? call->range : b.range));
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<Place> referencesOf(const Found& found, const Unit& unit,
+                                bool declaration) {
+  std::vector<Place> out;
+  if (found.expr != nullptr && found.expr->kind == ExprKind::Var &&
+      isLocal(found.expr->var)) {
+    variablePlaces(*found.program, found.expr->var, out);
+    return out;
+  }
+  if (found.onSequence) {
+    const auto& blocks = found.program->blocks;
+    if (declaration) {
+      out.push_back(placeOf(found.block->range));
+    }
+    for (const Block& b : blocks) {
+      if (b.stmt.gotoBlock &&
+          &blocks[static_cast<std::size_t>(*b.stmt.gotoBlock)] == found.block) {
+        out.push_back(placeOf(b.stmt.value ? b.stmt.value->range : b.range));
+      }
+    }
+    return out;
+  }
+  const SharedName name = sharedNameOf(found);
+  if (name.variable < 0 && name.program < 0) {
+    return out;
+  }
+  std::set<std::uint32_t> files;
+  for (const Program& p : unit.programs) {
+    files.insert(p.file);
+  }
+  for (const std::uint32_t file : files) {
+    const std::vector<Place> here = placesOf(name, unit, file, declaration);
+    out.insert(out.end(), here.begin(), here.end());
   }
   return out;
 }

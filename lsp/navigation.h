@@ -35,6 +35,27 @@ std::optional<Return> returnAt(const Found& found);
 /// The blocks N`seq` of the programs of `unit` that call program `callee`.
 std::vector<Place> returnPlaces(const Unit& unit, const Return& r);
 
+/// Every place that names what `found` is on: a variable's reads and
+/// writes (a local's in its own program, another's in every program of
+/// `unit`), an N label's GOTOs, a program's calls; with `declaration`, the
+/// label or the program's O line too.
+std::vector<Place> referencesOf(const Found& found, const Unit& unit,
+                                bool declaration);
+
+/// What `found` names across documents: a variable other than a local,
+/// or a program number (nothing for a local or a label, which belong to
+/// their program).
+struct SharedName {
+  int variable = -1;
+  int program = -1;
+};
+
+SharedName sharedNameOf(const Found& found);
+
+/// The places of `name` in the programs of `unit` (of source `file`).
+std::vector<Place> placesOf(const SharedName& name, const Unit& unit,
+                            std::uint32_t file, bool declaration);
+
 struct Symbol {
   std::string name;
   std::string detail;

@@ -64,9 +64,9 @@ void ProgramIndex::scanFile(const std::string& path) {
   }
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  while (std::getline(in, line)) {
+  for (int number = 0; std::getline(in, line); ++number) {
     if (const std::optional<CalledProgram> program = programOfLine(line)) {
-      files_.try_emplace(*program, path);
+      files_.try_emplace(*program, path, number);
     }
   }
 }
@@ -101,7 +101,29 @@ ProgramIndex::fileOf(const CalledProgram& program) const {
   if (it == files_.end()) {
     return std::nullopt;
   }
-  return it->second;
+  return it->second.first;
+}
+
+std::vector<ProgramIndex::Entry>
+ProgramIndex::matching(std::string_view query, std::size_t limit) const {
+  const auto upper = [](std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    return out;
+  };
+  const std::string wanted = upper(query);
+  std::vector<Entry> out;
+  for (const auto& [program, where] : files_) {
+    if (out.size() >= limit) {
+      break;
+    }
+    if (upper(program.name).find(wanted) != std::string::npos) {
+      out.push_back({program, where.first, where.second});
+    }
+  }
+  return out;
 }
 
 } // namespace mbc::lsp

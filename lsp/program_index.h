@@ -9,6 +9,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace mbc::lsp {
@@ -22,13 +24,22 @@ public:
   /// The file that defines a program, if the index has one.
   std::optional<std::string> fileOf(const CalledProgram& program) const;
 
+  struct Entry {
+    CalledProgram program;
+    std::string path;
+    int line; // 0-based
+  };
+
+  /// The programs whose name holds `query` (any case), at most `limit`.
+  std::vector<Entry> matching(std::string_view query, std::size_t limit) const;
+
   static constexpr std::size_t kMaxFiles = 20000;
   static constexpr std::size_t kMaxFileBytes = 16u << 20;
 
 private:
   void scanFile(const std::string& path);
 
-  std::map<CalledProgram, std::string> files_;
+  std::map<CalledProgram, std::pair<std::string, int>> files_;
   std::size_t scanned_ = 0;
 };
 

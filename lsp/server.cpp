@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "lsp/ast_lookup.h"
+#include "lsp/completion.h"
 #include "lsp/hover.h"
 #include "lsp/message_stream.h"
 #include "lsp/navigation.h"
@@ -236,6 +237,9 @@ void Server::request(const json& id, const std::string& method,
       {"textDocument/definition", &Server::definition},
       {"textDocument/documentSymbol", &Server::documentSymbol},
       {"textDocument/codeAction", &Server::codeAction},
+      {"textDocument/references", &Server::references},
+      {"textDocument/completion", &Server::completion},
+      {"workspace/symbol", &Server::workspaceSymbol},
   };
   const auto handler = kHandlers.find(method);
   if (handler == kHandlers.end()) {
@@ -328,7 +332,10 @@ json Server::initialize(const json& params) {
         {"hoverProvider", true},
         {"definitionProvider", true},
         {"documentSymbolProvider", true},
-        {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}}}},
+        {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
+        {"referencesProvider", true},
+        {"workspaceSymbolProvider", true},
+        {"completionProvider", {{"triggerCharacters", {"#", "G", "M", "O"}}}}}},
       {"serverInfo", {{"name", "mbc"}, {"version", MBC_VERSION_STRING}}}};
 }
 
@@ -509,7 +516,7 @@ std::optional<Server::Place> Server::placeOf(const json& params) {
   }
   const auto offset =
       static_cast<std::uint32_t>(doc->text->offsetOf(*at, encoding_));
-  return Place{doc,
+  return Place{doc, offset,
                findAt(doc->analysis->cu.unit, 0, doc->text->text(), offset)};
 }
 
@@ -631,6 +638,82 @@ std::optional<json> Server::codeAction(const json& params) {
                         {"source", "mbc"},
                         {"code", flag != nullptr ? flag : kindName(d.kind)}}})},
          {"edit", {{"changes", {{doc->text->uri(), edits}}}}}});
+  }
+  return out;
+}
+
+std::optional<json> Server::references(const json& params) {
+  const std::optional<Place> at = placeOf(params);
+  if (!at) {
+    return std::nullopt;
+  }
+  const bool declaration = params.value("context", json::object())
+                               .value("includeDeclaration", false);
+  const Analysis& analysis = *at->doc->analysis;
+  json out = json::array();
+  std::set<std::pair<std::string, json>> said;
+  const auto add = [&](const std::string& uri, json range) {
+    if (said.emplace(uri, range).second) {
+      out.push_back({{"uri", uri}, {"range", std::move(range)}});
+    }
+  };
+  for (const lsp::Place& place :
+       referencesOf(at->found, analysis.cu.unit, declaration)) {
+    add(uriOf(place.file, analysis, *at->doc->text),
+        rangeOf(place.range, analysis, *at->doc->text));
+  }
+  // A common variable or a program is named in other documents too.
+  const SharedName name = sharedNameOf(at->found);
+  if (name.variable >= 0 || name.program >= 0) {
+    for (auto& [uri, other] : documents_) {
+      if (&other == at->doc) {
+        continue;
+      }
+      analyse(other);
+      for (const lsp::Place& place :
+           placesOf(name, other.analysis->cu.unit, 0, declaration)) {
+        add(uri, rangeOf(place.range, *other.analysis, *other.text));
+      }
+    }
+  }
+  return out;
+}
+
+std::optional<json> Server::completion(const json& params) {
+  const std::optional<Place> at = placeOf(params);
+  if (!at) {
+    return std::nullopt;
+  }
+  const Document& doc = *at->doc;
+  json items = json::array();
+  for (const Completion& c :
+       completionsAt(doc.text->text(), at->offset, at->found.program,
+                     settings_.latheSystem)) {
+    items.push_back({{"label", c.label},
+                     {"kind", c.kind},
+                     {"detail", c.detail},
+                     {"textEdit",
+                      {{"range", rangeOf(c.replaced, *doc.analysis, *doc.text)},
+                       {"newText", c.label}}}});
+  }
+  return json{{"isIncomplete", false}, {"items", items}};
+}
+
+std::optional<json> Server::workspaceSymbol(const json& params) {
+  constexpr std::size_t kMaxSymbols = 500;
+  constexpr int kFunctionSymbol = 12;
+  const std::string query =
+      params.is_object() ? params.value("query", "") : std::string();
+  json out = json::array();
+  for (const ProgramIndex::Entry& e : index_.matching(query, kMaxSymbols)) {
+    const Position start{e.line, 0};
+    const Position end{e.line, static_cast<int>(e.program.name.size())};
+    out.push_back(
+        {{"name", e.program.name},
+         {"kind", kFunctionSymbol},
+         {"location",
+          {{"uri", uriOfPath(e.path)},
+           {"range", {{"start", toJson(start)}, {"end", toJson(end)}}}}}});
   }
   return out;
 }

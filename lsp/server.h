@@ -60,6 +60,9 @@ private:
   std::optional<nlohmann::json> definition(const nlohmann::json& params);
   std::optional<nlohmann::json> documentSymbol(const nlohmann::json& params);
   std::optional<nlohmann::json> codeAction(const nlohmann::json& params);
+  std::optional<nlohmann::json> references(const nlohmann::json& params);
+  std::optional<nlohmann::json> completion(const nlohmann::json& params);
+  std::optional<nlohmann::json> workspaceSymbol(const nlohmann::json& params);
 
   /// The open document a request names, analysed; nullptr if none.
   Document* document(const nlohmann::json& params);
@@ -67,6 +70,7 @@ private:
   /// What a request at a place (textDocument and position) is about.
   struct Place {
     Document* doc;
+    std::uint32_t offset;
     Found found;
   };
 

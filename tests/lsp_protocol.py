@@ -331,6 +331,54 @@ def check_definition_and_symbols(tmp):
     expect(c.stop() == 0, "clean exit")
 
 
+def check_completion_references_workspace(tmp):
+    c, uri = with_part(tmp)
+    caps = c.call("workspace/symbol", {"query": ""})  # the index answers
+    expect(isinstance(caps["result"], list), f"workspace symbols: {caps}")
+
+    def labels(line, character):
+        result = c.ask("textDocument/completion", uri, line, character)
+        return {i["label"]: i for i in result["items"]}
+
+    # "#50" in IF[#5021GT0]: the system variables from #5000 on.
+    variables = labels(13, 6)
+    expect("#5021" in variables and "machine coordinates"
+           in variables["#5021"]["detail"], f"#50...: {list(variables)[:5]}")
+    edit = variables["#5021"]["textEdit"]["range"]
+    expect(edit["start"] == {"line": 13, "character": 3}, f"replaces #50: {edit}")
+    # "G0" of G01: the G codes starting so, as programs write them.
+    codes = labels(10, 2)
+    expect("G01" in codes and "G04" in codes and "G17" not in codes,
+           f"G0...: {list(codes)}")
+    # After GOTO: the program's labels.
+    expect(list(labels(13, 19)) == ["100"], "GOTO's labels")
+    # A function where an expression is begun, inside brackets.
+    half = c.open("half.nc", "%\nO1004\n#2=[CO\n%\n")
+    c.diagnostics(half)
+    names = [i["label"] for i in
+             c.ask("textDocument/completion", half, 2, 6)["items"]]
+    expect(names == ["COS"], f"CO...: {names}")
+    # References: #5021 (a system variable) everywhere it is read; N100
+    # with its GOTO; a program with its calls across open documents.
+    refs = c.call("textDocument/references", dict(
+        at(uri, 16, 1), context={"includeDeclaration": True}))["result"]
+    lines = sorted(r["range"]["start"]["line"] for r in refs)
+    expect(lines == [13, 16], f"N100 and its GOTO: {refs}")
+    lib = c.open("lib/library.nc", LIBRARY)
+    c.diagnostics(lib)
+    calls = c.call("textDocument/references", dict(
+        at(lib, 4, 1), context={"includeDeclaration": False}))["result"]
+    expect([(r["uri"], r["range"]["start"]["line"]) for r in calls]
+           == [(uri, 15)], f"O9040's call in part.nc: {calls}")
+    # Workspace symbols: the library's programs, by any part of the name.
+    found = c.call("workspace/symbol", {"query": "904"})["result"]
+    expect([s["name"] for s in found] == ["O9040"]
+           and found[0]["location"]["uri"].endswith("lib/library.nc")
+           and found[0]["location"]["range"]["start"]["line"] == 4,
+           f"O9040 in the workspace: {found}")
+    expect(c.stop() == 0, "clean exit")
+
+
 def check_positions(tmp):
     # A character beyond the BMP counts two UTF-16 units, one character in
     # UTF-8 its four bytes.
@@ -406,7 +454,7 @@ def check_bad_input(tmp):
 
 def main():
     checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
-              check_hover,
+              check_hover, check_completion_references_workspace,
               check_definition_and_symbols, check_positions,
               check_cancel_and_stale, check_bad_input]
     failures = 0

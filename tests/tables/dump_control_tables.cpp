@@ -3,6 +3,8 @@
 // from them: the G code lists of both series, the system variable map, a
 // lathe's offset variables, the profile's parameters and the functions.
 
+#include <mbc/sysvars.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -72,12 +74,12 @@ int main() {
       {"gcodes_m", gCodes(false)},
       {"gcodes_t", gCodes(true)},
       {"system_variables",
-       each(systemVariableRows(),
-            [](const SystemVariableRow& row) -> json {
+       each(mbc::systemVariableRows(),
+            [](const mbc::SystemVariableFacts& row) -> json {
               return {{"first", row.first},
                       {"last", row.last},
                       {"meaning", row.meaning},
-                      {"modelled", row.modelled},
+                      {"modelled", row.readable},
                       {"writable", row.writable},
                       {"by_profile", row.byProfile},
                       {"note", row.note != nullptr ? row.note : ""}};

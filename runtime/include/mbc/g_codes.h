@@ -4,6 +4,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mbc {
 
@@ -24,6 +26,9 @@ struct GCodeFacts {
 };
 
 std::optional<GCodeFacts> gCodeFacts(char column, int tenths);
+
+/// Every G code of a column, in tenths, in the order of the manual's list.
+std::vector<std::pair<int, GCodeFacts>> gCodeList(char column);
 
 /// The name of a FANUC G code that mbc does not execute yet (the run stops
 /// with MBC0001 at it), or nullptr for codes it executes and codes FANUC

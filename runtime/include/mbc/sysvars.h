@@ -6,6 +6,7 @@
 #include <mbc/limits.h>
 
 #include <optional>
+#include <vector>
 
 namespace mbc {
 
@@ -28,10 +29,11 @@ struct UnmodelledVariable {
 /// Whether #n is such a variable (PS0115 when a block reads or writes it).
 bool unmodelledVariable(int n, UnmodelledVariable* out);
 
-/// A system variable of the control's map: the numbers its row covers,
-/// what it holds, whether a program may read and write it in mbc, whether
-/// it exists only on machines whose profile has it, and why it reads what
-/// it does (or why mbc does not have it), or nullptr.
+/// A row of the control's map of system variables (docs/control-tables.md
+/// shows them): the numbers it covers, what they hold, whether mbc models
+/// them (if not, PS0115 and `note` says why) and a program may write them,
+/// whether they exist only on machines whose profile has them, and why
+/// they read what they do (or nullptr).
 struct SystemVariableFacts {
   long first;
   long last;
@@ -42,6 +44,10 @@ struct SystemVariableFacts {
   const char* note;
 };
 
+/// The row of #n, if the map has one.
 std::optional<SystemVariableFacts> systemVariableFacts(int n);
+
+/// Every row of the map from #1000 on, by number.
+std::vector<SystemVariableFacts> systemVariableRows();
 
 } // namespace mbc

@@ -580,16 +580,6 @@ const SysVarRange* findSystemVariable(long n) {
 
 } // namespace
 
-std::vector<SystemVariableRow> systemVariableRows() {
-  std::vector<SystemVariableRow> rows;
-  for (const SysVarRange& range : kSystemVariables) {
-    rows.push_back({range.first, range.last, range.meaning,
-                    range.read != nullptr, range.write != nullptr,
-                    range.byProfile, range.note});
-  }
-  return rows;
-}
-
 bool setInputSignal(mbrt_ctx& ctx, int number, double value) {
   if (number >= kFirstInputSignal && number < kFirstInputWord) {
     if (value != 0.0 && value != 1.0) {
@@ -641,18 +631,34 @@ bool unmodelledVariable(int n, UnmodelledVariable* out) {
   return true;
 }
 
+namespace {
+
+SystemVariableFacts factsOf(const rt::SysVarRange& range) {
+  return {range.first,
+          range.last,
+          range.meaning,
+          range.read != nullptr,
+          range.write != nullptr,
+          range.byProfile,
+          range.note};
+}
+
+} // namespace
+
 std::optional<SystemVariableFacts> systemVariableFacts(int n) {
   const rt::SysVarRange* range = rt::findSystemVariable(n);
   if (range == nullptr) {
     return std::nullopt;
   }
-  return SystemVariableFacts{range->first,
-                             range->last,
-                             range->meaning,
-                             range->read != nullptr,
-                             range->write != nullptr,
-                             range->byProfile,
-                             range->note};
+  return factsOf(*range);
+}
+
+std::vector<SystemVariableFacts> systemVariableRows() {
+  std::vector<SystemVariableFacts> rows;
+  for (const rt::SysVarRange& range : rt::kSystemVariables) {
+    rows.push_back(factsOf(range));
+  }
+  return rows;
 }
 
 bool dependsOnProfile(int n) {

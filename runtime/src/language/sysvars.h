@@ -8,20 +8,6 @@
 
 namespace mbc::rt {
 
-/// A row of the system variable map as docs/control-tables.md shows it.
-struct SystemVariableRow {
-  long first;
-  long last;
-  const char* meaning;
-  bool modelled; // false: PS0115, `note` says why
-  bool writable;
-  bool byProfile; // exists on machines whose profile says so
-  const char* note;
-};
-
-/// Every row of the map from #1000 on, by number.
-std::vector<SystemVariableRow> systemVariableRows();
-
 /// Sets an input signal (#1000-#1031: 0 or 1) or word (#1032-#1035) from
 /// outside the program: the profile or a preset. False for any other number
 /// or value.

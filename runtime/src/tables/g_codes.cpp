@@ -171,6 +171,17 @@ std::optional<mbc::GCodeFacts> mbc::gCodeFacts(char column, int tenths) {
       row->name, mbc::rt::modalGroup(row->field, column != 'M'), row->modelled};
 }
 
+std::vector<std::pair<int, mbc::GCodeFacts>> mbc::gCodeList(char column) {
+  std::vector<std::pair<int, mbc::GCodeFacts>> out;
+  for (const mbc::rt::GCodeRow& row : mbc::rt::gCodeRows()) {
+    const int tenths = row.tenths(column);
+    if (tenths != mbc::rt::kNo) {
+      out.emplace_back(tenths, *mbc::gCodeFacts(column, tenths));
+    }
+  }
+  return out;
+}
+
 const char* mbc::unmodelledGCode(int tenths) {
   const mbc::rt::GCodeRow* row = mbc::rt::findGCodeRow('M', tenths);
   return row != nullptr && !row->modelled ? row->name : nullptr;
