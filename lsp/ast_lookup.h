@@ -33,6 +33,32 @@ inline bool holds(const SourceRange& r, std::uint32_t file,
   return r.begin.file == file && offset >= r.begin.offset && offset <= endOf(r);
 }
 
+/// Calls `visit` on every expression of a statement, inner ones too.
+template <typename Visit> void eachExpr(const Expr* e, Visit& visit) {
+  if (e == nullptr) {
+    return;
+  }
+  visit(*e);
+  for (const ExprPtr& arg : e->args) {
+    eachExpr(arg.get(), visit);
+  }
+}
+
+template <typename Visit> void eachExpr(const Stmt& s, Visit visit) {
+  for (const std::vector<Word>* words : {&s.words, &s.leadCodes}) {
+    for (const Word& w : *words) {
+      eachExpr(w.value.get(), visit);
+    }
+  }
+  for (const Expr* e : {s.target.index.get(), s.value.get(), s.cond.get(),
+                        s.program.get(), s.repeat.get()}) {
+    eachExpr(e, visit);
+  }
+  for (const PrintItem& item : s.items) {
+    eachExpr(item.value.get(), visit);
+  }
+}
+
 /// The range of a block's N word ("N100"), or a zero length range.
 SourceRange sequenceRange(const Block& block, std::string_view text);
 

@@ -45,7 +45,21 @@ bool hasCode(const Stmt& s, char letter, double code) {
   return false;
 }
 
-/// The program number a block calls by P (M98, M198, G65, G66, G66.1).
+SourceRange wholeProgram(const Program& p) {
+  SourceRange r = p.range;
+  if (!p.blocks.empty()) {
+    const SourceRange& last = p.blocks.back().range;
+    r.length = std::max(r.length, endOf(last) - r.begin.offset);
+  }
+  return r;
+}
+
+Place placeOf(const SourceRange& r) {
+  return {r.begin.file, r};
+}
+
+} // namespace
+
 std::optional<int> calledNumber(const Stmt& s) {
   if (s.kind == StmtKind::MacroCall) {
     if (const std::optional<double> p = constantOf(s.program.get())) {
@@ -68,21 +82,6 @@ std::optional<int> calledNumber(const Stmt& s) {
   }
   return std::nullopt;
 }
-
-SourceRange wholeProgram(const Program& p) {
-  SourceRange r = p.range;
-  if (!p.blocks.empty()) {
-    const SourceRange& last = p.blocks.back().range;
-    r.length = std::max(r.length, endOf(last) - r.begin.offset);
-  }
-  return r;
-}
-
-Place placeOf(const SourceRange& r) {
-  return {r.begin.file, r};
-}
-
-} // namespace
 
 std::vector<Place> definitionOf(const Found& found,
                                 const toolchain::CompiledUnit& cu) {
@@ -145,32 +144,6 @@ std::vector<Place> returnPlaces(const Unit& unit, const Return& r) {
 }
 
 namespace {
-
-/// Calls `visit` on every expression of a statement, inner ones included.
-template <typename Visit> void eachExpr(const Expr* e, Visit& visit) {
-  if (e == nullptr) {
-    return;
-  }
-  visit(*e);
-  for (const ExprPtr& arg : e->args) {
-    eachExpr(arg.get(), visit);
-  }
-}
-
-template <typename Visit> void eachExpr(const Stmt& s, Visit visit) {
-  for (const std::vector<Word>* words : {&s.words, &s.leadCodes}) {
-    for (const Word& w : *words) {
-      eachExpr(w.value.get(), visit);
-    }
-  }
-  for (const Expr* e : {s.target.index.get(), s.value.get(), s.cond.get(),
-                        s.program.get(), s.repeat.get()}) {
-    eachExpr(e, visit);
-  }
-  for (const PrintItem& item : s.items) {
-    eachExpr(item.value.get(), visit);
-  }
-}
 
 /// Reads and writes of #n in a program.
 void variablePlaces(const Program& p, int n, std::vector<Place>& out) {

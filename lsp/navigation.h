@@ -18,6 +18,11 @@ struct Place {
   SourceRange range;
 };
 
+/// The number of the program a block calls with a constant P or a name
+/// (M98, M198, G65, G66, G66.1; a name's number as the semantic checks
+/// give it).
+std::optional<int> calledNumber(const Stmt& s);
+
 /// Where the thing at `found` is defined: the block a jump lands on, the
 /// program a call names; nothing for anything else.
 std::vector<Place> definitionOf(const Found& found,

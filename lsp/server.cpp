@@ -15,6 +15,7 @@
 #include <set>
 #include <thread>
 
+#include "lsp/arguments.h"
 #include "lsp/ast_lookup.h"
 #include "lsp/completion.h"
 #include "lsp/hover.h"
@@ -240,6 +241,8 @@ void Server::request(const json& id, const std::string& method,
       {"textDocument/references", &Server::references},
       {"textDocument/completion", &Server::completion},
       {"workspace/symbol", &Server::workspaceSymbol},
+      {"textDocument/inlayHint", &Server::inlayHint},
+      {"textDocument/signatureHelp", &Server::signatureHelp},
   };
   const auto handler = kHandlers.find(method);
   if (handler == kHandlers.end()) {
@@ -335,7 +338,12 @@ json Server::initialize(const json& params) {
         {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
         {"referencesProvider", true},
         {"workspaceSymbolProvider", true},
-        {"completionProvider", {{"triggerCharacters", {"#", "G", "M", "O"}}}}}},
+        {"completionProvider", {{"triggerCharacters", {"#", "G", "M", "O"}}}},
+        {"inlayHintProvider", true},
+        {"signatureHelpProvider",
+         {{"triggerCharacters",
+           {"A", "B", "C", "D", "E", "F", "H", "I", "J", "K", "M",
+            "Q", "R", "S", "T", "U", "V", "W", "X", "Y", "Z"}}}}}},
       {"serverInfo", {{"name", "mbc"}, {"version", MBC_VERSION_STRING}}}};
 }
 
@@ -716,6 +724,53 @@ std::optional<json> Server::workspaceSymbol(const json& params) {
            {"range", {{"start", toJson(start)}, {"end", toJson(end)}}}}}});
   }
   return out;
+}
+
+std::optional<json> Server::inlayHint(const json& params) {
+  Document* doc = document(params);
+  const std::optional<Range> range = rangeOfJson(params.value("range", json()));
+  if (doc == nullptr || !range) {
+    return std::nullopt;
+  }
+  const auto begin =
+      static_cast<std::uint32_t>(doc->text->offsetOf(range->start, encoding_));
+  const auto end =
+      static_cast<std::uint32_t>(doc->text->offsetOf(range->end, encoding_));
+  json out = json::array();
+  for (const ArgumentHint& hint :
+       argumentHints(doc->analysis->cu.unit, 0, begin, end)) {
+    out.push_back(
+        {{"position", toJson(doc->text->positionOf(hint.offset, encoding_))},
+         {"label", std::string(1, hint.letter)},
+         {"kind", 2}, // a parameter's
+         {"paddingLeft", true},
+         {"tooltip", fmt::format("argument {} of G65/G66", hint.letter)}});
+  }
+  return out;
+}
+
+std::optional<json> Server::signatureHelp(const json& params) {
+  const std::optional<Place> at = placeOf(params);
+  if (!at) {
+    return std::nullopt;
+  }
+  const std::optional<Signature> sig = signatureAt(
+      at->found, at->doc->analysis->cu.unit, at->doc->text->text(), at->offset);
+  if (!sig) {
+    return json(nullptr);
+  }
+  json parameters = json::array();
+  for (const std::string& letter : sig->letters) {
+    parameters.push_back({{"label", letter}});
+  }
+  json signature = {{"label", sig->label},
+                    {"documentation",
+                     "the argument letters the macro reads (specification I)"},
+                    {"parameters", parameters}};
+  if (sig->active >= 0) {
+    signature["activeParameter"] = sig->active;
+  }
+  return json{{"signatures", json::array({signature})}, {"activeSignature", 0}};
 }
 
 int runServer(std::FILE* in, std::FILE* out) {

@@ -379,6 +379,35 @@ def check_completion_references_workspace(tmp):
     expect(c.stop() == 0, "clean exit")
 
 
+def check_argument_letters(tmp):
+    c, uri = with_part(tmp)
+    lib = c.open("lib/library.nc", LIBRARY)
+    c.diagnostics(lib)
+    # G90G01X#24Y#25 in O9040: X and Y after the variables.
+    hints = c.call("textDocument/inlayHint", {
+        "textDocument": {"uri": lib},
+        "range": {"start": {"line": 0, "character": 0},
+                  "end": {"line": 8, "character": 0}}})["result"]
+    expect([(h["label"], h["position"]) for h in hints]
+           == [("X", {"line": 5, "character": 10}),
+               ("Y", {"line": 5, "character": 14})], f"hints: {hints}")
+    # None in the main program, whose locals no call sets.
+    main = c.call("textDocument/inlayHint", {
+        "textDocument": {"uri": uri},
+        "range": {"start": {"line": 0, "character": 0},
+                  "end": {"line": 20, "character": 0}}})["result"]
+    expect(main == [], f"no hints in O1000: {main}")
+    # In G65P9040X10.Y5.: the letters O9040 reads, Y the one being written.
+    help = c.ask("textDocument/signatureHelp", uri, 15, 12)
+    sig = help["signatures"][0]
+    expect(sig["label"] == "O9040 X Y"
+           and [p["label"] for p in sig["parameters"]] == ["X", "Y"]
+           and sig["activeParameter"] == 1, f"signature: {help}")
+    expect(c.ask("textDocument/signatureHelp", uri, 14, 3) is None,
+           "an M98 passes no arguments")
+    expect(c.stop() == 0, "clean exit")
+
+
 def check_positions(tmp):
     # A character beyond the BMP counts two UTF-16 units, one character in
     # UTF-8 its four bytes.
@@ -455,6 +484,7 @@ def check_bad_input(tmp):
 def main():
     checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
               check_hover, check_completion_references_workspace,
+              check_argument_letters,
               check_definition_and_symbols, check_positions,
               check_cancel_and_stale, check_bad_input]
     failures = 0
