@@ -21,6 +21,7 @@
 #include "lsp/hover.h"
 #include "lsp/message_stream.h"
 #include "lsp/navigation.h"
+#include "lsp/semantic_tokens.h"
 #include "lsp/uri.h"
 
 namespace mbc::lsp {
@@ -243,6 +244,7 @@ void Server::request(const json& id, const std::string& method,
       {"workspace/symbol", &Server::workspaceSymbol},
       {"textDocument/inlayHint", &Server::inlayHint},
       {"textDocument/signatureHelp", &Server::signatureHelp},
+      {"textDocument/semanticTokens/full", &Server::semanticTokens},
   };
   const auto handler = kHandlers.find(method);
   if (handler == kHandlers.end()) {
@@ -340,6 +342,10 @@ json Server::initialize(const json& params) {
         {"workspaceSymbolProvider", true},
         {"completionProvider", {{"triggerCharacters", {"#", "G", "M", "O"}}}},
         {"inlayHintProvider", true},
+        {"semanticTokensProvider",
+         {{"legend",
+           {{"tokenTypes", kTokenTypes}, {"tokenModifiers", kTokenModifiers}}},
+          {"full", true}}},
         {"signatureHelpProvider",
          {{"triggerCharacters",
            {"A", "B", "C", "D", "E", "F", "H", "I", "J", "K", "M",
@@ -771,6 +777,32 @@ std::optional<json> Server::signatureHelp(const json& params) {
     signature["activeParameter"] = sig->active;
   }
   return json{{"signatures", json::array({signature})}, {"activeSignature", 0}};
+}
+
+std::optional<json> Server::semanticTokens(const json& params) {
+  Document* doc = document(params);
+  if (doc == nullptr) {
+    return std::nullopt;
+  }
+  // Each token as five numbers: its line and start relative to the last
+  // token's, its length, type and modifiers.
+  std::vector<int> data;
+  Position last;
+  for (const SemanticToken& t :
+       lsp::semanticTokens(doc->analysis->cu.sources, 0)) {
+    const Position start = doc->text->positionOf(t.offset, encoding_);
+    const Position end = doc->text->positionOf(t.offset + t.length, encoding_);
+    if (end.line != start.line) {
+      continue; // the protocol's tokens hold one line
+    }
+    data.insert(data.end(),
+                {start.line - last.line,
+                 start.line == last.line ? start.character - last.character
+                                         : start.character,
+                 end.character - start.character, t.type, t.modifiers});
+    last = start;
+  }
+  return json{{"data", data}};
 }
 
 int runServer(std::FILE* in, std::FILE* out) {

@@ -65,6 +65,7 @@ private:
   std::optional<nlohmann::json> workspaceSymbol(const nlohmann::json& params);
   std::optional<nlohmann::json> inlayHint(const nlohmann::json& params);
   std::optional<nlohmann::json> signatureHelp(const nlohmann::json& params);
+  std::optional<nlohmann::json> semanticTokens(const nlohmann::json& params);
 
   /// The open document a request names, analysed; nullptr if none.
   Document* document(const nlohmann::json& params);

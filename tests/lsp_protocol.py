@@ -408,6 +408,38 @@ def check_argument_letters(tmp):
     expect(c.stop() == 0, "clean exit")
 
 
+def check_semantic_tokens(tmp):
+    c = Client(tmp)
+    legend = c.start()["capabilities"]["semanticTokensProvider"]["legend"]
+    text = ("%\nO1000(PLATE)\nG90G01X#24Y[#5021+1.]F300.\n"
+            "IF[#1EQ0]GOTO10\nN10M30\n%\n")
+    uri = c.open("colours.nc", text)
+    c.diagnostics(uri)
+    data = c.call("textDocument/semanticTokens/full",
+                  {"textDocument": {"uri": uri}})["result"]["data"]
+    lines = text.split("\n")
+    tokens = []
+    line = column = 0
+    for i in range(0, len(data), 5):
+        d_line, d_column, length, kind, modifiers = data[i:i + 5]
+        line += d_line
+        column = d_column if d_line else column + d_column
+        names = [m for b, m in enumerate(legend["tokenModifiers"])
+                 if modifiers >> b & 1]
+        tokens.append((lines[line][column:column + length],
+                       legend["tokenTypes"][kind], names))
+    expect(tokens[:4] == [("O1000", "namespace", []),
+                          ("(PLATE)", "comment", []),
+                          ("G90", "keyword", []), ("G01", "keyword", [])],
+           f"the header and G codes: {tokens[:4]}")
+    expect(("#5021", "variable", ["readonly", "defaultLibrary"]) in tokens,
+           f"a read-only system variable: {tokens}")
+    expect(("#24", "variable", []) in tokens and ("X", "property", []) in tokens
+           and ("GOTO", "keyword", []) in tokens
+           and ("N10", "enumMember", []) in tokens, f"the rest: {tokens}")
+    expect(c.stop() == 0, "clean exit")
+
+
 def check_positions(tmp):
     # A character beyond the BMP counts two UTF-16 units, one character in
     # UTF-8 its four bytes.
@@ -484,7 +516,7 @@ def check_bad_input(tmp):
 def main():
     checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
               check_hover, check_completion_references_workspace,
-              check_argument_letters,
+              check_argument_letters, check_semantic_tokens,
               check_definition_and_symbols, check_positions,
               check_cancel_and_stale, check_bad_input]
     failures = 0
