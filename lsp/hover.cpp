@@ -3,6 +3,7 @@
 // argument specifications and the calls of the unit.
 #include "lsp/hover.h"
 
+#include "frontend/called_programs.h"
 #include <mbc/addresses.h>
 #include <mbc/arith.h>
 #include <mbc/calling_codes.h>
@@ -12,7 +13,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "lsp/navigation.h"
 
 namespace mbc::lsp {
 
@@ -147,6 +152,38 @@ std::string variableHover(int n) {
                      n);
 }
 
+/// The calls in `unit` that pass local #n to `program` (G65, G66): "O1000
+/// line 16", at most a few.
+std::string passedBy(const Unit& unit, const Program& program, int n) {
+  constexpr int kMaxSaid = 5;
+  std::vector<std::string> calls;
+  int more = 0;
+  for (const Program& caller : unit.programs) {
+    for (const Block& b : caller.blocks) {
+      if (calledNumber(b.stmt) != program.number) {
+        continue;
+      }
+      const std::vector<int> locals = argumentLocals(callArguments(b.stmt));
+      if (std::find(locals.begin(), locals.end(), n) == locals.end()) {
+        continue;
+      }
+      if (static_cast<int>(calls.size()) < kMaxSaid) {
+        calls.push_back(fmt::format("{} line {}", caller.name, b.line));
+      } else {
+        ++more;
+      }
+    }
+  }
+  if (calls.empty()) {
+    return "";
+  }
+  std::string text = "\n\nPassed by ";
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    text += (i == 0 ? "" : ", ") + calls[i];
+  }
+  return text + (more > 0 ? fmt::format(" and {} more.", more) : ".");
+}
+
 /// The blocks that jump to N`seq` of `program`.
 int jumpsTo(const Program& program, const Block& target) {
   int count = 0;
@@ -162,8 +199,8 @@ int jumpsTo(const Program& program, const Block& target) {
 
 } // namespace
 
-std::optional<Hover> hoverAt(const Found& found, std::string_view text,
-                             char latheSystem) {
+std::optional<Hover> hoverAt(const Found& found, const Unit& unit,
+                             std::string_view text, char latheSystem) {
   if (found.onSequence) {
     const int jumps = jumpsTo(*found.program, *found.block);
     return Hover{fmt::format("**N{}**: sequence number of {}{}",
@@ -176,7 +213,11 @@ std::optional<Hover> hoverAt(const Found& found, std::string_view text,
   }
   const Expr* e = found.expr;
   if (e != nullptr && e->kind == ExprKind::Var) {
-    return Hover{variableHover(e->var), e->range};
+    std::string markdown = variableHover(e->var);
+    if (isLocal(e->var) && found.program != nullptr) {
+      markdown += passedBy(unit, *found.program, e->var);
+    }
+    return Hover{markdown, e->range};
   }
   if (e != nullptr && e->kind == ExprKind::Call) {
     return Hover{fmt::format("**{}**: a function of Custom Macro B",

@@ -14,8 +14,9 @@ struct Hover {
   SourceRange range; // what the text is about
 };
 
-/// `latheSystem`: the profile's lathe G code system, 0 on a mill.
-std::optional<Hover> hoverAt(const Found& found, std::string_view text,
-                             char latheSystem);
+/// `latheSystem`: the profile's lathe G code system, 0 on a mill; `unit`:
+/// the programs read with the document (for the calls of a macro).
+std::optional<Hover> hoverAt(const Found& found, const Unit& unit,
+                             std::string_view text, char latheSystem);
 
 } // namespace mbc::lsp

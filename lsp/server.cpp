@@ -541,7 +541,8 @@ std::optional<json> Server::hover(const json& params) {
   }
   const Document& doc = *place->doc;
   const std::optional<Hover> hover =
-      hoverAt(place->found, doc.text->text(), settings_.latheSystem);
+      hoverAt(place->found, doc.analysis->cu.unit, doc.text->text(),
+              settings_.latheSystem);
   if (!hover) {
     return json(nullptr);
   }

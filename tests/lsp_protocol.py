@@ -293,6 +293,13 @@ def check_hover(tmp):
     arg = c.call("textDocument/hover", at(lib, 5, 8))["result"]
     expect(arg and "argument `X`" in arg["contents"]["value"],
            f"#24 names its argument: {arg}")
+    # A local of a macro read with its callers names the calls that pass
+    # it (the library after part.nc in one file: O9040's X#24 on line 23).
+    both = c.open("both.nc", PART.replace("M30\n%", "M30\n") + LIBRARY[2:])
+    c.diagnostics(both)
+    passed = c.ask("textDocument/hover", both, 23, 8)
+    expect(passed and "Passed by O1000 line 16" in passed["contents"]["value"],
+           f"#24's callers: {passed}")
     # A G code mbc does not execute, and one FANUC does not have.
     c.notify("textDocument/didChange", {
         "textDocument": {"uri": uri, "version": 2},
