@@ -21,7 +21,6 @@ enum Type {
   kProperty,
   kNamespace,
   kOperator,
-  kString,
   kLabel, // enumMember
 };
 
@@ -63,7 +62,7 @@ constexpr Class kClasses[] = {
     {Tok::Keyword, kKeyword, 0},
     {Tok::Function, kFunction, kDefaultLibrary},
     {Tok::ProgramName, kNamespace, 0},
-    {Tok::PrintText, kString, 0},
+
     {Tok::Plus, kOperator, 0},
     {Tok::Minus, kOperator, 0},
     {Tok::Star, kOperator, 0},
