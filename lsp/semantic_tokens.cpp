@@ -21,6 +21,7 @@ enum Type {
   kProperty,
   kNamespace,
   kOperator,
+  kString,
   kLabel, // enumMember
 };
 
@@ -68,6 +69,7 @@ constexpr Class kClasses[] = {
     {Tok::Star, kOperator, 0},
     {Tok::Slash, kOperator, 0},
     {Tok::Equal, kOperator, 0},
+    {Tok::PrintText, kString, 0},
 };
 
 int variableModifiers(double number) {
@@ -93,10 +95,54 @@ std::vector<SemanticToken> semanticTokens(const SourceManager& sources,
   };
   // A letter or '#' waits for its number, to make one token of both.
   std::optional<Token> pending;
+  // DPRNT and BPRNT lex their text in a mode of its own, as the parser
+  // does: after the keyword the '[' that opens it, then text and
+  // variables, each variable with its format in brackets ('#1[53]', two
+  // bracket pairs for '#[...][53]'), to the closing ']'.
+  enum class Mode {
+    Normal,
+    PrintOpen,
+    Print,
+    PrintVariable
+  } mode = Mode::Normal;
+  int depth = 0;
+  int pairsLeft = 0;
   for (std::size_t guard = 0; guard < (1u << 24); ++guard) {
-    Token t = lexer.next();
+    Token t = mode == Mode::Print ? lexer.nextPrint() : lexer.next();
     if (t.kind == Tok::EndOfFile) {
       break;
+    }
+    switch (mode) {
+      case Mode::Normal:
+        if (t.kind == Tok::Keyword &&
+            (t.keyword == Keyword::Dprnt || t.keyword == Keyword::Bprnt)) {
+          mode = Mode::PrintOpen;
+        }
+        break;
+      case Mode::PrintOpen:
+        mode = t.kind == Tok::LBracket ? Mode::Print : Mode::Normal;
+        break;
+      case Mode::Print:
+        if (t.kind == Tok::Hash) {
+          mode = Mode::PrintVariable;
+          pairsLeft = 0;
+        } else if (t.kind == Tok::RBracket || t.kind == Tok::EndOfBlock) {
+          mode = Mode::Normal;
+        }
+        break;
+      case Mode::PrintVariable:
+        if (pairsLeft == 0) {
+          pairsLeft = t.kind == Tok::LBracket ? 2 : 1; // #[...][53] or #1[53]
+        }
+        depth += t.kind == Tok::LBracket ? 1 : t.kind == Tok::RBracket ? -1 : 0;
+        if (t.kind == Tok::RBracket && depth == 0 && --pairsLeft == 0) {
+          mode = Mode::Print;
+        }
+        if (t.kind == Tok::EndOfBlock) {
+          mode = Mode::Normal;
+          depth = 0;
+        }
+        break;
     }
     if (pending) {
       const Token first = *pending;

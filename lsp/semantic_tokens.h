@@ -1,6 +1,7 @@
 // Semantic tokens: the document's words as the lexer reads them, classed
 // for an editor's colours (G and M codes, variables, system variables,
-// addresses, labels, functions, keywords, numbers, comments).
+// addresses, labels, functions, keywords, numbers, comments, the text of
+// DPRNT and BPRNT).
 #pragma once
 
 #include "frontend/source.h"
@@ -14,9 +15,9 @@ namespace mbc::lsp {
 
 /// The legend the server announces: a token's type and modifier bits
 /// index these.
-inline constexpr std::array<std::string_view, 9> kTokenTypes = {
-    "keyword",  "variable",  "number",   "comment",   "function",
-    "property", "namespace", "operator", "enumMember"};
+inline constexpr std::array<std::string_view, 10> kTokenTypes = {
+    "keyword",  "variable",  "number",   "comment", "function",
+    "property", "namespace", "operator", "string",  "enumMember"};
 inline constexpr std::array<std::string_view, 2> kTokenModifiers = {
     "readonly", "defaultLibrary"};
 

@@ -419,7 +419,7 @@ def check_semantic_tokens(tmp):
     c = Client(tmp)
     legend = c.start()["capabilities"]["semanticTokensProvider"]["legend"]
     text = ("%\nO1000(PLATE)\nG90G01X#24Y[#5021+1.]F300.\n"
-            "IF[#1EQ0]GOTO10\nN10M30\n%\n")
+            "IF[#1EQ0]GOTO10\nN10DPRNT[X#24[53]*Y#[#1+2][53]]\nM30\n%\n")
     uri = c.open("colours.nc", text)
     c.diagnostics(uri)
     data = c.call("textDocument/semanticTokens/full",
@@ -444,6 +444,14 @@ def check_semantic_tokens(tmp):
     expect(("#24", "variable", []) in tokens and ("X", "property", []) in tokens
            and ("GOTO", "keyword", []) in tokens
            and ("N10", "enumMember", []) in tokens, f"the rest: {tokens}")
+    # DPRNT's text is text, its variables variables, after them as before.
+    printed = tokens[tokens.index(("DPRNT", "keyword", [])) + 1:]
+    expect(printed == [("X", "string", []), ("#24", "variable", []),
+                       ("53", "number", []), ("*Y", "string", []),
+                       ("#", "variable", []), ("#1", "variable", []),
+                       ("+", "operator", []), ("2", "number", []),
+                       ("53", "number", []), ("M30", "keyword", [])],
+           f"DPRNT: {printed}")
     expect(c.stop() == 0, "clean exit")
 
 
