@@ -95,6 +95,15 @@ void ProgramIndex::scan(const std::vector<std::string>& dirs) {
   }
 }
 
+void ProgramIndex::refresh(const std::string& path) {
+  std::erase_if(files_,
+                [&](const auto& entry) { return entry.second.first == path; });
+  std::error_code error;
+  if (std::filesystem::is_regular_file(path, error)) {
+    scanFile(path);
+  }
+}
+
 std::optional<std::string>
 ProgramIndex::fileOf(const CalledProgram& program) const {
   const auto it = files_.find(program);

@@ -21,6 +21,9 @@ public:
   /// and node_modules), at most kMaxFiles files of at most kMaxFileBytes.
   void scan(const std::vector<std::string>& dirs);
 
+  /// Reads a file again after it changed (or was made or removed).
+  void refresh(const std::string& path);
+
   /// The file that defines a program, if the index has one.
   std::optional<std::string> fileOf(const CalledProgram& program) const;
 

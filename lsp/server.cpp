@@ -269,6 +269,23 @@ void Server::notification(const std::string& method, const json& params) {
     return; // dropped, as the protocol says
   }
   const std::optional<std::string> uri = documentUri(params);
+  if (method == "workspace/didChangeWatchedFiles") {
+    const json changes = params.value("changes", json::array());
+    for (const json& change : changes.is_array() ? changes : json::array()) {
+      if (const std::optional<std::string> changed = text(change, "uri")) {
+        if (const std::optional<std::string> path = pathOfUri(*changed)) {
+          fileChanged(*path);
+        }
+      }
+    }
+    return;
+  }
+  if (method == "textDocument/didSave" && uri) {
+    if (const std::optional<std::string> path = pathOfUri(*uri)) {
+      fileChanged(*path);
+    }
+    return;
+  }
   if (method == "textDocument/didOpen" && uri) {
     const json& item = params["textDocument"];
     const std::optional<std::string> body = text(item, "text");
@@ -333,7 +350,7 @@ json Server::initialize(const json& params) {
       {"capabilities",
        {{"positionEncoding", encoding_ == Encoding::Utf8 ? "utf-8" : "utf-16"},
         {"textDocumentSync",
-         {{"openClose", true}, {"change", kSyncIncremental}}},
+         {{"openClose", true}, {"change", kSyncIncremental}, {"save", true}}},
         {"hoverProvider", true},
         {"definitionProvider", true},
         {"documentSymbolProvider", true},
@@ -447,6 +464,14 @@ void Server::analyse(Document& doc) {
   }
   doc.analysis = lsp::analyse(path.value_or(doc.text->uri()), doc.text->text(),
                               settings, index_);
+}
+
+void Server::fileChanged(const std::string& path) {
+  index_.refresh(path);
+  for (auto& [uri, doc] : documents_) {
+    doc.analysis.reset();
+    doc.published = false;
+  }
 }
 
 std::string Server::uriOf(std::uint32_t file, const Analysis& analysis,

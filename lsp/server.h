@@ -79,6 +79,9 @@ private:
 
   std::optional<Place> placeOf(const nlohmann::json& params);
   void analyse(Document& doc);
+  /// A file of the workspace changed: the index reads it again, and every
+  /// open document is read again (what it calls may have changed).
+  void fileChanged(const std::string& path);
   void publish(Document& doc);
 
   nlohmann::json rangeOf(const SourceRange& range, const Analysis& analysis,

@@ -455,6 +455,28 @@ def check_semantic_tokens(tmp):
     expect(c.stop() == 0, "clean exit")
 
 
+def check_workspace_changes(tmp):
+    c = Client(tmp)
+    c.start()
+    text = "%\nO1005(PLATE)\nG65P9050X1.\nM30\n%\n"
+    uri = c.open("plate.nc", text)
+    expect([d["code"] for d in c.diagnostics(uri, 1)] == ["missing-program"],
+           "O9050 is nowhere yet")
+    # A library written after the server started: the editor's watcher
+    # says so, and the document is read again with it.
+    (tmp / "lib" / "later.nc").write_text("%\nO9050(LATER)\nG01X#24\nM99\n%\n")
+    c.notify("workspace/didChangeWatchedFiles", {"changes": [
+        {"uri": (tmp / "lib" / "later.nc").as_uri(), "type": 1}]})
+    expect(c.diagnostics(uri, 1) == [], "O9050 found in the new library")
+    # Removed again, then saved: the warning is back.
+    (tmp / "lib" / "later.nc").unlink()
+    c.notify("textDocument/didSave", {"textDocument": {
+        "uri": (tmp / "lib" / "later.nc").as_uri()}})
+    expect([d["code"] for d in c.diagnostics(uri, 1)] == ["missing-program"],
+           "gone with the file")
+    expect(c.stop() == 0, "clean exit")
+
+
 def check_positions(tmp):
     # A character beyond the BMP counts two UTF-16 units, one character in
     # UTF-8 its four bytes.
@@ -532,6 +554,7 @@ def main():
     checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
               check_hover, check_completion_references_workspace,
               check_argument_letters, check_semantic_tokens,
+              check_workspace_changes,
               check_definition_and_symbols, check_positions,
               check_cancel_and_stale, check_bad_input]
     failures = 0
