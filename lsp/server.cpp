@@ -45,6 +45,17 @@ constexpr int kLogWarning = 2;
 
 constexpr int kSyncIncremental = 2;
 
+/// An integer member of an object, or `otherwise`.
+int integer(const json& object, const char* key, int otherwise) {
+  if (!object.is_object() || !object.contains(key) ||
+      !object[key].is_number_integer()) {
+    return otherwise;
+  }
+  const auto value = object[key].get<std::int64_t>();
+  return value >= INT32_MIN && value <= INT32_MAX ? static_cast<int>(value)
+                                                  : otherwise;
+}
+
 /// A string member of an object, or nothing.
 std::optional<std::string> text(const json& object, const char* key) {
   if (!object.is_object()) {
@@ -179,7 +190,20 @@ void Server::handleBatch(const std::vector<std::string>& bodies) {
       const auto change = lastChange.find(*uri);
       stale = change != lastChange.end() && change->second > i;
     }
-    dispatch(m, stale, m.contains("id") && cancelled.count(m["id"]) != 0);
+    // A member of the wrong type deep in the parameters ("version": "x")
+    // is the client's mistake: said, and the server goes on.
+    try {
+      dispatch(m, stale, m.contains("id") && cancelled.count(m["id"]) != 0);
+    } catch (const json::exception& e) {
+      const std::string why =
+          fmt::format("{}: a parameter of the wrong type ({})",
+                      m.value("method", "?"), e.what());
+      if (m.contains("id")) {
+        fail(m["id"], kInvalidParams, why);
+      } else {
+        log(kLogError, "mbc lsp: " + why);
+      }
+    }
   }
   // One analysis per changed document.
   for (auto& [uri, doc] : documents_) {
@@ -294,8 +318,8 @@ void Server::notification(const std::string& method, const json& params) {
       return;
     }
     Document& doc = documents_[*uri];
-    doc.text =
-        std::make_unique<TextDocument>(*uri, item.value("version", 0), *body);
+    doc.text = std::make_unique<TextDocument>(*uri, integer(item, "version", 0),
+                                              *body);
     doc.analysis.reset();
     doc.published = false;
     return;
@@ -322,7 +346,7 @@ void Server::notification(const std::string& method, const json& params) {
       doc.text->apply(range, *body, encoding_);
     }
     doc.text->setVersion(
-        params["textDocument"].value("version", doc.text->version()));
+        integer(params["textDocument"], "version", doc.text->version()));
     doc.analysis.reset();
     doc.published = false;
   } else if (method == "textDocument/didClose") {
@@ -333,7 +357,6 @@ void Server::notification(const std::string& method, const json& params) {
 }
 
 json Server::initialize(const json& params) {
-  initialized_ = true;
   // UTF-8 positions when the client takes them: no counting of UTF-16.
   const json encodings = params.is_object()
                              ? params.value("capabilities", json::object())
@@ -346,6 +369,7 @@ json Server::initialize(const json& params) {
     }
   }
   readWorkspaceSettings(params);
+  initialized_ = true; // not before: parameters of the wrong type throw
   return {
       {"capabilities",
        {{"positionEncoding", encoding_ == Encoding::Utf8 ? "utf-8" : "utf-16"},
@@ -687,8 +711,9 @@ std::optional<json> Server::references(const json& params) {
   if (!at) {
     return std::nullopt;
   }
-  const bool declaration = params.value("context", json::object())
-                               .value("includeDeclaration", false);
+  const json context = params.value("context", json::object());
+  const bool declaration = context.is_object() &&
+                           context.value("includeDeclaration", json()) == true;
   const Analysis& analysis = *at->doc->analysis;
   json out = json::array();
   std::set<std::pair<std::string, json>> said;

@@ -530,6 +530,19 @@ def check_bad_input(tmp):
     expect(bad["error"]["code"] == -32602, f"bad params: {bad}")
     c.send({"jsonrpc": "2.0", "id": 99, "method": 7})
     expect(c.response(99)["error"]["code"] == -32600, "method not a string")
+    # Members of the wrong type: read as absent where the protocol allows
+    # (a version, includeDeclaration), else InvalidParams; the server goes on.
+    odd = c.open("odd.nc", "%\nO1(X)\nM30\n%\n", version="seven")
+    expect(c.diagnostics(odd, 0) == [], "a version that is no number is 0")
+    wrong = c.call("textDocument/references", {
+        "textDocument": {"uri": odd}, "position": {"line": 1, "character": 0},
+        "context": {"includeDeclaration": "yes"}})
+    expect(wrong.get("result") == [], f"a wrong includeDeclaration: {wrong}")
+    fresh = Client(tmp)
+    bad = fresh.call("initialize", {"capabilities": 5})
+    expect(bad["error"]["code"] == -32602, f"capabilities not an object: {bad}")
+    expect("capabilities" in fresh.start(), "then initialize again, right")
+    expect(fresh.stop() == 0, "clean exit")
     # Framing errors are logged and reading goes on.
     c.raw(b"Content-Type: x\r\n\r\n")
     c.raw(b"Content-Length: banana\r\n\r\n")
