@@ -56,16 +56,9 @@ MachineFacts machineFacts(mbrt_ctx* ctx) {
                                   1006, 0, axis + 1) != 0
                             ? mask
                             : 0;
-    facts.rolloverMask |=
-        parameter(ctx, MBRT_PARAMETER_BIT | MBRT_PARAMETER_AXIS, 1008, 0,
-                  axis + 1) != 0
-            ? mask
-            : 0;
-    // FANUC: 1320 below 1321 is an infinite stroke; an axis that rolls
-    // over has none either (docs/language.md "Stroke limits").
-    const double high = parameter(ctx, MBRT_PARAMETER_AXIS, 1320, 0, axis + 1);
-    const double low = parameter(ctx, MBRT_PARAMETER_AXIS, 1321, 0, axis + 1);
-    facts.strokes.push_back(high >= low && (facts.rolloverMask & mask) == 0
+    double low = 0;
+    double high = 0;
+    facts.strokes.push_back(mbrt_get_stroke(ctx, axis, &low, &high) != 0
                                 ? std::optional(Stroke{low, high})
                                 : std::nullopt);
     for (int reference = 0; reference < 3; ++reference) {

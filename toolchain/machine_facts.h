@@ -29,7 +29,6 @@ struct MachineFacts {
   bool codeCalls = false;
   std::vector<std::optional<Stroke>> strokes; // per axis
   std::uint32_t rotaryMask = 0;
-  std::uint32_t rolloverMask = 0;
   // G54-G59 (index 1-6) with the external offset in each, per axis.
   std::array<std::vector<double>, 7> workOffsets;
   std::vector<double> lengths; // H n: geometry + wear (index 0: none)

@@ -238,6 +238,11 @@ const char* mbrt_tool_offset_field(const mbrt_ctx* ctx, int i);
  * returns 1, or 0 for an axis the machine does not have, a value it cannot
  * hold (more than nine digits, not finite) or a call from inside a sink. */
 int mbrt_get_machine_position(const mbrt_ctx* ctx, int axis, double* value);
+/* The stored stroke of an axis (parameters 1320/1321), in the machine's
+ * unit as above: 1 with its ends in low and high when the run's check
+ * holds the axis, 0 when the axis has none (1320 below 1321, or it rolls
+ * over) or does not exist. */
+int mbrt_get_stroke(const mbrt_ctx* ctx, int axis, double* low, double* high);
 int mbrt_set_machine_position(mbrt_ctx* ctx, int axis, double value);
 
 /* ---- Programs and their arguments ----------------------------------------

@@ -10,6 +10,17 @@
 
 using namespace mbc::rt;
 
+int mbrt_get_stroke(const mbrt_ctx* ctx, int axis, double* low, double* high) {
+  if (axis < 0 || axis >= ctx->axisCount() ||
+      (ctx->profile.strokeAxes() >> axis & 1) == 0) {
+    return 0;
+  }
+  const auto i = static_cast<std::size_t>(axis);
+  *low = ctx->profile.strokeLow[i];
+  *high = ctx->profile.strokeHigh[i];
+  return 1;
+}
+
 int mbrt_get_machine_position(const mbrt_ctx* ctx, int axis, double* value) {
   if (axis < 0 || axis >= ctx->axisCount()) {
     return 0;

@@ -98,7 +98,7 @@ void checkArcAxis(Overtravel& first, int axis, const ArcSpan& arc, double base,
 
 /// Calls `check(axis, stroke)` for each axis with a stroke.
 template <typename Check> void forEachStroke(const mbrt_ctx& ctx, Check check) {
-  const std::uint32_t mask = ctx.profile.strokeMask & ~ctx.profile.rolloverMask;
+  const std::uint32_t mask = ctx.profile.strokeAxes();
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
     if ((mask >> axis & 1) != 0) {
       const double scale = ctx.boxScale(axis, ctx.machine.modal.inch);

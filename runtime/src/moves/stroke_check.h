@@ -13,8 +13,8 @@ namespace mbc::rt {
 /// Whether moves are checked: some axis has a stroke, and the moves are the
 /// tool's, not those of a lathe's shape being read or found.
 inline bool checksStroke(const mbrt_ctx& ctx) {
-  return (ctx.profile.strokeMask & ~ctx.profile.rolloverMask) != 0 &&
-         !ctx.run.readingShape() && !ctx.run.dryRun;
+  return ctx.profile.strokeAxes() != 0 && !ctx.run.readingShape() &&
+         !ctx.run.dryRun;
 }
 
 /// A straight move from where the control point stands to `machine`.

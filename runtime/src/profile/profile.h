@@ -124,6 +124,10 @@ struct Profile {
 
   bool lathe() const { return series == Series::Lathe; }
 
+  /// The axes the stored stroke check holds: those with a stroke that do
+  /// not roll over (a position within one turn has no end to pass).
+  std::uint32_t strokeAxes() const { return strokeMask & ~rolloverMask; }
+
   /// A per-axis parameter's value for `axis`, its unset value (parameters.h)
   /// when the profile does not set it.
   double axisParameter(int number, int axis) const;
