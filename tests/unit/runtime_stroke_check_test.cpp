@@ -116,6 +116,19 @@ TEST(RuntimeStrokeCheck, AnArcIsCheckedOverItsExtentInEveryPlane) {
   }
 }
 
+TEST(RuntimeStrokeCheck, FramesMoveTheProgramNotTheStroke) {
+  // G68 R90 about X10 Y0: program X40 Y0 is machine X 10, Y 30 (within);
+  // X70 is machine Y 60, past 50 on Y, though X70 is within X's 100.
+  // (Y is given: set with the tool at machine zero, the frame makes the
+  // program position X10 Y10 there.)
+  Machine m(kMill);
+  ASSERT_EQ(m.block("G90 G17 G68 X10. Y0 R90."), 0) << m.report();
+  ASSERT_EQ(m.block("G01 X40. Y0 F500."), 0) << m.report();
+  EXPECT_EQ(m.read(5021), 10.0);
+  EXPECT_EQ(m.read(5022), 30.0);
+  expectOvertravel(m, "X70.", AlarmId::OvertravelPlus, "Y would reach 60.000");
+}
+
 TEST(RuntimeStrokeCheck, StrokesAreInMillimetresAndDegreesWhateverG20) {
   Machine m(R"({"axes": ["X", "Y", "Z", "A"], "parameters": {
       "1320": [100, 50, 10, 90], "1321": [-100, -50, -200, 0]}})");
@@ -136,6 +149,15 @@ TEST(RuntimeStrokeCheck, AxesWithoutAStroke) {
       "1320": [100, 50, -1, 90], "1321": [-100, -50, 1, 0]}})");
   EXPECT_EQ(m.block("G90 G00 Z-5000. A720."), 0) << m.report();
   EXPECT_EQ(m.block("G91 A-1000."), 0) << m.report();
+  // The C API says which axes the run checks, and their ends.
+  double low = 0.0;
+  double high = 0.0;
+  ASSERT_EQ(mbrt_get_stroke(m.ctx(), 0, &low, &high), 1);
+  EXPECT_EQ(low, -100.0);
+  EXPECT_EQ(high, 100.0);
+  EXPECT_EQ(mbrt_get_stroke(m.ctx(), 2, &low, &high), 0); // infinite
+  EXPECT_EQ(mbrt_get_stroke(m.ctx(), 3, &low, &high), 0); // rolls over
+  EXPECT_EQ(mbrt_get_stroke(m.ctx(), 4, &low, &high), 0); // no such axis
   // Axes the arrays leave out have no stroke either.
   Machine short_(R"({"parameters": {"1320": [100], "1321": [-100]}})");
   EXPECT_EQ(short_.block("G90 G00 Y-900. Z900."), 0) << short_.report();
