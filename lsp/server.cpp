@@ -657,12 +657,22 @@ std::optional<json> Server::documentSymbol(const json& params) {
   return out;
 }
 
-std::optional<json> Server::codeAction(const json& params) {
+std::optional<Server::Span> Server::spanOf(const json& params) {
   Document* doc = document(params);
   const std::optional<Range> range = rangeOfJson(params.value("range", json()));
   if (doc == nullptr || !range) {
     return std::nullopt;
   }
+  return Span{doc, *range};
+}
+
+std::optional<json> Server::codeAction(const json& params) {
+  const std::optional<Span> span = spanOf(params);
+  if (!span) {
+    return std::nullopt;
+  }
+  Document* doc = span->doc;
+  const Range* range = &span->range;
   const Analysis& analysis = *doc->analysis;
   // The lines asked about, whole: an editor asks at the cursor.
   const std::size_t begin =
@@ -784,11 +794,12 @@ std::optional<json> Server::workspaceSymbol(const json& params) {
 }
 
 std::optional<json> Server::inlayHint(const json& params) {
-  Document* doc = document(params);
-  const std::optional<Range> range = rangeOfJson(params.value("range", json()));
-  if (doc == nullptr || !range) {
+  const std::optional<Span> span = spanOf(params);
+  if (!span) {
     return std::nullopt;
   }
+  Document* doc = span->doc;
+  const Range* range = &span->range;
   const auto begin =
       static_cast<std::uint32_t>(doc->text->offsetOf(range->start, encoding_));
   const auto end =

@@ -78,6 +78,14 @@ private:
   };
 
   std::optional<Place> placeOf(const nlohmann::json& params);
+
+  /// What a request over a span (textDocument and range) is about.
+  struct Span {
+    Document* doc;
+    Range range;
+  };
+
+  std::optional<Span> spanOf(const nlohmann::json& params);
   void analyse(Document& doc);
   /// A file of the workspace changed: the index reads it again, and every
   /// open document is read again (what it calls may have changed).
