@@ -40,6 +40,21 @@ void TextDocument::indexLines() {
       lineStarts_.push_back(i + 1);
     }
   }
+  wide_.clear();
+  std::size_t saved = 0;
+  for (std::size_t line = 0; line < lineStarts_.size(); ++line) {
+    const std::string_view text = lineAt(static_cast<int>(line));
+    for (std::size_t byte = 0; byte < text.size();) {
+      const int length =
+          std::min<int>(sequenceLength(static_cast<unsigned char>(text[byte])),
+                        static_cast<int>(text.size() - byte));
+      if (length > 1) {
+        wide_.push_back({lineStarts_[line] + byte, length, saved});
+        saved += static_cast<std::size_t>(length - unitsOf(length));
+      }
+      byte += static_cast<std::size_t>(length);
+    }
+  }
 }
 
 std::string_view TextDocument::lineAt(int line) const {
@@ -83,17 +98,35 @@ Position TextDocument::positionOf(std::size_t offset, Encoding e) const {
       std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset);
   const auto line = static_cast<int>(after - lineStarts_.begin()) - 1;
   const std::string_view text = lineAt(line);
-  const std::size_t column = std::min(
-      offset - lineStarts_[static_cast<std::size_t>(line)], text.size());
-  int character = 0;
-  for (std::size_t byte = 0; byte < column;) {
-    const int length =
-        std::min<int>(sequenceLength(static_cast<unsigned char>(text[byte])),
-                      static_cast<int>(text.size() - byte));
-    character += e == Encoding::Utf8 ? length : unitsOf(length);
-    byte += static_cast<std::size_t>(length);
+  const std::size_t lineStart = lineStarts_[static_cast<std::size_t>(line)];
+  const std::size_t column = std::min(offset - lineStart, text.size());
+  const std::size_t target = lineStart + column;
+  const auto startsBefore = [](const Wide& w, std::size_t at) {
+    return w.start < at;
+  };
+  const auto first =
+      std::lower_bound(wide_.begin(), wide_.end(), lineStart, startsBefore);
+  const auto last = std::lower_bound(first, wide_.end(), target, startsBefore);
+  std::size_t character = column;
+  if (first != last) {
+    const auto savedBefore = [&](std::vector<Wide>::const_iterator it) {
+      return it == wide_.end()
+                 ? wide_.back().utf16SavedBefore +
+                       static_cast<std::size_t>(wide_.back().length -
+                                                unitsOf(wide_.back().length))
+                 : it->utf16SavedBefore;
+    };
+    if (e == Encoding::Utf16) {
+      character -= savedBefore(last) - savedBefore(first);
+    }
+    // An offset inside a character counts the whole character.
+    const Wide& inside = *(last - 1);
+    character +=
+        std::max<std::size_t>(
+            inside.start + static_cast<std::size_t>(inside.length), target) -
+        target;
   }
-  return {line, character};
+  return {line, static_cast<int>(character)};
 }
 
 void TextDocument::apply(const std::optional<Range>& range,

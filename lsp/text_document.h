@@ -55,6 +55,17 @@ private:
   int version_;
   std::string text_;
   std::vector<std::size_t> lineStarts_;
+
+  /// A character of more than one byte: positions count it as fewer
+  /// units than bytes. Kept in text order with the units saved before it,
+  /// so that a position on a line a megabyte long takes no counting.
+  struct Wide {
+    std::size_t start;
+    int length;                   // bytes, cut at the line's end
+    std::size_t utf16SavedBefore; // bytes minus UTF-16 units, text so far
+  };
+
+  std::vector<Wide> wide_;
 };
 
 } // namespace mbc::lsp

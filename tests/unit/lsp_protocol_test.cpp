@@ -70,5 +70,43 @@ TEST(LspPositions, Utf16Utf8AndLineEnds) {
   EXPECT_EQ(doc.positionOf(3, Encoding::Utf8).line, 1);
 }
 
+TEST(LspPositions, OffsetsInsideCharactersAndOnEveryLine) {
+  // "é" then "😀" on line 0, "€" (3 bytes, 1 unit) on line 1: every
+  // offset's position, counted by hand. An offset inside a character
+  // counts the whole character.
+  const std::string text = "\xc3\xa9G\xf0\x9f\x98\x80X\n\xe2\x82\xac"
+                           "1";
+  TextDocument doc("file:///a.nc", 1, text);
+  const int utf16[] = {0, 1, 1, 2, 4, 4, 4, 4, 5};
+  const int utf8[] = {0, 2, 2, 3, 7, 7, 7, 7, 8};
+  for (std::size_t offset = 0; offset < std::size(utf16); ++offset) {
+    EXPECT_EQ(doc.positionOf(offset, Encoding::Utf16).character, utf16[offset])
+        << offset;
+    EXPECT_EQ(doc.positionOf(offset, Encoding::Utf8).character, utf8[offset])
+        << offset;
+  }
+  EXPECT_EQ(doc.positionOf(9, Encoding::Utf16).line, 1);
+  EXPECT_EQ(doc.positionOf(9, Encoding::Utf16).character, 0);
+  EXPECT_EQ(doc.positionOf(10, Encoding::Utf16).character, 1); // inside €
+  EXPECT_EQ(doc.positionOf(12, Encoding::Utf16).character, 1);
+  EXPECT_EQ(doc.positionOf(13, Encoding::Utf16).character, 2);
+  EXPECT_EQ(doc.positionOf(13, Encoding::Utf8).character, 4);
+}
+
+TEST(LspPositions, ALineOfAMegabyteIsNoSlower) {
+  // 500 000 tokens on one line, each position asked for in turn: a count
+  // from the line's start each time would take minutes.
+  std::string line = "\xc3\xa9";
+  for (int i = 0; i < 250000; ++i) {
+    line += "+1";
+  }
+  TextDocument doc("file:///a.nc", 1, line + "\n");
+  int last = 0;
+  for (std::size_t offset = 2; offset < line.size(); offset += 2) {
+    last = doc.positionOf(offset, Encoding::Utf16).character;
+  }
+  EXPECT_EQ(last, static_cast<int>(line.size()) - 2 - 1);
+}
+
 } // namespace
 } // namespace mbc::lsp
