@@ -40,7 +40,7 @@ int dispatch(int argc, char** argv) {
     return checkCommand(*options);
   }
   if (options->command == "lsp") {
-    return mbc::lsp::runServer(stdin, stdout);
+    return mbc::lsp::runServer(fileno(stdin), stdout);
   }
   return runCommand(*options);
 }

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <poll.h>
+#include <unistd.h>
 
 namespace mbc::lsp {
 
@@ -138,6 +141,29 @@ Incoming MessageReader::next() {
     body.push_back(static_cast<char>(c));
   }
   return {Incoming::Kind::Message, std::move(body), ""};
+}
+
+int FdSource::next() {
+  while (at_ == size_) {
+    const ssize_t got = ::read(fd_, buffer_, sizeof buffer_);
+    if (got < 0 && errno == EINTR) {
+      continue;
+    }
+    if (got <= 0) {
+      return -1;
+    }
+    at_ = 0;
+    size_ = static_cast<std::size_t>(got);
+  }
+  return static_cast<unsigned char>(buffer_[at_++]);
+}
+
+bool FdSource::ready() {
+  if (at_ < size_) {
+    return true;
+  }
+  pollfd p{fd_, POLLIN, 0};
+  return ::poll(&p, 1, 0) > 0;
 }
 
 void writeMessage(std::FILE* out, std::string_view json) {

@@ -21,15 +21,22 @@ public:
   virtual int next() = 0;
 };
 
-/// Standard input, or another FILE.
-class FileSource final : public ByteSource {
+/// A file descriptor (the server's standard input), read in blocks of
+/// its own so that it can tell what has arrived without waiting.
+class FdSource final : public ByteSource {
 public:
-  explicit FileSource(std::FILE* file) : file_(file) {}
+  explicit FdSource(int fd) : fd_(fd) {}
 
-  int next() override { return std::getc(file_); }
+  int next() override;
+
+  /// Whether a byte can be taken without waiting: read already, or there
+  /// to read.
+  bool ready();
 
 private:
-  std::FILE* file_;
+  int fd_;
+  char buffer_[65536];
+  std::size_t at_ = 0, size_ = 0;
 };
 
 /// Bytes in memory (the tests and the fuzzer).

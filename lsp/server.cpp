@@ -11,6 +11,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -96,6 +97,10 @@ std::optional<Range> rangeOfJson(const json& r) {
 json toJson(Position p) {
   return {{"line", p.line}, {"character", p.character}};
 }
+
+/// Messages the reader holds back while more are arriving: a client that
+/// never pauses is still served.
+constexpr std::size_t kMessagesHeldAtMost = 1024;
 
 /// Why a message cannot be taken as a request or notification, or "".
 std::string malformed(const json& message) {
@@ -867,10 +872,12 @@ std::optional<json> Server::semanticTokens(const json& params) {
   return json{{"data", data}};
 }
 
-int runServer(std::FILE* in, std::FILE* out) {
+int runServer(int in, std::FILE* out) {
   // The reader runs ahead on its own thread, so that a batch holds every
-  // message that arrived while the last one was served. It may still wait
-  // for input when the server exits: it owns the queue with it.
+  // message that arrived while the last one was served; messages that
+  // arrive together are handed over together, so that a request and its
+  // cancel written at once are never served apart. It may still wait for
+  // input when the server exits: it owns the queue with it.
   struct Queue {
     std::mutex mutex;
     std::condition_variable ready;
@@ -880,18 +887,27 @@ int runServer(std::FILE* in, std::FILE* out) {
 
   const auto queue = std::make_shared<Queue>();
   std::thread([queue, in] {
-    FileSource source(in);
+    FdSource source(in);
     MessageReader messages(source);
+    std::deque<Incoming> arrived;
     for (;;) {
       Incoming next = messages.next();
+      const bool ended = next.kind == Incoming::Kind::End;
+      if (!ended) {
+        arrived.push_back(std::move(next));
+        if (source.ready() && arrived.size() < kMessagesHeldAtMost) {
+          continue;
+        }
+      }
       const std::lock_guard lock(queue->mutex);
-      if (next.kind == Incoming::Kind::End) {
-        queue->ended = true;
-        queue->ready.notify_one();
+      std::move(arrived.begin(), arrived.end(),
+                std::back_inserter(queue->items));
+      arrived.clear();
+      queue->ended = ended;
+      queue->ready.notify_one();
+      if (ended) {
         return;
       }
-      queue->items.push_back(std::move(next));
-      queue->ready.notify_one();
     }
   }).detach();
   Server server([out](const std::string& body) { writeMessage(out, body); });

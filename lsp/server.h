@@ -114,8 +114,9 @@ private:
   std::map<std::string, Document> documents_;
 };
 
-/// Serves `in` and `out` until the client says exit or the input ends;
+/// Serves the file descriptor `in` and the stream `out` until the client
+/// says exit or the input ends;
 /// the exit status.
-int runServer(std::FILE* in, std::FILE* out);
+int runServer(int in, std::FILE* out);
 
 } // namespace mbc::lsp

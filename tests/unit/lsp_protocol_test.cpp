@@ -3,6 +3,8 @@
 // position rules say, case by case.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include "lsp/message_stream.h"
 #include "lsp/text_document.h"
 
@@ -47,6 +49,29 @@ TEST(LspFraming, MessagesHeadersAndProblems) {
   const auto big = readAll(huge);
   ASSERT_EQ(big.size(), 1U);
   EXPECT_NE(big[0].problem.find("more than"), std::string::npos);
+}
+
+TEST(LspFraming, MessagesWrittenTogetherAreReadyTogether) {
+  // A request and its cancel in one write: after the first is read, the
+  // second is there without waiting; after it, nothing is.
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const std::string two = "Content-Length: 2\r\n\r\n{}"
+                          "Content-Length: 2\r\n\r\n[]";
+  ASSERT_EQ(write(fds[1], two.data(), two.size()),
+            static_cast<ssize_t>(two.size()));
+  FdSource source(fds[0]);
+  MessageReader reader(source);
+  EXPECT_EQ(reader.next().body, "{}");
+  EXPECT_TRUE(source.ready());
+  EXPECT_EQ(reader.next().body, "[]");
+  EXPECT_FALSE(source.ready());
+  ASSERT_EQ(write(fds[1], "C", 1), 1);
+  EXPECT_TRUE(source.ready()); // arrived, not read yet
+  close(fds[1]);
+  EXPECT_EQ(reader.next().kind, Incoming::Kind::Problem);
+  EXPECT_EQ(reader.next().kind, Incoming::Kind::End);
+  close(fds[0]);
 }
 
 TEST(LspPositions, Utf16Utf8AndLineEnds) {
