@@ -17,15 +17,9 @@ std::unique_ptr<Analysis> read(const std::string& path, const std::string& text,
                                const std::vector<std::string>& files,
                                const AnalysisSettings& settings) {
   auto out = std::make_unique<Analysis>();
-  toolchain::LoadOptions load;
+  out->files = files;
+  toolchain::LoadOptions load = loadOptions(settings);
   load.checkWarnings = true;
-  load.defaultMachine = settings.defaultMachine;
-  load.latheSystem = settings.latheSystem;
-  load.inch = settings.inch;
-  load.decimalPointInput = settings.decimalPointInput;
-  // Every error is reported, each block with one alarming as a run would.
-  load.errors = ErrorMode::Alarm;
-  load.includeDirs = settings.includeDirs;
   DiagnosticEngine diags(out->cu.sources);
   toolchain::parseInputs({toolchain::SourceText{path, text}}, files, load,
                          out->cu, diags, out->failure);
@@ -38,6 +32,18 @@ std::unique_ptr<Analysis> read(const std::string& path, const std::string& text,
 }
 
 } // namespace
+
+toolchain::LoadOptions loadOptions(const AnalysisSettings& settings) {
+  toolchain::LoadOptions load;
+  load.defaultMachine = settings.defaultMachine;
+  load.latheSystem = settings.latheSystem;
+  load.inch = settings.inch;
+  load.decimalPointInput = settings.decimalPointInput;
+  // Every error is reported, each block with one alarming as a run would.
+  load.errors = ErrorMode::Alarm;
+  load.includeDirs = settings.includeDirs;
+  return load;
+}
 
 std::unique_ptr<Analysis> analyse(const std::string& path,
                                   const std::string& text,

@@ -20,6 +20,7 @@ namespace mbc::lsp {
 /// initialization options) says of the input.
 struct AnalysisSettings {
   std::vector<std::string> includeDirs;
+  std::string machinePath; // the profile runs use, "" for the built-in one
   bool defaultMachine = true;
   char latheSystem = 0;
   bool inch = false;
@@ -31,7 +32,11 @@ struct Analysis {
   std::vector<Diagnostic> diagnostics; // in file order, as shown
   std::vector<Severity> severities;    // of each, after the view
   std::string failure; // a called program's file that could not be read
+  std::vector<std::string> files; // the workspace's files read with it
 };
+
+/// How the frontend reads the workspace's programs under `settings`.
+toolchain::LoadOptions loadOptions(const AnalysisSettings& settings);
 
 /// Reads `text` as the file at `path`, with the files of the workspace
 /// that define the programs it calls (and those they call).

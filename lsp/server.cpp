@@ -20,6 +20,7 @@
 #include "lsp/ast_lookup.h"
 #include "lsp/completion.h"
 #include "lsp/hover.h"
+#include "lsp/json_params.h"
 #include "lsp/message_stream.h"
 #include "lsp/navigation.h"
 #include "lsp/semantic_tokens.h"
@@ -30,73 +31,6 @@ namespace mbc::lsp {
 using nlohmann::json;
 
 namespace {
-
-// The protocol's error codes.
-constexpr int kParseError = -32700;
-constexpr int kInvalidRequest = -32600;
-constexpr int kMethodNotFound = -32601;
-constexpr int kInvalidParams = -32602;
-constexpr int kServerNotInitialized = -32002;
-constexpr int kRequestCancelled = -32800;
-constexpr int kContentModified = -32801;
-
-// window/logMessage types.
-constexpr int kLogError = 1;
-constexpr int kLogWarning = 2;
-
-constexpr int kSyncIncremental = 2;
-
-/// An integer member of an object, or `otherwise`.
-int integer(const json& object, const char* key, int otherwise) {
-  if (!object.is_object() || !object.contains(key) ||
-      !object[key].is_number_integer()) {
-    return otherwise;
-  }
-  const auto value = object[key].get<std::int64_t>();
-  return value >= INT32_MIN && value <= INT32_MAX ? static_cast<int>(value)
-                                                  : otherwise;
-}
-
-/// A string member of an object, or nothing.
-std::optional<std::string> text(const json& object, const char* key) {
-  if (!object.is_object()) {
-    return std::nullopt;
-  }
-  const auto it = object.find(key);
-  if (it == object.end() || !it->is_string()) {
-    return std::nullopt;
-  }
-  return it->get<std::string>();
-}
-
-std::optional<Position> positionOf(const json& p) {
-  if (!p.is_object() || !p.contains("line") || !p.contains("character") ||
-      !p["line"].is_number_integer() || !p["character"].is_number_integer()) {
-    return std::nullopt;
-  }
-  const auto line = p["line"].get<std::int64_t>();
-  const auto character = p["character"].get<std::int64_t>();
-  if (line < 0 || character < 0 || line > INT32_MAX || character > INT32_MAX) {
-    return std::nullopt;
-  }
-  return Position{static_cast<int>(line), static_cast<int>(character)};
-}
-
-std::optional<Range> rangeOfJson(const json& r) {
-  if (!r.is_object()) {
-    return std::nullopt;
-  }
-  const std::optional<Position> start = positionOf(r.value("start", json()));
-  const std::optional<Position> end = positionOf(r.value("end", json()));
-  if (!start || !end) {
-    return std::nullopt;
-  }
-  return Range{*start, *end};
-}
-
-json toJson(Position p) {
-  return {{"line", p.line}, {"character", p.character}};
-}
 
 /// Messages the reader holds back while more are arriving: a client that
 /// never pauses is still served.
@@ -120,18 +54,20 @@ std::string malformed(const json& message) {
   return "";
 }
 
-/// A document the request names: params.textDocument.uri.
-std::optional<std::string> documentUri(const json& params) {
-  return params.is_object() ? text(params.value("textDocument", json()), "uri")
-                            : std::nullopt;
-}
-
 } // namespace
 
 void Server::respond(const json& id, json result) {
   send_(
       json{{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}}.dump(
           -1, ' ', false, json::error_handler_t::replace));
+}
+
+void Server::ask(const std::string& method, json params) {
+  send_(json{{"jsonrpc", "2.0"},
+             {"id", fmt::format("mbc-{}", ++asked_)},
+             {"method", method},
+             {"params", std::move(params)}}
+            .dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
 void Server::fail(const json& id, int code, const std::string& message) {
@@ -220,7 +156,7 @@ void Server::handleBatch(const std::vector<std::string>& bodies) {
 
 void Server::dispatch(const json& message, bool stale, bool cancelled) {
   if (!message.contains("method")) {
-    return; // a response: the server sends no requests yet
+    return; // a response: the server does not wait for any
   }
   const std::string method = message["method"].get<std::string>();
   const json params = message.value("params", json::object());
@@ -274,7 +210,15 @@ void Server::request(const json& id, const std::string& method,
       {"textDocument/inlayHint", &Server::inlayHint},
       {"textDocument/signatureHelp", &Server::signatureHelp},
       {"textDocument/semanticTokens/full", &Server::semanticTokens},
+      {"textDocument/codeLens", &Server::codeLens},
+      {"codeLens/resolve", &Server::codeLensResolve},
+      {"workspace/executeCommand", &Server::executeCommand},
   };
+  if (method == "codeLens/resolve" && lensDocument(params) == nullptr) {
+    fail(id, kContentModified,
+         "the document changed after the lens was made: ask again");
+    return;
+  }
   const auto handler = kHandlers.find(method);
   if (handler == kHandlers.end()) {
     fail(id, kMethodNotFound, fmt::format("mbc lsp has no method {}", method));
@@ -325,8 +269,7 @@ void Server::notification(const std::string& method, const json& params) {
     Document& doc = documents_[*uri];
     doc.text = std::make_unique<TextDocument>(*uri, integer(item, "version", 0),
                                               *body);
-    doc.analysis.reset();
-    doc.published = false;
+    doc.changed();
     return;
   }
   const auto it = uri ? documents_.find(*uri) : documents_.end();
@@ -352,8 +295,7 @@ void Server::notification(const std::string& method, const json& params) {
     }
     doc.text->setVersion(
         integer(params["textDocument"], "version", doc.text->version()));
-    doc.analysis.reset();
-    doc.published = false;
+    doc.changed();
   } else if (method == "textDocument/didClose") {
     notify("textDocument/publishDiagnostics",
            {{"uri", *uri}, {"diagnostics", json::array()}});
@@ -373,6 +315,11 @@ json Server::initialize(const json& params) {
       encoding_ = Encoding::Utf8;
     }
   }
+  showDocument_ =
+      params.is_object() && params.value("capabilities", json::object())
+                                    .value("window", json::object())
+                                    .value("showDocument", json::object())
+                                    .value("support", false) == true;
   readWorkspaceSettings(params);
   initialized_ = true; // not before: parameters of the wrong type throw
   return {
@@ -392,6 +339,8 @@ json Server::initialize(const json& params) {
          {{"legend",
            {{"tokenTypes", kTokenTypes}, {"tokenModifiers", kTokenModifiers}}},
           {"full", true}}},
+        {"codeLensProvider", {{"resolveProvider", true}}},
+        {"executeCommandProvider", {{"commands", {kShowRunCommand}}}},
         {"signatureHelpProvider",
          {{"triggerCharacters",
            {"A", "B", "C", "D", "E", "F", "H", "I", "J", "K", "M",
@@ -465,6 +414,7 @@ void Server::useMachine(const std::string& path) {
     return;
   }
   settings_.defaultMachine = false;
+  settings_.machinePath = path;
   settings_.latheSystem = static_cast<char>(mbrt_lathe_system(ctx));
   mbrt_stats stats{};
   mbrt_get_stats(ctx, &stats);
@@ -474,11 +424,8 @@ void Server::useMachine(const std::string& path) {
   mbrt_destroy(ctx);
 }
 
-void Server::analyse(Document& doc) {
-  if (doc.analysis) {
-    return;
-  }
-  const std::optional<std::string> path = pathOfUri(doc.text->uri());
+AnalysisSettings Server::settingsFor(const TextDocument& doc) const {
+  const std::optional<std::string> path = pathOfUri(doc.uri());
   AnalysisSettings settings = settings_;
   // Called programs are found beside the document, in the folders the
   // workspace names, and at its root.
@@ -491,15 +438,20 @@ void Server::analyse(Document& doc) {
   if (!root_.empty()) {
     settings.includeDirs.push_back(root_);
   }
-  doc.analysis = lsp::analyse(path.value_or(doc.text->uri()), doc.text->text(),
-                              settings, index_);
+  return settings;
+}
+
+void Server::analyse(Document& doc) {
+  if (!doc.analysis) {
+    doc.analysis = lsp::analyse(nameOfUri(doc.text->uri()), doc.text->text(),
+                                settingsFor(*doc.text), index_);
+  }
 }
 
 void Server::fileChanged(const std::string& path) {
   index_.refresh(path);
   for (auto& [uri, doc] : documents_) {
-    doc.analysis.reset();
-    doc.published = false;
+    doc.changed();
   }
 }
 

@@ -19,6 +19,7 @@
 #include "lsp/analysis.h"
 #include "lsp/ast_lookup.h"
 #include "lsp/program_index.h"
+#include "lsp/program_runs.h"
 #include "lsp/text_document.h"
 
 namespace mbc::lsp {
@@ -28,6 +29,10 @@ public:
   using Send = std::function<void(const std::string&)>;
 
   explicit Server(Send send) : send_(std::move(send)) {}
+
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
 
   /// The messages that arrived together, in order.
   void handleBatch(const std::vector<std::string>& bodies);
@@ -43,8 +48,16 @@ public:
 private:
   struct Document {
     std::unique_ptr<TextDocument> text;
-    std::unique_ptr<Analysis> analysis; // null until analysed again
+    std::unique_ptr<Analysis> analysis;     // null until analysed again
+    std::map<std::string, RunSummary> runs; // the lenses', by program
     bool published = false;
+
+    /// The text, or what it calls, changed: everything known is stale.
+    void changed() {
+      analysis.reset();
+      runs.clear();
+      published = false;
+    }
   };
 
   void dispatch(const nlohmann::json& message, bool stale, bool cancelled);
@@ -66,6 +79,17 @@ private:
   std::optional<nlohmann::json> inlayHint(const nlohmann::json& params);
   std::optional<nlohmann::json> signatureHelp(const nlohmann::json& params);
   std::optional<nlohmann::json> semanticTokens(const nlohmann::json& params);
+  // The code lenses (server_lenses.cpp).
+  std::optional<nlohmann::json> codeLens(const nlohmann::json& params);
+  std::optional<nlohmann::json> codeLensResolve(const nlohmann::json& params);
+  std::optional<nlohmann::json> executeCommand(const nlohmann::json& params);
+  /// The lens's document when it is still the text the lens was made for.
+  Document* lensDocument(const nlohmann::json& lens);
+  /// A run of a program of an open document, the run's view with `html`.
+  RunSummary run(Document& doc, const std::string& program,
+                 const std::string& html);
+  /// Where the views of runs are written: a folder of this session's.
+  std::string viewFolder();
 
   /// The open document a request names, analysed; nullptr if none.
   Document* document(const nlohmann::json& params);
@@ -86,6 +110,8 @@ private:
   };
 
   std::optional<Span> spanOf(const nlohmann::json& params);
+  /// How a document is read: the workspace's settings, with its folder.
+  AnalysisSettings settingsFor(const TextDocument& doc) const;
   void analyse(Document& doc);
   /// A file of the workspace changed: the index reads it again, and every
   /// open document is read again (what it calls may have changed).
@@ -98,6 +124,8 @@ private:
                     const TextDocument& doc) const;
 
   void respond(const nlohmann::json& id, nlohmann::json result);
+  /// A request of the server's own; the client's answer is not awaited.
+  void ask(const std::string& method, nlohmann::json params);
   void fail(const nlohmann::json& id, int code, const std::string& message);
   void notify(const std::string& method, nlohmann::json params);
   void log(int type, const std::string& message);
@@ -107,6 +135,9 @@ private:
   bool shutdown_ = false;
   bool exited_ = false;
   Encoding encoding_ = Encoding::Utf16;
+  bool showDocument_ = false; // the client opens a URI it is sent
+  int asked_ = 0;             // the server's own requests so far
+  std::string viewFolder_;
   std::string root_;
   AnalysisSettings settings_;
   std::vector<std::string> userIncludes_;

@@ -49,6 +49,10 @@ std::optional<std::string> pathOfUri(std::string_view uri) {
   return path;
 }
 
+std::string nameOfUri(std::string_view uri) {
+  return pathOfUri(uri).value_or(std::string(uri));
+}
+
 std::string uriOfPath(std::string_view path) {
   std::string uri = "file://";
   for (const char c : path) {

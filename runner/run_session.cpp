@@ -30,16 +30,6 @@ void writeLog(void* log, const char* data, std::size_t size) {
   std::fwrite(data, 1, size, static_cast<std::FILE*>(log));
 }
 
-/// "1:02:03.4" or "2:03.4".
-std::string clockText(double seconds) {
-  const auto tenths = static_cast<long long>(std::llround(seconds * 10.0));
-  const long long hours = tenths / 36000;
-  const long long minutes = tenths / 600 % 60;
-  const double rest = static_cast<double>(tenths % 600) / 10.0;
-  return hours > 0 ? fmt::format("{}:{:02}:{:04.1f}", hours, minutes, rest)
-                   : fmt::format("{}:{:04.1f}", minutes, rest);
-}
-
 /// A box limit to print with 3 decimals: an arc's extreme a rounding error
 /// below zero (-1e-15) reads 0.000, not -0.000.
 double boxLimit(double value) {
@@ -153,19 +143,16 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       std::fprintf(stderr, "mbc: error: cannot write '%s'\n", failed->c_str());
       return false;
     }
-    if (!o.svgPath.empty()) {
-      motions.svg.emplace(o.svgView);
+  }
+  if (!o.svgPath.empty()) {
+    motions.svg.emplace(o.svgView);
+  }
+  if (!o.htmlPath.empty()) {
+    if (toolpathPage().empty()) {
+      std::fprintf(stderr, "mbc: error: %s\n", kNoPageReason);
+      return false;
     }
-    if (!o.htmlPath.empty()) {
-      if (toolpathPage().empty()) {
-        std::fputs("mbc: error: --html is not available: this mbc was built "
-                   "without its page (npm could not fetch three.js from the "
-                   "npm registry; see the build's warning)\n",
-                   stderr);
-        return false;
-      }
-      motions.html.emplace();
-    }
+    motions.html.emplace();
   }
   if (motions.toolpath.get() != nullptr || motions.svg || motions.html) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
@@ -175,6 +162,15 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
 }
 
 } // namespace
+
+std::string clockText(double seconds) {
+  const auto tenths = static_cast<long long>(std::llround(seconds * 10.0));
+  const long long hours = tenths / 36000;
+  const long long minutes = tenths / 600 % 60;
+  const double rest = static_cast<double>(tenths % 600) / 10.0;
+  return hours > 0 ? fmt::format("{}:{:02}:{:04.1f}", hours, minutes, rest)
+                   : fmt::format("{}:{:04.1f}", minutes, rest);
+}
 
 mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx) {
   for (auto [number, value] : o.presets) {

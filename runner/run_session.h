@@ -64,6 +64,9 @@ mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx);
 int runOnce(const RunOptions& o, const std::string& mainName,
             const MainRun& engine, const PhaseTimes& phases = {});
 
+/// A cycle time as the summary prints it: "1:02:03.4" or "2:03.4".
+std::string clockText(double seconds);
+
 /// Milliseconds since `start`.
 double millisecondsSince(std::chrono::steady_clock::time_point start);
 

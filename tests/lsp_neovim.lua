@@ -38,5 +38,21 @@ if target and target[1] then
 else
   say("definition none")
 end
+-- The lens of O1000, resolved: its run.
+vim.lsp.codelens.refresh()
+local lens
+vim.wait(20000, function()
+  for _, l in ipairs(vim.lsp.codelens.get(buf)) do
+    if l.command then
+      lens = l
+    end
+  end
+  return lens ~= nil
+end, 50)
+if lens then
+  say(string.format("lens %d %s", lens.range.start.line + 1, lens.command.title))
+else
+  say("lens none")
+end
 report:close()
 vim.cmd("qall!")

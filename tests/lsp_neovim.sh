@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A real editor's client: Debian's Neovim, headless, with the configuration
 # docs/editors.md gives, opens a shop program and checks that mbc lsp's
-# diagnostics appear, that the hover names the G code, and that go to
-# definition lands on the label.
+# diagnostics appear, that the hover names the G code, that go to
+# definition lands on the label, and that O1000's code lens shows its run.
 #   tests/lsp_neovim.sh MBC
 set -u
 mbc=$(realpath "$1")
@@ -27,9 +27,10 @@ diagnostic 15 missing-program
 diagnostic 16 missing-program
 hover **G01**: linear interpolation (modal group 01, read back in #4001)
 definition part.nc 17
+lens 2 6 moves · 0:06.5 · ends
 TXT
 if ! diff -u "$work/expected" "$work/report"; then
   echo "FAIL: Neovim's client and mbc lsp"
   exit 1
 fi
-echo "ok: Neovim's client got the diagnostics, the hover and the definition"
+echo "ok: Neovim's client got the diagnostics, the hover, the definition and the lens"

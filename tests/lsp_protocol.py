@@ -5,8 +5,8 @@ Each check starts the server, speaks to it over its standard input and
 output as an editor does (Content-Length framing, JSON-RPC 2.0), and checks
 what it answers on shop-style programs in a workspace of their own:
 lifecycle, diagnostics and their edits, hover, go to definition, document
-symbols, positions in UTF-16, cancelled and stale requests, and input that
-is not what the protocol allows.
+symbols, positions in UTF-16, cancelled and stale requests, input that
+is not what the protocol allows, and the code lenses' runs.
 
     lsp_protocol.py MBC
 """
@@ -563,13 +563,114 @@ def check_bad_input(tmp):
     expect(c.stop() == 0, "the server survived it all")
 
 
+CHECKS = """%
+O3000(DRILL CHECK)
+G90G54G0X0Y0Z50.
+#3000=11(PROBE NOT TRIPPED)
+M30
+O3001(CORNER CHECK)
+G65P9040X10.Y5.
+M99
+O3002(ENDLESS)
+WHILE[1EQ1]DO1
+#1=#1+1
+END1
+M99
+%
+"""
+
+
+def check_code_lenses(tmp):
+    c = Client(tmp)
+    c.start()
+    uri = c.open("part.nc", PART)
+    lenses = c.call("textDocument/codeLens",
+                    {"textDocument": {"uri": uri}})["result"]
+    expect([lens["range"]["start"]["line"] for lens in lenses] == [1],
+           f"one lens, on O1000's line: {lenses}")
+    first = lenses[0]
+
+    def title(lens):
+        command = c.call("codeLens/resolve", lens)["result"]["command"]
+        expect(command["command"] == "mbc.showRun" and
+               command["arguments"] == [lens["data"]["uri"],
+                                        lens["data"]["program"]],
+               f"the lens's command: {command}")
+        return command["title"]
+
+    # By hand: G91 from line 6 on, so X moves 0, 10 and 20 (30 mm at F300,
+    # 6 s), Z25 and Z50 rapids (75 mm at the built-in 10000 mm/min, 0.45 s),
+    # X0Y0 a rapid of none; #5021 is 25, so the calls are jumped over.
+    got = title(first)
+    expect(got == "6 moves \u00b7 0:06.5 \u00b7 ends", f"O1000's lens: {got}")
+    # The run is of the text as edited, not as saved: a fourth pass adds
+    # 30 mm, 6 s.
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 2},
+        "contentChanges": [{"range": {"start": {"line": 9, "character": 10},
+                                      "end": {"line": 9, "character": 11}},
+                            "text": "4"}]})
+    lenses = c.call("textDocument/codeLens",
+                    {"textDocument": {"uri": uri}})["result"]
+    got = title(lenses[0])
+    expect(got == "7 moves \u00b7 0:12.5 \u00b7 ends", f"after the edit: {got}")
+    stale = c.call("codeLens/resolve", first)
+    expect(stale.get("error", {}).get("code") == -32801,
+           f"a lens of the old text is stale: {stale}")
+
+    # The alarm and where it is, in the document or in the library; a loop
+    # that never ends stops at the budget.
+    uri = c.open("checks.nc", CHECKS)
+    lenses = c.call("textDocument/codeLens",
+                    {"textDocument": {"uri": uri}})["result"]
+    titles = [title(lens) for lens in lenses]
+    expect(len(titles) == 3, f"a lens per program: {titles}")
+    expect(titles[0].startswith("1 move \u00b7") and titles[0].endswith(
+        "alarm 3011 PROBE NOT TRIPPED (line 4)"), f"O3000's lens: {titles[0]}")
+    expect("alarm PS0011 FEED ZERO" in titles[1] and
+           titles[1].endswith("(library.nc:6)"), f"O3001's lens: {titles[1]}")
+    expect(titles[2].startswith("0 moves") and
+           "stopped after 5000000 blocks" in titles[2],
+           f"O3002's lens: {titles[2]}")
+    c.stop()
+
+    # The command writes the run's view and has the editor open it, or
+    # says where it is to an editor that cannot.
+    for opens in (True, False):
+        c = Client(tmp)
+        caps = {"window": {"showDocument": {"support": opens}}}
+        c.call("initialize", {"processId": None, "rootUri": tmp.as_uri(),
+                              "capabilities": caps})
+        c.notify("initialized", {})
+        uri = c.open("part.nc", PART)
+        result = c.call("workspace/executeCommand", {
+            "command": "mbc.showRun", "arguments": [uri, "O1000"]})["result"]
+        page = pathlib.Path(result["uri"].removeprefix("file://"))
+        expect("three" in page.read_text() and '"line":[7,8,11,11,11,17]' in
+               page.read_text(), f"the view holds the run: {page}")
+        if opens:
+            shown = c.wait(lambda m: m.get("method") == "window/showDocument",
+                           "window/showDocument")
+            expect(shown["params"] == {"uri": result["uri"], "external": True},
+                   f"the browser is asked for: {shown}")
+            c.send({"jsonrpc": "2.0", "id": shown["id"],
+                    "result": {"success": True}})
+        else:
+            said = c.wait(lambda m: m.get("method") == "window/showMessage",
+                          "window/showMessage")
+            expect(str(page) in said["params"]["message"],
+                   f"the view's path is said: {said}")
+        expect(c.stop() == 0, "the server ended well")
+        expect(not page.exists(), "the session's views go with it")
+
+
 def main():
     checks = [check_lifecycle, check_diagnostics_and_edits, check_code_actions,
               check_hover, check_completion_references_workspace,
               check_argument_letters, check_semantic_tokens,
               check_workspace_changes,
               check_definition_and_symbols, check_positions,
-              check_cancel_and_stale, check_bad_input]
+              check_cancel_and_stale, check_bad_input, check_code_lenses]
     failures = 0
     for check in checks:
         with tempfile.TemporaryDirectory() as tmp:
