@@ -19,6 +19,8 @@ import threading
 import time
 from pathlib import Path
 
+import lsp_latency
+
 HERE = Path(__file__).resolve().parent
 TIME_LINE = re.compile(r"mbc: time: (.*)")
 PHASE = re.compile(r"([a-zA-Z ]+?) ([0-9.]+) ms")
@@ -514,6 +516,7 @@ def main():
         embedded = embedded_calls(Path(mbc).parent, args.runs)
         python = python_batch(Path(mbc).parent, args.runs)
         operations = micro(args.micro, args.runs) if args.micro else {}
+        editor = lsp_latency.latencies(mbc, 20)
     report = "\n".join([
         "# mbc benchmarks", "",
         f"Machine: {machine_text()}.", "",
@@ -581,6 +584,14 @@ def main():
         f" rows as one DataFrame), median of {args.runs}"
         " (bench/python_batch.py).", "",
         *python_batch_table(python), "",
+        "## The language server", "",
+        f"`mbc lsp` on a {lsp_latency.LINES}-line macro and its main program"
+        " (bench/lsp_latency.py), from the request or the change to its"
+        " answer as a client of the tests sees it: the diagnostics after an"
+        f" edit (the goal: {lsp_latency.GOAL_MS} ms), a hover, the semantic"
+        " tokens of the whole document, and O1000's code lens (a run of the"
+        " whole macro by the interpreter).", "",
+        *lsp_latency.table(editor), "",
         "## Writers alone", "",
         "What writing one move costs beyond making it (bench/micro, the"
         " differences below): the run phase's share of the output modes"
