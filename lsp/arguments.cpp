@@ -13,16 +13,6 @@ namespace mbc::lsp {
 
 namespace {
 
-/// The letter of specification I that sets local #n, or 0.
-char letterOf(int n) {
-  for (char letter = 'A'; letter <= 'Z'; ++letter) {
-    if (argumentLocal(letter) == n) {
-      return letter;
-    }
-  }
-  return 0;
-}
-
 /// Every read of a variable in a program.
 template <typename Visit> void eachRead(const Program& p, Visit visit) {
   for (const Block& b : p.blocks) {
@@ -48,7 +38,7 @@ std::vector<ArgumentHint> argumentHints(const Unit& unit, std::uint32_t file,
     }
     eachRead(p, [&](const Expr& e) {
       const std::uint32_t after = endOf(e.range);
-      const char letter = e.var <= 26 ? letterOf(e.var) : 0;
+      const char letter = argumentLetter(e.var);
       if (letter != 0 && after >= begin && after <= end) {
         out.push_back({after, letter});
       }
@@ -88,7 +78,7 @@ std::optional<Signature> signatureAt(const Found& found, const Unit& unit,
   }
   std::set<char> read;
   eachRead(*callee, [&](const Expr& e) {
-    if (const char letter = e.var <= 26 ? letterOf(e.var) : 0) {
+    if (const char letter = argumentLetter(e.var)) {
       read.insert(letter);
     }
   });

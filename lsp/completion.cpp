@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "lsp/m_codes.h"
+
 namespace mbc::lsp {
 
 namespace {
@@ -18,17 +20,6 @@ constexpr int kFunctionItem = 3;
 constexpr int kVariableItem = 6;
 constexpr int kKeywordItem = 14;
 constexpr int kReferenceItem = 18;
-
-/// The M codes with a meaning of their own (hover.cpp says what they do).
-constexpr std::pair<int, const char*> kMCodes[] = {
-    {0, "program stop"},
-    {1, "optional stop"},
-    {2, "end of program"},
-    {30, "end of program"},
-    {98, "subprogram call"},
-    {99, "return"},
-    {198, "subprogram call from the external device"},
-};
 
 constexpr Builtin kBuiltins[] = {
 #define BUILTIN(Id, Name, Arity) Builtin::Id,
@@ -140,8 +131,8 @@ std::vector<Completion> completionsAt(std::string_view text,
   }
   if (!word.empty() &&
       std::toupper(static_cast<unsigned char>(word[0])) == 'M') {
-    for (const auto& [code, meaning] : kMCodes) {
-      add(fmt::format("M{:02}", code), kKeywordItem, meaning);
+    for (const MCodeText& m : kMCodes) {
+      add(fmt::format("M{:02}", m.code), kKeywordItem, m.name);
     }
   }
   // Functions, where an expression is: inside brackets.

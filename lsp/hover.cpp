@@ -17,37 +17,12 @@
 #include <cmath>
 #include <vector>
 
+#include "lsp/m_codes.h"
 #include "lsp/navigation.h"
 
 namespace mbc::lsp {
 
 namespace {
-
-/// The M codes the control (and mbc) gives a meaning of its own; the others
-/// go to the machine, or call a program where a profile says so.
-const char* mCodeMeaning(double m) {
-  if (m == 0) {
-    return "program stop: the run goes on (mbc counts the stop)";
-  }
-  if (m == 1) {
-    return "optional stop: the run goes on (mbc counts the stop)";
-  }
-  if (m == 2 || m == 30) {
-    return "end of program: the run ends here";
-  }
-  if (m == 98) {
-    return "subprogram call: P names the program, L repeats it; the "
-           "subprogram shares the caller's locals";
-  }
-  if (m == 99) {
-    return "end of a subprogram or macro: back to the caller (M99 P: to "
-           "that N of the caller); in a main program, back to its start";
-  }
-  if (m == 198) {
-    return "subprogram call from the external device's folder";
-  }
-  return nullptr;
-}
 
 /// `code`: the word as the program writes it ("G01").
 std::string gCodeHover(std::string_view code, double value, char latheSystem) {
@@ -73,8 +48,8 @@ std::string gCodeHover(std::string_view code, double value, char latheSystem) {
 }
 
 std::string mCodeHover(std::string_view code, double value) {
-  if (const char* meaning = mCodeMeaning(value)) {
-    return fmt::format("**{}**: {}", code, meaning);
+  if (const std::optional<MCodeText> m = mCodeText(value)) {
+    return fmt::format("**{}**: {}: {}", code, m->name, m->effect);
   }
   return fmt::format("**{}**: a machine function: mbc passes it on (the "
                      "toolpath does not change); a profile may make it call "
@@ -85,12 +60,10 @@ std::string mCodeHover(std::string_view code, double value) {
 /// The argument letters that set local #n: one of specification I, and
 /// the I, J, K of specification II.
 std::string argumentLetters(int n) {
-  std::string letters;
-  for (char letter = 'A'; letter <= 'Z'; ++letter) {
-    if (argumentLocal(letter) == n && (letter < 'I' || letter > 'K')) {
-      letters = fmt::format("`{}` (specification I)", letter);
-    }
-  }
+  const char one = argumentLetter(n);
+  std::string letters = one != 0 && (one < 'I' || one > 'K')
+                            ? fmt::format("`{}` (specification I)", one)
+                            : "";
   if (n >= 4 && n <= 33) {
     const int set = (n - 4) / 3 + 1;
     const char member = static_cast<char>('I' + (n - 4) % 3);

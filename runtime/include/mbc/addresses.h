@@ -64,6 +64,17 @@ constexpr int argumentLocal(char letter) {
   return letter >= 'A' && letter <= 'Z' ? kLocal[letter - 'A'] : 0;
 }
 
+/// The letter of specification I that sets local #n, or 0 for a local no
+/// letter sets.
+constexpr char argumentLetter(int n) {
+  for (char letter = 'A'; letter <= 'Z'; ++letter) {
+    if (argumentLocal(letter) == n && n != 0) {
+      return letter;
+    }
+  }
+  return 0;
+}
+
 inline constexpr int kMaxIjkSets = 10;
 
 /// Specification II (spec §5.3): the locals of the I, J, K arguments of one
