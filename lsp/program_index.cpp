@@ -58,8 +58,11 @@ bool skipped(const std::filesystem::path& dir) {
 } // namespace
 
 void ProgramIndex::scanFile(const std::string& path) {
+  // A file that says it is empty holds no program, and may be one that
+  // blocks its reader (/proc/kmsg, under a workspace at /).
   std::error_code error;
-  if (std::filesystem::file_size(path, error) > kMaxFileBytes || error) {
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size == 0 || size > kMaxFileBytes) {
     return;
   }
   std::ifstream in(path, std::ios::binary);
