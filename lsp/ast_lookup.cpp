@@ -38,6 +38,11 @@ void lookIn(const Stmt& s, std::uint32_t file, std::uint32_t offset,
   if (found.word != nullptr) {
     return;
   }
+  if ((s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) &&
+      !s.target.index && holds(s.target.range, file, offset)) {
+    found.onTarget = true;
+    return;
+  }
   for (const Expr* e : {s.target.index.get(), s.value.get(), s.cond.get(),
                         s.program.get(), s.repeat.get()}) {
     if (const Expr* inner = innermost(e, file, offset)) {
@@ -54,6 +59,17 @@ void lookIn(const Stmt& s, std::uint32_t file, std::uint32_t offset,
 }
 
 } // namespace
+
+std::optional<VariableAt> variableAt(const Found& found) {
+  if (found.onTarget) {
+    const VarTarget& t = found.block->stmt.target;
+    return VariableAt{t.number, t.range};
+  }
+  if (found.expr != nullptr && found.expr->kind == ExprKind::Var) {
+    return VariableAt{found.expr->var, found.expr->range};
+  }
+  return std::nullopt;
+}
 
 SourceRange sequenceRange(const Block& block, std::string_view text) {
   SourceRange r{block.range.begin, 0};

@@ -6,6 +6,7 @@
 #include "frontend/ast.h"
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace mbc::lsp {
@@ -16,12 +17,29 @@ struct Found {
   const Word* word = nullptr; // the address word, if the place is in one
   const Expr* expr = nullptr; // the innermost expression
   bool onSequence = false;    // on the block's own N number
+  bool onTarget = false;      // on the #n an assignment writes
 };
+
+/// The variable read or written at the place: #n, or none.
+struct VariableAt {
+  int number;
+  SourceRange range;
+};
+
+std::optional<VariableAt> variableAt(const Found& found);
 
 /// `text` is the file's text (to find a block's N, which the AST keeps as
 /// a number only).
 Found findAt(const Unit& unit, std::uint32_t file, std::string_view text,
              std::uint32_t offset);
+
+/// The value of an expression written as a number, or none.
+inline std::optional<double> constantOf(const Expr* e) {
+  if (e != nullptr && e->kind == ExprKind::Number) {
+    return e->number;
+  }
+  return std::nullopt;
+}
 
 /// The end (exclusive) of a source range.
 inline std::uint32_t endOf(const SourceRange& r) {

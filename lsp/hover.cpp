@@ -5,6 +5,7 @@
 
 #include "frontend/called_programs.h"
 #include <mbc/addresses.h>
+#include <mbc/alarm.h>
 #include <mbc/arith.h>
 #include <mbc/calling_codes.h>
 #include <mbc/g_codes.h>
@@ -170,6 +171,33 @@ int jumpsTo(const Program& program, const Block& target) {
   return count;
 }
 
+/// What `#3000 = n (MESSAGE)` raises: the alarm the control shows.
+std::string macroAlarmRaised(const Stmt& s) {
+  const std::string_view message = trimmedMessage(s.message);
+  const std::string shown(message.substr(0, kMessageShown));
+  const std::string cut =
+      message.size() > kMessageShown
+          ? fmt::format(" (the control shows the first {} characters)",
+                        kMessageShown)
+          : "";
+  const std::optional<double> value = constantOf(s.value.get());
+  if (!value) {
+    return fmt::format("\n\nHere: alarm {} + the value (0 to {}), `{}`{}; "
+                       "the run stops at this block.",
+                       kMacroAlarmVariable, kMacroAlarmLast, shown, cut);
+  }
+  const double n = roundHalfAway(*value);
+  if (n < 0 || n > kMacroAlarmLast) {
+    return fmt::format("\n\nHere: {} is not 0 to {}, so the block raises "
+                       "{} instead.",
+                       *value, kMacroAlarmLast,
+                       alarmCode(AlarmId::ArgumentOutOfRange, 0));
+  }
+  return fmt::format("\n\nHere: alarm **{}** `{}`{}; the run stops at this "
+                     "block.",
+                     kMacroAlarmVariable + static_cast<int>(n), shown, cut);
+}
+
 } // namespace
 
 std::optional<Hover> hoverAt(const Found& found, const Unit& unit,
@@ -184,14 +212,17 @@ std::optional<Hover> hoverAt(const Found& found, const Unit& unit,
                                                jumps == 1 ? "" : "s")),
                  sequenceRange(*found.block, text)};
   }
-  const Expr* e = found.expr;
-  if (e != nullptr && e->kind == ExprKind::Var) {
-    std::string markdown = variableHover(e->var);
-    if (isLocal(e->var) && found.program != nullptr) {
-      markdown += passedBy(unit, *found.program, e->var);
+  if (const std::optional<VariableAt> v = variableAt(found)) {
+    std::string markdown = variableHover(v->number);
+    if (isLocal(v->number) && found.program != nullptr) {
+      markdown += passedBy(unit, *found.program, v->number);
     }
-    return Hover{markdown, e->range};
+    if (found.onTarget && v->number == kMacroAlarmVariable) {
+      markdown += macroAlarmRaised(found.block->stmt);
+    }
+    return Hover{markdown, v->range};
   }
+  const Expr* e = found.expr;
   if (e != nullptr && e->kind == ExprKind::Call) {
     return Hover{fmt::format("**{}**: a function of Custom Macro B",
                              builtinName(e->builtin)),

@@ -20,13 +20,6 @@ constexpr int kFunctionSymbol = 12;
 constexpr int kKeySymbol = 20;
 constexpr int kNamespaceSymbol = 3;
 
-std::optional<double> constantOf(const Expr* e) {
-  if (e != nullptr && e->kind == ExprKind::Number) {
-    return e->number;
-  }
-  return std::nullopt;
-}
-
 const Word* wordOf(const Stmt& s, char letter) {
   for (const Word& w : s.words) {
     if (w.letter == letter) {
@@ -86,8 +79,7 @@ std::optional<int> calledNumber(const Stmt& s) {
 std::vector<Place> definitionOf(const Found& found,
                                 const toolchain::CompiledUnit& cu) {
   std::vector<Place> out;
-  if (found.block == nullptr ||
-      (found.expr != nullptr && found.expr->kind == ExprKind::Var)) {
+  if (found.block == nullptr || variableAt(found)) {
     return out;
   }
   const Stmt& s = found.block->stmt;
@@ -164,9 +156,9 @@ void variablePlaces(const Program& p, int n, std::vector<Place>& out) {
 } // namespace
 
 SharedName sharedNameOf(const Found& found) {
-  if (found.expr != nullptr && found.expr->kind == ExprKind::Var &&
-      !isLocal(found.expr->var)) {
-    return {found.expr->var, -1};
+  if (const std::optional<VariableAt> v = variableAt(found);
+      v && !isLocal(v->number)) {
+    return {v->number, -1};
   }
   if (found.block != nullptr) {
     if (const std::optional<int> n = calledNumber(found.block->stmt)) {
@@ -207,9 +199,9 @@ std::vector<Place> placesOf(const SharedName& name, const Unit& unit,
 std::vector<Place> referencesOf(const Found& found, const Unit& unit,
                                 bool declaration) {
   std::vector<Place> out;
-  if (found.expr != nullptr && found.expr->kind == ExprKind::Var &&
-      isLocal(found.expr->var)) {
-    variablePlaces(*found.program, found.expr->var, out);
+  if (const std::optional<VariableAt> v = variableAt(found);
+      v && isLocal(v->number)) {
+    variablePlaces(*found.program, v->number, out);
     return out;
   }
   if (found.onSequence) {

@@ -190,6 +190,24 @@ def check_hover(tmp):
     expect("not a G code" in hover(3, 1), "G04.7 is none")
     expect(c.call("textDocument/hover", at(uri, 0, 0))["result"] is None,
            "nothing to say on %")
+    # The #n an assignment writes: a macro alarm's number and the text the
+    # control shows (26 characters), a common variable's references.
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 3},
+        "contentChanges": [{"text": "%\nO1(X)\n#100=#5021\n"
+                            "IF[#100LT0]THEN#3000=20(Z BELOW TABLE)\n"
+                            "#3000=1(TOOL LENGTH OFFSET NOT MEASURED)\n"
+                            "#3000=1200(BAD)\nM30\n%\n"}]})
+    c.diagnostics(uri, 3)
+    expect("alarm **3020** `Z BELOW TABLE`" in hover(3, 16),
+           f"#3000=20: {hover(3, 16)}")
+    expect("`TOOL LENGTH OFFSET NOT MEA` (the control shows the first 26"
+           in hover(4, 1), f"a long message: {hover(4, 1)}")
+    expect("raises PS0119" in hover(5, 1), f"#3000=1200: {hover(5, 1)}")
+    refs = c.call("textDocument/references", dict(
+        at(uri, 2, 2), context={"includeDeclaration": True}))["result"]
+    expect(sorted(r["range"]["start"]["line"] for r in refs) == [2, 3],
+           f"#100 written on line 2, read on 3: {refs}")
     expect(c.stop() == 0, "clean exit")
 
 

@@ -30,6 +30,8 @@ inline constexpr int kFirstCommon98000 = 98000;
 inline constexpr int kLastCommon98000 = 98499;
 /// #3000 = n: the macro alarm, which ends the run at its block.
 inline constexpr int kMacroAlarmVariable = 3000;
+/// The largest n of #3000 = n: the alarm shown is 3000 + n.
+inline constexpr int kMacroAlarmLast = 999;
 /// A #[n] with |n| at least this is no variable at all (PS0115).
 inline constexpr double kBeyondAnyVariable = 1e9;
 

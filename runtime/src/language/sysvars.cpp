@@ -253,12 +253,13 @@ std::string messageText(const char* comment) {
 mbrt_status writeMacroAlarm(mbrt_ctx& ctx, int, Num value,
                             const char* comment) {
   const double n = roundHalfAway(numeric(value));
-  if (n < 0.0 || n > 999.0) {
+  if (n < 0.0 || n > kMacroAlarmLast) {
     return raise(ctx, AlarmId::ArgumentOutOfRange,
-                 fmt::format("#3000 = {} (0 to 999)", n));
+                 fmt::format("#{} = {} (0 to {})", kMacroAlarmVariable, n,
+                             kMacroAlarmLast));
   }
   return raise(ctx, AlarmId::MacroAlarm, messageText(comment),
-               3000 + static_cast<int>(n));
+               kMacroAlarmVariable + static_cast<int>(n));
 }
 
 mbrt_status writeMessage(mbrt_ctx& ctx, int, Num, const char* comment) {
