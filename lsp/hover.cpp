@@ -99,7 +99,7 @@ std::string variableHover(int n) {
   }
   if (n >= kFirstNonvolatile && n <= kLastNonvolatile) {
     return fmt::format("**#{}**: common variable, kept when the power is off "
-                       "(mbc run --vars keeps it in a state file).",
+                       "(mbc run --state keeps it in a state file).",
                        n);
   }
   if (const std::optional<SystemVariableFacts> facts = systemVariableFacts(n)) {

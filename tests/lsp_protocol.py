@@ -208,6 +208,12 @@ def check_hover(tmp):
         at(uri, 2, 2), context={"includeDeclaration": True}))["result"]
     expect(sorted(r["range"]["start"]["line"] for r in refs) == [2, 3],
            f"#100 written on line 2, read on 3: {refs}")
+    c.notify("textDocument/didChange", {
+        "textDocument": {"uri": uri, "version": 4},
+        "contentChanges": [{"text": "%\nO1(X)\n#500=1\nM30\n%\n"}]})
+    c.diagnostics(uri, 4)
+    expect("mbc run --state keeps it" in hover(2, 1),
+           f"#500 and the option that keeps it: {hover(2, 1)}")
     expect(c.stop() == 0, "clean exit")
 
 
