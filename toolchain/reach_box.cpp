@@ -892,6 +892,7 @@ Reach checkReach(const CompiledUnit& cu, const UnitRanges& unit,
   }
   for (const auto& [where, move] : analysis.moves()) {
     bool found = false;
+    const auto block = blockAt(cu.unit, where.first, where.second);
     for (std::size_t i = 0; i < move.reach.size(); ++i) {
       const std::optional<Stroke>& stroke = machine.strokes[i];
       if (!stroke || (move.moved >> i & 1) == 0) {
@@ -899,8 +900,7 @@ Reach checkReach(const CompiledUnit& cu, const UnitRanges& unit,
       }
       const bool rotary = (machine.rotaryMask >> i & 1) != 0;
       const auto say = [&](double reach, char side, double end, int parameter) {
-        diags.report(DiagKind::StrokeLimit,
-                     blockAt(cu.unit, where.first, where.second),
+        diags.report(DiagKind::StrokeLimit, block,
                      reachText(machine.axes[i], reach, rotary), side,
                      fmt::format("{:.3f}", end), parameter);
         found = true;
