@@ -56,8 +56,11 @@ RunSummary runProgram(const RunInput& input, const std::string& htmlPath) {
   }
   runner::RunOptions options;
   options.machinePath = input.settings.machinePath;
-  options.maxBlocks = kRunBlockBudget;
+  options.maxBlocks = input.blockBudget;
   options.htmlPath = htmlPath;
+  // No toolpath is kept, and DPRNT goes nowhere: a lens's run of a
+  // million moves costs no memory.
+  options.dprntPath = "/dev/null";
   char error[512] = "";
   runner::CtxPtr ctx(options.machinePath.empty()
                          ? mbrt_create(nullptr, error, sizeof error)
@@ -70,7 +73,6 @@ RunSummary runProgram(const RunInput& input, const std::string& htmlPath) {
   }
   runner::SessionLog session;
   session.text = log.file;
-  session.capture = true; // DPRNT and the variables stay in memory
   const int status = runner::runSession(
       options, ctx.get(), prepared.mainName(),
       [&prepared](mbrt_ctx* c) { return prepared.run(c); }, session);
@@ -81,6 +83,7 @@ RunSummary runProgram(const RunInput& input, const std::string& htmlPath) {
   out.blocks = session.stats.blocks;
   out.moves = session.stats.moves;
   out.cycleTime = session.stats.cycle_time;
+  out.budget = input.blockBudget;
   out.budgetSpent = mbrt_alarm(ctx.get()) == MBRT_ALARM_ExecutionLimit;
   if (mbrt_alarm(ctx.get()) != 0 && !out.budgetSpent) {
     out.alarmCode = text(mbrt_alarm_code, ctx.get());
@@ -102,7 +105,7 @@ std::string lensTitle(const RunSummary& run, const std::string& path) {
   if (run.budgetSpent) {
     return title + fmt::format(" \u00b7 stopped after {} blocks (a loop that "
                                "does not end?)",
-                               kRunBlockBudget);
+                               run.budget);
   }
   if (run.alarmCode.empty()) {
     return title + " \u00b7 ends";

@@ -27,6 +27,7 @@ struct RunInput {
   std::vector<std::string> files; // the workspace's, as the analysis read
   AnalysisSettings settings;
   std::string program; // the main program, by name
+  std::uint64_t blockBudget = kRunBlockBudget;
 };
 
 struct RunSummary {
@@ -34,7 +35,8 @@ struct RunSummary {
   std::uint64_t blocks = 0;
   std::uint64_t moves = 0;
   double cycleTime = 0;     // seconds
-  bool budgetSpent = false; // stopped after kRunBlockBudget blocks
+  std::uint64_t budget = 0; // the blocks it might run
+  bool budgetSpent = false; // it stopped after them
   std::string alarmCode;    // "" when the run ended without one
   std::string alarmMessage;
   std::string alarmFile; // as the run names it: the document is `path`

@@ -28,7 +28,9 @@ class Server {
 public:
   using Send = std::function<void(const std::string&)>;
 
-  explicit Server(Send send) : send_(std::move(send)) {}
+  /// `runBlocks`: the budget of a lens's run (a fuzzer's is smaller).
+  explicit Server(Send send, std::uint64_t runBlocks = kRunBlockBudget)
+      : send_(std::move(send)), runBlocks_(runBlocks) {}
 
   ~Server();
   Server(const Server&) = delete;
@@ -131,6 +133,7 @@ private:
   void log(int type, const std::string& message);
 
   Send send_;
+  std::uint64_t runBlocks_;
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;

@@ -94,6 +94,7 @@ RunSummary Server::run(Document& doc, const std::string& program,
   input.files = doc.analysis->files;
   input.settings = settingsFor(*doc.text);
   input.program = program;
+  input.blockBudget = runBlocks_;
   return runProgram(input, html);
 }
 

@@ -143,16 +143,16 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       std::fprintf(stderr, "mbc: error: cannot write '%s'\n", failed->c_str());
       return false;
     }
-  }
-  if (!o.svgPath.empty()) {
-    motions.svg.emplace(o.svgView);
-  }
-  if (!o.htmlPath.empty()) {
-    if (toolpathPage().empty()) {
-      std::fprintf(stderr, "mbc: error: %s\n", kNoPageReason);
-      return false;
+    if (!o.svgPath.empty()) {
+      motions.svg.emplace(o.svgView);
     }
-    motions.html.emplace();
+    if (!o.htmlPath.empty()) {
+      if (toolpathPage().empty()) {
+        std::fprintf(stderr, "mbc: error: %s\n", kNoPageReason);
+        return false;
+      }
+      motions.html.emplace();
+    }
   }
   if (motions.toolpath.get() != nullptr || motions.svg || motions.html) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);

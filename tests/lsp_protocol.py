@@ -537,6 +537,22 @@ def check_code_lenses(tmp):
     expect(titles[2].startswith("0 moves") and
            "stopped after 5000000 blocks" in titles[2],
            f"O3002's lens: {titles[2]}")
+    # 2 500 000 moves to the budget: a lens keeps none of them (their JSONL
+    # took the server's peak 450 MB higher). The peak's growth is measured:
+    # a sanitized server starts higher.
+    def peak():
+        return next(int(line.split()[1]) for line in
+                    open(f"/proc/{c.proc.pid}/status")
+                    if line.startswith("VmHWM:"))
+    uri = c.open("passes.nc", "%\nO3003(ENDLESS PASSES)\nWHILE[1EQ1]DO1\n"
+                 "G01X1.F100.\nG01X0\nEND1\nM99\n%\n")
+    lenses = c.call("textDocument/codeLens",
+                    {"textDocument": {"uri": uri}})["result"]
+    before = peak()
+    got = title(lenses[0])
+    expect(got.startswith("2500000 moves"), f"O3003's lens: {got}")
+    expect(peak() - before < 200 * 1024,
+           f"the server's peak memory grew {peak() - before} kB in the run")
     c.stop()
 
     # The command writes the run's view and has the editor open it, or
