@@ -135,7 +135,23 @@ bool inside(const Program& p, int block, int whileBlock) {
   return end >= 0 && block > whileBlock && block <= end;
 }
 
-void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
+/// What a program's GOTOs are resolved with: its labels, and its WHILE
+/// blocks (a jump into a loop is an error).
+struct JumpFacts {
+  SequenceIndex sequences;
+  std::vector<int> whiles;
+
+  explicit JumpFacts(const Program& p) : sequences(p) {
+    for (int w = 0; w < static_cast<int>(p.blocks.size()); ++w) {
+      if (p.blocks[static_cast<std::size_t>(w)].stmt.kind == StmtKind::While) {
+        whiles.push_back(w);
+      }
+    }
+  }
+};
+
+void resolveGoto(Program& p, int i, const JumpFacts& jumps,
+                 DiagnosticEngine& diags) {
   Stmt& s = p.blocks[i].stmt;
   const Expr* v = s.value.get();
   bool negative = v && v->kind == ExprKind::Neg;
@@ -152,15 +168,14 @@ void resolveGoto(Program& p, int i, DiagnosticEngine& diags) {
                  fmt::format("{}", written), kMaxSequenceNumber);
     return;
   }
-  int target = findSequence(p, static_cast<int>(n), i);
+  int target = jumps.sequences.find(static_cast<int>(n), i);
   if (target < 0) {
     diags.report(DiagKind::GotoUndefined, s.value->range, n, p.name);
     return;
   }
   s.gotoBlock = target;
-  for (int w = 0; w < static_cast<int>(p.blocks.size()); ++w) {
-    if (p.blocks[w].stmt.kind == StmtKind::While && inside(p, target, w) &&
-        !inside(p, i, w)) {
+  for (const int w : jumps.whiles) {
+    if (inside(p, target, w) && !inside(p, i, w)) {
       diags.report(DiagKind::GotoIntoLoop, s.value->range, n);
       return;
     }
@@ -341,14 +356,26 @@ void checkCallArguments(const Stmt& s, DiagnosticEngine& diags) {
 } // namespace
 
 int findSequence(const Program& program, int seq, int from) {
-  int n = static_cast<int>(program.blocks.size());
-  for (int k = 1; k <= n; ++k) {
-    int i = (from + k) % n;
-    if (program.blocks[i].seq == seq) {
-      return i;
+  return SequenceIndex(program).find(seq, from);
+}
+
+SequenceIndex::SequenceIndex(const Program& program) {
+  for (int i = 0; i < static_cast<int>(program.blocks.size()); ++i) {
+    if (program.blocks[static_cast<std::size_t>(i)].seq >= 0) {
+      blocks_[program.blocks[static_cast<std::size_t>(i)].seq].push_back(i);
     }
   }
-  return -1;
+}
+
+int SequenceIndex::find(int seq, int from) const {
+  const auto it = blocks_.find(seq);
+  if (it == blocks_.end()) {
+    return -1;
+  }
+  // After `from` to the end, else from the top (`from` itself last).
+  const auto after =
+      std::upper_bound(it->second.begin(), it->second.end(), from);
+  return after != it->second.end() ? *after : it->second.front();
 }
 
 std::optional<int> literalWord(const std::vector<Word>& words, char letter) {
@@ -415,12 +442,13 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
     matchLoops(p, diags);
     checkSequences(p, diags);
     Reported reported{options.defaultMachine, {}};
+    const JumpFacts jumps(p);
     for (int i = 0; i < static_cast<int>(p.blocks.size()); ++i) {
       Stmt& s = p.blocks[i].stmt;
       checkStatementVariables(s, reported, diags);
       checkCallArguments(s, diags);
       if (s.kind == StmtKind::Goto || s.kind == StmtKind::IfGoto) {
-        resolveGoto(p, i, diags);
+        resolveGoto(p, i, jumps, diags);
       } else if (s.kind == StmtKind::Assign || s.kind == StmtKind::IfThen) {
         checkWrite(s, diags);
       } else if (s.kind == StmtKind::Nc && options.reviewNotes &&

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 namespace mbc {
@@ -34,6 +35,19 @@ void checkUnit(Unit& unit, DiagnosticEngine& diags,
 /// the first block with that N after `from`, searching to the end and then
 /// from the top (spec Part A, "GOTO search"); -1 when there is none.
 int findSequence(const Program& program, int seq, int from);
+
+/// The blocks of each N of a program, so that the searches of a program
+/// with many jumps take a binary search each rather than a scan.
+class SequenceIndex {
+public:
+  explicit SequenceIndex(const Program& program);
+
+  /// findSequence(program, seq, from).
+  int find(int seq, int from) const;
+
+private:
+  std::unordered_map<int, std::vector<int>> blocks_; // in block order
+};
 
 /// The whole-number literal of `letter` in NC words, if any.
 std::optional<int> literalWord(const std::vector<Word>& words, char letter);

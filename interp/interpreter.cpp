@@ -2,7 +2,6 @@
 // returns (G65/M98/M99), and the end of the run.
 #include "interp/interpreter.h"
 
-#include "frontend/sema.h"
 #include <mbc/addresses.h>
 
 #include <cmath>
@@ -137,10 +136,22 @@ mbrt_status Interpreter::step(const Block& b) {
   return 0;
 }
 
+int Interpreter::findSequence(int program, int seq, int from) {
+  if (sequences_.empty()) {
+    sequences_.resize(unit_.programs.size());
+  }
+  std::optional<SequenceIndex>& index =
+      sequences_[static_cast<std::size_t>(program)];
+  if (!index) {
+    index.emplace(unit_.programs[static_cast<std::size_t>(program)]);
+  }
+  return index->find(seq, from);
+}
+
 // Computed targets are searched like constant ones: forward from the jump,
 // then from the top of the program (spec Part A); none is PS0128.
 mbrt_status Interpreter::jumpTo(int seq, int from) {
-  int target = findSequence(unit_.programs[prog_], seq, from);
+  int target = findSequence(prog_, seq, from);
   if (target < 0) {
     return mbrt_raise_sequence(ctx_, "", seq,
                                unit_.programs[prog_].name.c_str());
@@ -171,7 +182,7 @@ mbrt_status Interpreter::start() {
     return 0;
   }
   const Program& program = unit_.programs[prog_];
-  const int target = findSequence(program, static_cast<int>(seq), 0);
+  const int target = findSequence(prog_, static_cast<int>(seq), 0);
   if (target < 0) {
     return mbrt_raise_start_sequence(ctx_, seq, program.name.c_str());
   }

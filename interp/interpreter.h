@@ -5,6 +5,7 @@
 #pragma once
 
 #include "frontend/ast.h"
+#include "frontend/sema.h"
 #include "frontend/source.h"
 #include <mbc/arith.h>
 #include <mbc/compiled.h>
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,8 @@ private:
   mbrt_status start();
   mbrt_status leave(bool hasSeq, double seq, bool& finished);
   int findProgram(double number) const;
+  /// findSequence in a program, its labels indexed at its first search.
+  int findSequence(int program, int seq, int from);
 
   // Statements (statements.cpp).
   mbrt_status execAssign(const Stmt& s);
@@ -73,6 +77,7 @@ private:
   const SourceManager& sources_;
   mbrt_ctx* ctx_;
   std::map<int, int> byNumber_; // O number -> program index
+  std::vector<std::optional<SequenceIndex>> sequences_; // by program index
   int prog_ = 0;
   int pc_ = 0;
   std::vector<Frame> stack_;

@@ -179,6 +179,40 @@ TEST(Sema, GotoSearchesForwardThenFromTheTop) {
   EXPECT_EQ(p->diags.warningCount(), 1);
 }
 
+// The index of labels against the search written out: the first block
+// with the N after `from` to the end, else from the top, `from` itself
+// last; every N and every `from` of programs with repeated labels.
+TEST(Sema, SequenceIndexSearchesAsTheControlDoes) {
+  std::uint32_t state = 7;
+  const auto next = [&state](std::uint32_t below) {
+    state = state * 1103515245u + 12345u;
+    return (state >> 16) % below;
+  };
+  for (int round = 0; round < 50; ++round) {
+    Program program;
+    const auto size = static_cast<int>(1 + next(40));
+    for (int i = 0; i < size; ++i) {
+      program.blocks.emplace_back().seq =
+          next(3) == 0 ? -1 : static_cast<int>(next(6));
+    }
+    const SequenceIndex index(program);
+    for (int seq = -1; seq <= 7; ++seq) {
+      for (int from = -1; from < size; ++from) {
+        int expected = -1;
+        for (int k = 1; k <= size && expected < 0; ++k) {
+          const int i = (from + k) % size;
+          expected =
+              program.blocks[static_cast<std::size_t>(i)].seq == seq && seq >= 0
+                  ? i
+                  : -1;
+        }
+        EXPECT_EQ(index.find(seq, from), expected)
+            << "N" << seq << " from " << from << " of " << size;
+      }
+    }
+  }
+}
+
 TEST(Sema, GotoIntoLoopIsAnError) {
   auto p = parse("GOTO 7\nWHILE [#1 LT 2] DO1\nN7 #1=#1+1\nEND1\n");
   EXPECT_NE(p->text.find("jumps into a WHILE loop"), std::string::npos);
