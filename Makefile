@@ -102,7 +102,8 @@ fuzz: deps
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(FUZZ_PACKAGES)"
 	CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_BUILD_DIR) \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMBC_FUZZ=ON
-	cmake --build $(FUZZ_BUILD_DIR) -j$(JOBS) --target fuzz_frontend fuzz_pipeline fuzz_profile fuzz_lsp
+	cmake --build $(FUZZ_BUILD_DIR) -j$(JOBS) --target fuzz_frontend fuzz_pipeline fuzz_profile fuzz_lsp \
+	  fuzz_lsp_server
 	tools/fuzz.sh $(FUZZ_BUILD_DIR) $(SECONDS)
 
 # Random programs under every engine against the interpreter

@@ -3,10 +3,11 @@
 #   tools/fuzz.sh BUILD_DIR SECONDS
 # Each target's corpus grows in BUILD_DIR/fuzz-corpus/TARGET, seeded from
 # the golden programs and diagnostics cases (Macro B), the machine profiles
-# beside them (JSON) or the editor sessions of tests/fuzz/lsp. A crash, a
-# leak, a sanitizer report or an input slower than 10 s stops the run with
-# status 1 and leaves the input in BUILD_DIR/fuzz-crashes: turn it into a
-# regression test (tests/diag or tests/programs) before fixing it.
+# beside them (JSON) or the editor sessions of tests/fuzz/lsp and
+# tests/fuzz/lsp_server. A crash, a leak, a sanitizer report or an input
+# slower than 10 s stops the run with status 1 and leaves the input in
+# BUILD_DIR/fuzz-crashes: turn it into a regression test (tests/diag or
+# tests/programs) before fixing it.
 set -u
 build=$1
 seconds=$2
@@ -14,7 +15,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 crashes=$build/fuzz-crashes
 mkdir -p "$crashes"
 status=0
-for target in frontend pipeline profile lsp; do
+for target in frontend pipeline profile lsp lsp_server; do
   corpus=$build/fuzz-corpus/$target
   mkdir -p "$corpus"
   # The seeds are copied: libFuzzer writes into the corpus folders it is
@@ -26,6 +27,9 @@ for target in frontend pipeline profile lsp; do
   elif [ "$target" = lsp ]; then
     cp -n "$root"/tests/fuzz/lsp/* "$corpus"/ 2>/dev/null
     dict=()
+  elif [ "$target" = lsp_server ]; then
+    cp -n "$root"/tests/fuzz/lsp_server/* "$corpus"/ 2>/dev/null
+    dict=(-dict="$root/tests/fuzz/lsp_server.dict")
   else
     cp -n "$root"/tests/programs/*.nc "$root"/tests/diag/*.nc \
       "$root"/tests/seeds/*.nc "$corpus"/ 2>/dev/null
