@@ -119,6 +119,9 @@ std::string variableHover(int n) {
     if (facts->note != nullptr) {
       text += fmt::format(" {}", facts->note);
     }
+    if (facts->unit != nullptr) {
+      text += fmt::format(" Values in {}.", facts->unit);
+    }
     return text;
   }
   return fmt::format("**#{}**: no variable of the control: a block that "

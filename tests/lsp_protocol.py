@@ -165,6 +165,8 @@ def check_hover(tmp):
            and "modal group 01" in g01, f"G01: {g01}")
     expect("machine coordinates" in hover(13, 5), "#5021")
     expect("Read only" in hover(13, 5), "#5021 is read only")
+    expect("the program's unit (G21 mm, G20 inch)" in hover(13, 5),
+           f"#5021's unit: {hover(13, 5)}")
     m98 = hover(14, 1)
     expect("subprogram call" in m98, f"M98: {m98}")
     label = hover(16, 1)

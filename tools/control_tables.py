@@ -83,9 +83,9 @@ def variable_status(row):
 
 
 def system_variables(tables):
-    return table(["Variables", "Meaning", "mbc"],
+    return table(["Variables", "Meaning", "mbc", "Unit"],
                  [[numbers(row["first"], row["last"]), row["meaning"],
-                   variable_status(row)]
+                   variable_status(row), row["unit"]]
                   for row in tables["system_variables"]])
 
 

@@ -82,7 +82,8 @@ int main() {
                       {"modelled", row.readable},
                       {"writable", row.writable},
                       {"by_profile", row.byProfile},
-                      {"note", row.note != nullptr ? row.note : ""}};
+                      {"note", row.note != nullptr ? row.note : ""},
+                      {"unit", row.unit != nullptr ? row.unit : ""}};
             })},
       {"lathe_offsets", each(latheOffsetVariables(),
                              [](const LatheOffsetVariables& row) -> json {

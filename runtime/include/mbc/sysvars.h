@@ -32,8 +32,9 @@ bool unmodelledVariable(int n, UnmodelledVariable* out);
 /// A row of the control's map of system variables (docs/control-tables.md
 /// shows them): the numbers it covers, what they hold, whether mbc models
 /// them (if not, PS0115 and `note` says why) and a program may write them,
-/// whether they exist only on machines whose profile has them, and why
-/// they read what they do (or nullptr).
+/// whether they exist only on machines whose profile has them, why
+/// they read what they do (or nullptr), and the unit of lengths (or
+/// nullptr).
 struct SystemVariableFacts {
   long first;
   long last;
@@ -42,6 +43,7 @@ struct SystemVariableFacts {
   bool writable;
   bool byProfile;
   const char* note;
+  const char* unit;
 };
 
 /// The row of #n, if the map has one.

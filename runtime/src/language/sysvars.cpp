@@ -45,7 +45,16 @@ struct SysVarRange {
   Writer write;           // nullptr: read-only (PS0116)
   bool byProfile = false; // missing on the default machine (#2401-#2800)
   const char* note = nullptr; // why a reader gives what it gives, or why not
+  const char* unit = nullptr; // what the numbers are in, for lengths
 };
+
+/// Positions and work offsets read in the unit the program is in.
+constexpr const char* kAxisUnit =
+    "the program's unit (G21 mm, G20 inch), degrees on a rotary axis";
+/// Tool offsets hold the numbers they were set to: G20/G21 does not
+/// convert them.
+constexpr const char* kOffsetUnit =
+    "the unit they were set in: G20/G21 does not convert them";
 
 /// Offsets are 20 numbers apart per coordinate system, one per axis.
 constexpr int kOffsetStride = 20;
@@ -459,15 +468,17 @@ constexpr std::array kSystemVariables = {
     SysVarRange{1132, 1135, "output signals as 32-bit words", readOutputWord,
                 writeOutputWord},
     SysVarRange{2001, 2200, "tool offsets 1-200, 1st set (#10001+)",
-                readToolOffset<0, true>, writeToolOffset<0, true>},
+                readToolOffset<0, true>, writeToolOffset<0, true>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{2201, 2400, "tool offsets 1-200, 2nd set (#11001+)",
-                readToolOffset<1, true>, writeToolOffset<1, true>},
+                readToolOffset<1, true>, writeToolOffset<1, true>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{2401, 2600, "tool offsets 1-200, 3rd set (#12001+)",
                 readToolOffset<2, true>, writeToolOffset<2, true>, true,
-                "with 6000#3 V15"},
+                "with 6000#3 V15", kOffsetUnit},
     SysVarRange{2601, 2800, "tool offsets 1-200, 4th set (#13001+)",
                 readToolOffset<3, true>, writeToolOffset<3, true>, true,
-                "with 6000#3 V15"},
+                "with 6000#3 V15", kOffsetUnit},
     SysVarRange{2801, 2999, "tool offsets of a lathe (T series)", readLatheOnly,
                 writeLatheOnly, true, "on a lathe"},
     SysVarRange{3000, 3000, "macro alarm #3000=n (MESSAGE)", readZero,
@@ -519,37 +530,47 @@ constexpr std::array kSystemVariables = {
     SysVarRange{4501, 4530, "last words of the block an interrupt stopped",
                 nullptr, nullptr, false, kNoInterrupts},
     SysVarRange{5001, 5020, "block end position, workpiece coordinates",
-                readPosition<blockEndPosition>, nullptr},
+                readPosition<blockEndPosition>, nullptr, false, nullptr,
+                kAxisUnit},
     SysVarRange{5021, 5040, "current position, machine coordinates",
-                readToolPosition<machinePosition>, nullptr},
+                readToolPosition<machinePosition>, nullptr, false, nullptr,
+                kAxisUnit},
     SysVarRange{5041, 5060, "current position, workpiece coordinates",
-                readToolPosition<currentPosition>, nullptr},
+                readToolPosition<currentPosition>, nullptr, false, nullptr,
+                kAxisUnit},
     SysVarRange{5061, 5080, "skip signal position (G31)",
-                readPosition<skipPosition>, nullptr},
+                readPosition<skipPosition>, nullptr, false, nullptr, kAxisUnit},
     SysVarRange{5081, 5100, "tool length offset in force",
-                readPosition<toolLengthOffset>, nullptr},
+                readPosition<toolLengthOffset>, nullptr, false, nullptr,
+                kAxisUnit},
     SysVarRange{5101, 5120, "servo position deviation", readZero, nullptr,
                 false, "0: the modelled axes follow exactly"},
     SysVarRange{5121, 5140, "manual handle interruption amount", readZero,
                 nullptr, false, "0: no handle turns in a run"},
     SysVarRange{5201, 5340, "external and G54-G59 work offsets", readG54Offset,
-                writeG54Offset},
+                writeG54Offset, false, nullptr, kAxisUnit},
     SysVarRange{7001, 7960, "G54.1 P1-P48 work offsets",
-                readG541Offset<kOffsetStride>, writeG541Offset<kOffsetStride>},
+                readG541Offset<kOffsetStride>, writeG541Offset<kOffsetStride>,
+                false, nullptr, kAxisUnit},
     SysVarRange{8400, 8499, "tool life management data", nullptr, nullptr,
                 false, "mbc keeps no tool life data"},
     SysVarRange{8550, 8579, "tool management data", nullptr, nullptr, false,
                 "mbc keeps no tool management data"},
     SysVarRange{10001, 10999, "tool offsets 1-999, 1st set",
-                readToolOffset<0, false>, writeToolOffset<0, false>},
+                readToolOffset<0, false>, writeToolOffset<0, false>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{11001, 11999, "tool offsets 1-999, 2nd set",
-                readToolOffset<1, false>, writeToolOffset<1, false>},
+                readToolOffset<1, false>, writeToolOffset<1, false>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{12001, 12999, "tool offsets 1-999, 3rd set",
-                readToolOffset<2, false>, writeToolOffset<2, false>},
+                readToolOffset<2, false>, writeToolOffset<2, false>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{13001, 13999, "tool offsets 1-999, 4th set",
-                readToolOffset<3, false>, writeToolOffset<3, false>},
+                readToolOffset<3, false>, writeToolOffset<3, false>, false,
+                nullptr, kOffsetUnit},
     SysVarRange{14001, 19988, "G54.1 P1-P300 work offsets",
-                readG541Offset<MBRT_MAX_AXES>, writeG541Offset<MBRT_MAX_AXES>},
+                readG541Offset<MBRT_MAX_AXES>, writeG541Offset<MBRT_MAX_AXES>,
+                false, nullptr, kAxisUnit},
     SysVarRange{kFirstCommon98000, kLastCommon98000,
                 "additional common variables (option)", readCommon98000,
                 writeCommon98000, true, "\"common_98000\" in the profile"},
@@ -641,7 +662,8 @@ SystemVariableFacts factsOf(const rt::SysVarRange& range) {
           range.read != nullptr,
           range.write != nullptr,
           range.byProfile,
-          range.note};
+          range.note,
+          range.unit};
 }
 
 } // namespace
