@@ -24,7 +24,7 @@ public:
                    bool returnsToSequence)
       : program_(program), module_(module), fn_(fn), options_(options),
         startsAtSequence_(startsAtSequence),
-        returnsToSequence_(returnsToSequence) {}
+        returnsToSequence_(returnsToSequence), sequenceIndex_(program) {}
 
   void run();
 
@@ -61,9 +61,9 @@ private:
   std::vector<BlockId> heads_; // head block of each source block, + exit
   BlockId cur_ = 0;
   std::uint32_t line_ = 0;
-  std::set<int> sequences_;          // every N of the program
-  std::map<int, int> sequenceBlock_; // N -> its (first) block
-  bool repeatedSequence_ = false;    // some N numbers two blocks
+  std::set<int> sequences_;       // every N of the program
+  SequenceIndex sequenceIndex_;   // where a jump to each N lands
+  bool repeatedSequence_ = false; // some N numbers two blocks
   // The M99 P landings: one per distinct table (one unless N numbers repeat).
   std::map<std::vector<BlockId>, BlockId> landings_;
 };
@@ -105,9 +105,6 @@ void FunctionLowering::run() {
     int seq = program_.blocks[i].seq;
     if (seq >= 0 && !sequences_.insert(seq).second) {
       repeatedSequence_ = true;
-    }
-    if (seq >= 0) {
-      sequenceBlock_.emplace(seq, i);
     }
   }
   // The entry block has no predecessor, so that a GOTO to the first block
@@ -278,10 +275,8 @@ void FunctionLowering::addSequenceTable(SequenceCases& cases,
                                         std::vector<BlockId>& targets,
                                         int from) {
   for (int seq : sequences_) {
-    int block = repeatedSequence_ ? findSequence(program_, seq, from)
-                                  : sequenceBlock_.at(seq);
     cases.numbers.push_back(seq);
-    targets.push_back(head(block));
+    targets.push_back(head(sequenceIndex_.find(seq, from)));
   }
 }
 
