@@ -14,13 +14,6 @@ namespace mbc::lsp {
 
 namespace {
 
-std::string text(std::size_t (*get)(const mbrt_ctx*, char*, std::size_t),
-                 const mbrt_ctx* ctx) {
-  std::string out(get(ctx, nullptr, 0), '\0');
-  get(ctx, out.data(), out.size() + 1);
-  return out;
-}
-
 /// The run's report and summary lines: the editor shows the lens instead.
 struct NullLog {
   std::FILE* file = std::fopen("/dev/null", "w");
@@ -86,8 +79,8 @@ RunSummary runProgram(const RunInput& input, const std::string& htmlPath) {
   out.budget = input.blockBudget;
   out.budgetSpent = mbrt_alarm(ctx.get()) == MBRT_ALARM_ExecutionLimit;
   if (mbrt_alarm(ctx.get()) != 0 && !out.budgetSpent) {
-    out.alarmCode = text(mbrt_alarm_code, ctx.get());
-    out.alarmMessage = text(mbrt_alarm_message, ctx.get());
+    out.alarmCode = runner::contextText(mbrt_alarm_code, ctx.get());
+    out.alarmMessage = runner::contextText(mbrt_alarm_message, ctx.get());
     const char* file = mbrt_alarm_file(ctx.get());
     out.alarmFile = file != nullptr ? file : "";
     out.alarmLine = mbrt_alarm_line(ctx.get());

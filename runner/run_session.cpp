@@ -163,6 +163,13 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
 
 } // namespace
 
+std::string contextText(std::size_t (*get)(const mbrt_ctx*, char*, std::size_t),
+                        const mbrt_ctx* ctx) {
+  std::string out(get(ctx, nullptr, 0), '\0');
+  get(ctx, out.data(), out.size() + 1);
+  return out;
+}
+
 std::string clockText(double seconds) {
   const auto tenths = static_cast<long long>(std::llround(seconds * 10.0));
   const long long hours = tenths / 36000;

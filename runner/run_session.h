@@ -64,6 +64,11 @@ mbrt_status presetAndPass(const RunOptions& o, mbrt_ctx* ctx);
 int runOnce(const RunOptions& o, const std::string& mainName,
             const MainRun& engine, const PhaseTimes& phases = {});
 
+/// A text the C API writes snprintf-style, whole (mbrt_alarm_code,
+/// mbrt_alarm_message, mbrt_alarm_report).
+std::string contextText(std::size_t (*get)(const mbrt_ctx*, char*, std::size_t),
+                        const mbrt_ctx* ctx);
+
 /// A cycle time as the summary prints it: "1:02:03.4" or "2:03.4".
 std::string clockText(double seconds);
 

@@ -13,19 +13,12 @@ void appendText(void* user, const char* data, std::size_t size) {
   static_cast<std::string*>(user)->append(data, size);
 }
 
-std::string text(std::size_t (*get)(const mbrt_ctx*, char*, std::size_t),
-                 const mbrt_ctx* ctx) {
-  std::string out(get(ctx, nullptr, 0), '\0');
-  get(ctx, out.data(), out.size() + 1);
-  return out;
-}
-
 AlarmParts alarmParts(const mbrt_ctx* ctx) {
   AlarmParts a;
   a.number = mbrt_alarm_number(ctx);
-  a.code = text(mbrt_alarm_code, ctx);
-  a.message = text(mbrt_alarm_message, ctx);
-  a.report = text(mbrt_alarm_report, ctx);
+  a.code = runner::contextText(mbrt_alarm_code, ctx);
+  a.message = runner::contextText(mbrt_alarm_message, ctx);
+  a.report = runner::contextText(mbrt_alarm_report, ctx);
   a.file = mbrt_alarm_file(ctx);
   a.line = mbrt_alarm_line(ctx);
   const char* program = nullptr;
