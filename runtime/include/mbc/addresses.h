@@ -67,8 +67,8 @@ constexpr int argumentLocal(char letter) {
 /// The letter of specification I that sets local #n, or 0 for a local no
 /// letter sets.
 constexpr char argumentLetter(int n) {
-  for (char letter = 'A'; letter <= 'Z'; ++letter) {
-    if (argumentLocal(letter) == n && n != 0) {
+  for (char letter = 'A'; letter <= 'Z' && n != 0; ++letter) {
+    if (argumentLocal(letter) == n) {
       return letter;
     }
   }
