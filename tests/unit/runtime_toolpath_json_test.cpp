@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <clocale>
+#include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace mbc {
@@ -110,6 +112,48 @@ TEST(ToolpathJson, FeedsAreTheShortestText) {
     const std::string line = toolpathJsonLine(m);
     EXPECT_NE(line.find(fmt::format(",\"f\":{},", feed)), std::string::npos)
         << line;
+  }
+}
+
+// The writer thread counts toolpathJsonBound against the output limit in
+// place of the record's bytes: it must never be less, whatever the numbers
+// (increments, values past any count, NaN), the axes, the arc, the cycle
+// and the program's name (escapes make a character six).
+TEST(ToolpathJson, TheBoundIsNeverBelowTheRecord) {
+  std::uint32_t state = 11;
+  const auto next = [&state](std::uint32_t below) {
+    state = state * 1103515245u + 12345u;
+    return (state >> 16) % below;
+  };
+  const double extremes[] = {0.0,    -0.0,    1e15,     -1e15, 1.0e300,
+                             -1e308, 1.0 / 3, 123.4565, 5e-324};
+  for (int round = 0; round < 2000; ++round) {
+    mbrt_motion m = linearMotion();
+    m.kind = static_cast<int>(next(4));
+    m.axis_count = static_cast<int>(1 + next(MBRT_MAX_AXES));
+    m.axis_names = "XYZABCUVW";
+    m.decimals = static_cast<int>(next(10));
+    const auto number = [&] {
+      return next(4) == 0 ? extremes[next(std::size(extremes))]
+                          : (static_cast<double>(next(2000000)) - 1e6) /
+                                std::pow(10.0, next(6));
+    };
+    for (int axis = 0; axis < m.axis_count; ++axis) {
+      m.end[axis] = number();
+      m.machine[axis] = number();
+    }
+    m.center[0] = number();
+    m.center[1] = number();
+    m.feed = number();
+    m.cycle = next(2) == 0 ? 0 : static_cast<int>(next(100000));
+    m.line = static_cast<int>(next(2000000000));
+    std::string name(next(40), 'A');
+    for (char& c : name) {
+      c = static_cast<char>(1 + next(126));
+    }
+    m.program = name.c_str();
+    EXPECT_GE(toolpathJsonBound(m), toolpathJsonLine(m).size())
+        << toolpathJsonLine(m);
   }
 }
 

@@ -13,6 +13,10 @@ std::string trimmedFixed(double value, int decimals);
 /// trimmedFixed appended to `out`.
 void appendTrimmedFixed(std::string& out, double value, int decimals);
 
+/// trimmedFixed written at `out`, which has room for it (18 + decimals
+/// characters up to 1e15, 320 + decimals beyond); the end of what it wrote.
+char* writeTrimmedFixed(char* out, double value, int decimals);
+
 /// The decimal digits of `value`, with '-' when negative.
 void appendInteger(std::string& out, long long value);
 

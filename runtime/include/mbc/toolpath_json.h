@@ -4,6 +4,7 @@
 
 #include <mbc/runtime.h>
 
+#include <cstddef>
 #include <string>
 
 namespace mbc {
@@ -18,5 +19,9 @@ std::string toolpathJsonLine(const mbrt_motion& m);
 
 /// toolpathJsonLine appended to `out`.
 void appendToolpathJson(std::string& out, const mbrt_motion& m);
+
+/// At least the bytes of toolpathJsonLine(m), found without formatting it:
+/// what a writer on another thread counts against the output limit.
+std::size_t toolpathJsonBound(const mbrt_motion& m);
 
 } // namespace mbc

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iterator>
@@ -14,33 +15,32 @@ namespace mbc {
 namespace {
 
 /// Whole multiples of 10^-decimals, as every coordinate of a motion is:
-/// integer digits, exact, with no formatting of a double.
-bool appendIncrements(std::string& out, double value, int decimals) {
+/// integer digits, exact, with no formatting of a double; nullptr for
+/// any other number.
+char* writeIncrements(char* out, double value, int decimals) {
   constexpr int kMaxDecimals = 9;
   static constexpr unsigned long long kPowers[kMaxDecimals + 1] = {
       1,      10,      100,      1000,      10000,
       100000, 1000000, 10000000, 100000000, 1000000000};
   if (decimals < 0 || decimals > kMaxDecimals) {
-    return false;
+    return nullptr;
   }
   const double scaled = value * static_cast<double>(kPowers[decimals]);
   const double whole = std::nearbyint(scaled);
   // Near a whole number the correctly rounded decimal is that number; far
   // from one (or too large to count) fmt decides.
   if (!(std::fabs(scaled - whole) < 1e-6) || std::fabs(whole) > 1e15) {
-    return false;
+    return nullptr;
   }
   auto units = static_cast<long long>(whole);
-  // Sign, 16 digits and the point at most: built here, appended once.
-  char text[24];
-  char* end = text;
+  char* end = out;
   if (units < 0) {
     *end++ = '-';
     units = -units;
   }
   const auto magnitude = static_cast<unsigned long long>(units);
-  end =
-      std::to_chars(end, text + sizeof text, magnitude / kPowers[decimals]).ptr;
+  // 16 digits at most: the whole is at most 1e15.
+  end = std::to_chars(end, end + 17, magnitude / kPowers[decimals]).ptr;
   unsigned long long fraction = magnitude % kPowers[decimals];
   if (fraction != 0) {
     int digits = decimals;
@@ -55,8 +55,7 @@ bool appendIncrements(std::string& out, double value, int decimals) {
     }
     end += digits;
   }
-  out.append(text, end);
-  return true;
+  return end;
 }
 
 } // namespace
@@ -67,21 +66,39 @@ void appendInteger(std::string& out, long long value) {
   out.append(digits, end);
 }
 
+char* writeTrimmedFixed(char* out, double value, int decimals) {
+  if (char* end = writeIncrements(out, value, decimals)) {
+    return end;
+  }
+  char* end = fmt::format_to(out, "{:.{}f}", value, decimals);
+  if (std::find(out, end, '.') != end) {
+    while (end[-1] == '0') {
+      --end;
+    }
+    if (end[-1] == '.') {
+      --end;
+    }
+  }
+  if (end - out == 2 && out[0] == '-' && out[1] == '0') {
+    out[0] = '0';
+    --end;
+  }
+  return end;
+}
+
 void appendTrimmedFixed(std::string& out, double value, int decimals) {
-  if (appendIncrements(out, value, decimals)) {
+  // The most any number takes: DBL_MAX's digits, a sign, the point and
+  // the decimals.
+  constexpr int kLongest = 330;
+  if (decimals <= 16) {
+    char text[kLongest + 16];
+    out.append(text, writeTrimmedFixed(text, value, decimals));
     return;
   }
   const std::size_t start = out.size();
-  fmt::format_to(std::back_inserter(out), "{:.{}f}", value, decimals);
-  if (out.find('.', start) != std::string::npos) {
-    out.erase(out.find_last_not_of('0') + 1);
-    if (out.back() == '.') {
-      out.pop_back();
-    }
-  }
-  if (out.compare(start, std::string::npos, "-0") == 0) {
-    out.replace(start, std::string::npos, "0");
-  }
+  out.resize(start + kLongest + static_cast<std::size_t>(decimals));
+  const char* end = writeTrimmedFixed(out.data() + start, value, decimals);
+  out.resize(static_cast<std::size_t>(end - out.data()));
 }
 
 std::string trimmedFixed(double value, int decimals) {

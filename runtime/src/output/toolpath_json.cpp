@@ -5,8 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
-#include <iterator>
+#include <cstring>
 
 namespace mbc {
 
@@ -25,76 +26,146 @@ const char* motionName(int kind) {
   }
 }
 
-void appendString(std::string& out, const char* text) {
-  out += '"';
+char* writeText(char* out, const char* text) {
+  while (*text != '\0') {
+    *out++ = *text++;
+  }
+  return out;
+}
+
+char* writeString(char* out, const char* text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  *out++ = '"';
   for (const char* c = text != nullptr ? text : ""; *c != '\0'; ++c) {
     const auto byte = static_cast<unsigned char>(*c);
     if (*c == '"' || *c == '\\') {
-      out += '\\';
-      out += *c;
+      *out++ = '\\';
+      *out++ = *c;
     } else if (byte < 0x20) {
-      fmt::format_to(std::back_inserter(out), "\\u{:04x}", byte);
+      out = writeText(out, "\\u00");
+      *out++ = kHex[byte >> 4];
+      *out++ = kHex[byte & 15];
     } else {
-      out += *c;
+      *out++ = *c;
     }
   }
-  out += '"';
+  *out++ = '"';
+  return out;
 }
 
-void appendKey(std::string& out, char prefix, char axis) {
+char* writeKey(char* out, char prefix, char axis) {
   // Not std::tolower: the output must not depend on the C locale.
   const char lower =
       axis >= 'A' && axis <= 'Z' ? static_cast<char>(axis - 'A' + 'a') : axis;
-  const char key[] = {',', '"', prefix, lower, '"', ':'};
+  *out++ = ',';
+  *out++ = '"';
   if (prefix != '\0') {
-    out.append(key, sizeof key);
-  } else {
-    out.append(key, 2);
-    out.append(key + 3, 3);
+    *out++ = prefix;
   }
+  *out++ = lower;
+  *out++ = '"';
+  *out++ = ':';
+  return out;
+}
+
+char* writeInteger(char* out, long long value) {
+  return std::to_chars(out, out + 20, value).ptr;
+}
+
+/// The record at `out`, which has toolpathJsonBound(m) characters.
+char* writeToolpathJson(char* out, const mbrt_motion& m) {
+  out = writeText(out, "{\"motion\":\"");
+  out = writeText(out, motionName(m.kind));
+  *out++ = '"';
+  for (int axis = 0; axis < m.axis_count; ++axis) {
+    out = writeKey(out, '\0', m.axis_names[axis]);
+    out = writeTrimmedFixed(out, m.end[axis], m.decimals);
+  }
+  for (int axis = 0; axis < m.axis_count; ++axis) {
+    out = writeKey(out, 'm', m.axis_names[axis]);
+    out = writeTrimmedFixed(out, m.machine[axis], m.decimals);
+  }
+  if (m.kind != MBRT_MOTION_RAPID) {
+    out = writeText(out, ",\"f\":");
+    // A whole feed prints as its digits, as fmt's shortest form has it.
+    if (!std::signbit(m.feed) && m.feed < 1e15 &&
+        m.feed == std::floor(m.feed)) {
+      out = writeInteger(out, static_cast<long long>(m.feed));
+    } else {
+      out = fmt::format_to_n(out, 40, "{}", m.feed).out;
+    }
+  }
+  if (m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW) {
+    for (int i = 0; i < 2; ++i) {
+      out = writeKey(out, 'c', m.center_axes[i]);
+      out = writeTrimmedFixed(out, m.center[i], m.decimals);
+    }
+  }
+  if (m.cycle != 0) {
+    out = writeText(out, ",\"cycle\":\"G");
+    out = writeInteger(out, m.cycle);
+    *out++ = '"';
+  }
+  out = writeText(out, ",\"line\":");
+  out = writeInteger(out, m.line);
+  out = writeText(out, ",\"prog\":");
+  out = writeString(out, m.program);
+  *out++ = '}';
+  *out++ = '\n';
+  return out;
 }
 
 } // namespace
 
 void appendToolpathJson(std::string& out, const mbrt_motion& m) {
-  out += "{\"motion\":\"";
-  out += motionName(m.kind);
-  out += '"';
+  // Built in place and appended once; a record of numbers past any count
+  // (kilobytes) is built in the string itself.
+  const std::size_t bound = toolpathJsonBound(m);
+  char line[2048];
+  if (bound <= sizeof line) {
+    out.append(line, writeToolpathJson(line, m));
+    return;
+  }
+  const std::size_t start = out.size();
+  out.resize(start + bound);
+  const char* end = writeToolpathJson(out.data() + start, m);
+  out.resize(static_cast<std::size_t>(end - out.data()));
+}
+
+namespace {
+
+/// The most characters appendTrimmedFixed writes for a number: the sign,
+/// 16 digits, the point and the decimals when it counts increments, the
+/// digits of any double otherwise.
+std::size_t numberBound(double value, int decimals) {
+  constexpr std::size_t kLargestDouble = 309; // digits of DBL_MAX
+  // Up to 1e15 a number has at most 16 digits before the point, as
+  // increments or through fmt; beyond, fmt writes all of them.
+  const std::size_t places =
+      decimals > 0 ? static_cast<std::size_t>(decimals) : 0;
+  const bool counted = std::fabs(value) <= 1e15;
+  return (counted ? 17 : kLargestDouble + 1) + 1 + places;
+}
+
+} // namespace
+
+std::size_t toolpathJsonBound(const mbrt_motion& m) {
+  constexpr std::size_t kInteger = 20; // a long long's digits and sign
+  std::size_t bytes = sizeof "{\"motion\":\"rapid\"" - 1;
   for (int axis = 0; axis < m.axis_count; ++axis) {
-    appendKey(out, '\0', m.axis_names[axis]);
-    appendTrimmedFixed(out, m.end[axis], m.decimals);
+    bytes += sizeof ",\"mx\":" - 1 + numberBound(m.end[axis], m.decimals);
+    bytes += sizeof ",\"mx\":" - 1 + numberBound(m.machine[axis], m.decimals);
   }
-  for (int axis = 0; axis < m.axis_count; ++axis) {
-    appendKey(out, 'm', m.axis_names[axis]);
-    appendTrimmedFixed(out, m.machine[axis], m.decimals);
+  bytes += sizeof ",\"f\":" - 1 + 40; // fmt's shortest form: 25
+  for (int i = 0; i < 2; ++i) {
+    bytes += sizeof ",\"cx\":" - 1 + numberBound(m.center[i], m.decimals);
   }
-  if (m.kind != MBRT_MOTION_RAPID) {
-    out += ",\"f\":";
-    // A whole feed prints as its digits, as fmt's shortest form has it.
-    if (!std::signbit(m.feed) && m.feed < 1e15 &&
-        m.feed == std::floor(m.feed)) {
-      appendInteger(out, static_cast<long long>(m.feed));
-    } else {
-      char feed[40]; // the shortest text that reads back: 25 characters
-      out.append(feed, fmt::format_to_n(feed, sizeof feed, "{}", m.feed).out);
-    }
-  }
-  if (m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW) {
-    for (int i = 0; i < 2; ++i) {
-      appendKey(out, 'c', m.center_axes[i]);
-      appendTrimmedFixed(out, m.center[i], m.decimals);
-    }
-  }
-  if (m.cycle != 0) {
-    out += ",\"cycle\":\"G";
-    appendInteger(out, m.cycle);
-    out += '"';
-  }
-  out += ",\"line\":";
-  appendInteger(out, m.line);
-  out += ",\"prog\":";
-  appendString(out, m.program);
-  out += "}\n";
+  bytes += sizeof ",\"cycle\":\"G\"" - 1 + kInteger;
+  bytes += sizeof ",\"line\":" - 1 + kInteger;
+  // "\u00xx" is the longest a character of the name becomes.
+  const std::size_t name = m.program != nullptr ? std::strlen(m.program) : 0;
+  bytes += sizeof ",\"prog\":\"\"}\n" - 1 + 6 * name;
+  return bytes;
 }
 
 std::string toolpathJsonLine(const mbrt_motion& m) {
