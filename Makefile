@@ -13,7 +13,8 @@ DEB_PACKAGES := cmake g++ python3 llvm-dev llvm-14-tools libfmt-dev \
                 chromium $(NPM_PACKAGES)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps install-missing build install demo test test-asan fuzz bench difftest check-format \
+.PHONY: all deps install-missing build install demo test test-asan test-tsan fuzz bench difftest \
+        check-format \
         format clean
 
 all: build
@@ -85,6 +86,14 @@ bench: build
 # any report fails its test. A Debug build: assertions on, and the IR
 # verified after every pass of every compile (toolchain/ir_pipeline.cpp).
 ASAN_BUILD_DIR ?= build-asan
+# The threads under ThreadSanitizer: the toolpath's writer thread and
+# mbc batch's workers, in a build of their own (mbc only).
+TSAN_BUILD_DIR ?= build-tsan
+test-tsan: deps
+	cmake -S . -B $(TSAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=Debug -DMBC_SANITIZE=thread
+	cmake --build $(TSAN_BUILD_DIR) -j$(JOBS) --target mbc
+	cd $(TSAN_BUILD_DIR) && ctest --output-on-failure -j$(JOBS) -R '^(writer|batch)/'
+
 test-asan: deps
 	@$(MAKE) --no-print-directory install-missing PACKAGES="$(TEST_PACKAGES)"
 	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=Debug \

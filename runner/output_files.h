@@ -37,6 +37,9 @@ public:
 
   const std::string& path() const { return path_; }
 
+  /// Whether every record goes out at once (standard output, a terminal).
+  bool direct() const { return direct_; }
+
   /// The stream, for a writer of its own: flush() before handing it on
   /// when write() or writeText() wrote to it.
   std::FILE* get() const { return file_; }

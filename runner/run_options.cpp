@@ -71,6 +71,14 @@ std::string runOptionsProblem(const RunOptions& o) {
   if (o.svgViewGiven && o.svgPath.empty()) {
     return "--view chooses the view of --svg, which is not given";
   }
+  if (o.writerThreadGiven && o.toolpathPath.empty()) {
+    return "--writer-thread chooses how --toolpath is written, which is not "
+           "given";
+  }
+  if (o.writerThread == WriterThread::On && o.toolpathPath == "-") {
+    return "--writer-thread on needs --toolpath FILE: the toolpath on "
+           "standard output is written in order with DPRNT";
+  }
   return "";
 }
 
@@ -128,6 +136,26 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
                                 : fmt::format("unknown view '{}' (xy, xz, yz, "
                                               "zx or iso)",
                                               v);
+                   })
+        ->group("Outputs");
+    addValueOption(app, "--writer-thread", "auto|on|off",
+                   "write the --toolpath file on a thread of its own while "
+                   "the run goes on (default: auto, when a second core is "
+                   "free)",
+                   error,
+                   [&o](const std::string& v) -> std::string {
+                     o.writerThreadGiven = true;
+                     if (v == "auto") {
+                       o.writerThread = WriterThread::Auto;
+                     } else if (v == "on") {
+                       o.writerThread = WriterThread::On;
+                     } else if (v == "off") {
+                       o.writerThread = WriterThread::Off;
+                     } else {
+                       return fmt::format(
+                           "unknown --writer-thread '{}' (auto, on or off)", v);
+                     }
+                     return std::string();
                    })
         ->group("Outputs");
     path("--state", o.statePath,

@@ -19,6 +19,13 @@ class Option;
 
 namespace mbc::runner {
 
+/// Whether `--toolpath FILE` is written on a thread of its own.
+enum class WriterThread {
+  Auto, // where a second core is free
+  On,
+  Off
+};
+
 struct RunOptions {
   std::string mainProgram; // --main O1234 / <NAME>
   std::string toolpathPath;
@@ -29,6 +36,8 @@ struct RunOptions {
   std::string htmlPath;      // the toolpath as an interactive 3D page
   std::string statePath;     // nonvolatile variables and offsets, kept
   bool time = false;         // --time: the phases' wall-clock times
+  WriterThread writerThread = WriterThread::Auto;
+  bool writerThreadGiven = false; // an error without --toolpath FILE
   std::string dprntPath;
   std::string varsOutPath;
   std::string machinePath;

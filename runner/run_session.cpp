@@ -21,6 +21,7 @@
 #include "runner/output_files.h"
 #include "runner/state_file.h"
 #include "runner/svg_writer.h"
+#include "runner/toolpath_thread.h"
 
 namespace mbc::runner {
 
@@ -101,13 +102,16 @@ bool openGcode(const RunOptions& o, mbrt_ctx* ctx, OutputFile& gcode) {
 struct MotionOutputs {
   mbrt_ctx* ctx = nullptr;
   OutputFile toolpath;
+  std::optional<ToolpathThread> writer; // the toolpath's, when worthwhile
   std::optional<SvgWriter> svg;
   std::optional<HtmlWriter> html;
 
   static void write(void* self, const mbrt_motion* motion) {
     auto* outputs = static_cast<MotionOutputs*>(self);
     std::size_t bytes = 0;
-    if (outputs->toolpath.get() != nullptr) {
+    if (outputs->writer) {
+      bytes += outputs->writer->push(*motion);
+    } else if (outputs->toolpath.get() != nullptr) {
       bytes += outputs->toolpath.write(*motion);
     }
     if (outputs->svg) {
@@ -117,6 +121,11 @@ struct MotionOutputs {
       bytes += outputs->html->add(*motion);
     }
     mbrt_count_output(outputs->ctx, bytes);
+  }
+
+  static std::uint64_t settle(void* self) {
+    auto* outputs = static_cast<MotionOutputs*>(self);
+    return outputs->writer ? outputs->writer->settle() : 0;
   }
 };
 
@@ -153,6 +162,10 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       }
       motions.html.emplace();
     }
+  }
+  if (!capture && ToolpathThread::wanted(o.writerThread, motions.toolpath)) {
+    motions.writer.emplace(motions.toolpath);
+    mbrt_set_output_settle(ctx, &MotionOutputs::settle, &motions);
   }
   if (motions.toolpath.get() != nullptr || motions.svg || motions.html) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
@@ -230,6 +243,7 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
       mbrt_set_message_sink(ctx, nullptr, nullptr);
       mbrt_set_trace_sink(ctx, nullptr, nullptr);
       mbrt_set_gcode_sink(ctx, nullptr, nullptr);
+      mbrt_set_output_settle(ctx, nullptr, nullptr);
     }
   } sinksOff{ctx};
 
@@ -259,6 +273,10 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
     if (!st) {
       st = engine(ctx);
     }
+  }
+  // Every record of the run is written before anything is said of it.
+  if (motions.writer) {
+    motions.writer->finish();
   }
   const double runMs = millisecondsSince(runStart);
   if (st) {

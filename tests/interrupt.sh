@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SIGINT or SIGTERM stops a run before its next block with alarm MBC0004:
 # the exit status is the shell's 128+signal, every toolpath record and DPRNT
-# line written is whole and on disk, and the state file is saved. Under each
+# line written is whole and on disk (the toolpath's on the writer thread
+# too), and the state file is saved. Under each
 # engine and in an executable of `mbc build`; the loop that calls nothing
 # must stop too (compiled code cannot keep the block limit in a register).
 #   interrupt.sh MBC
@@ -68,21 +69,29 @@ whole() { # name: the outputs end with whole records, the state is saved
   [ -s "$name.dprnt" ] || fail "$name: no DPRNT output"
   [ "$(tail -c1 "$name.dprnt" | od -An -c | tr -d ' ')" = '\n' ] ||
     fail "$name: the DPRNT output ends in a partial line"
+  # Each pass moves, then prints: every move before the stop is written.
   python3 -c '
 import json, sys
 lines = open(sys.argv[1]).read().split("\n")
 assert lines[-1] == "", "partial last record"
 for line in lines[:-1]:
     json.loads(line)
-' "$name.jsonl" || fail "$name: the toolpath has a partial record"
+last = int(open(sys.argv[2]).read().split()[-1])
+assert len(lines) - 1 in (last, last + 1), (len(lines) - 1, last)
+' "$name.jsonl" "$name.dprnt" ||
+    fail "$name: the toolpath has a partial record or lacks some"
   grep -q '"500": [1-9]' "$name.state" || fail "$name: state $(cat "$name.state")"
 }
 
+# SIGINT with the toolpath written on a thread of its own, SIGTERM without.
 for engine in interp ir jit; do
   for sig in INT TERM; do
     name=$engine-$sig
+    writer=on
+    [ "$sig" = TERM ] && writer=off
     interrupt "$name" "$sig" "$mbc" run --engine "$engine" writes.nc \
-      --toolpath "$name.jsonl" --dprnt "$name.dprnt" --state "$name.state"
+      --toolpath "$name.jsonl" --writer-thread $writer --dprnt "$name.dprnt" \
+      --state "$name.state"
     whole "$name"
   done
   interrupt "$engine-spin" INT "$mbc" run --engine "$engine" -O2 spins.nc

@@ -154,6 +154,14 @@ void mbrt_set_max_blocks(mbrt_ctx* ctx, uint64_t max_blocks);
  * the run stops before the next one, with the alarm at that block. */
 void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes);
 void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes);
+/* A motion sink that hands its motions to a thread of its own may count
+ * an upper bound of each one's bytes. When the count passes the limit the
+ * runtime calls `settle`, which waits until the thread has written what
+ * it holds and returns how many of the bytes counted were over the exact
+ * ones; the limit is then checked on the exact count. Called on the run's
+ * thread, from inside mbrt_count_output. */
+typedef uint64_t (*mbrt_settle_fn)(void* user);
+void mbrt_set_output_settle(mbrt_ctx* ctx, mbrt_settle_fn fn, void* user);
 /* Stops the run before its next block with alarm MBC0004 (INTERRUPTED).
  * The one call that may come from a signal handler or from another thread
  * while the run goes on; the next run (mbrt_start) is not interrupted. */

@@ -431,6 +431,9 @@ struct HostOutputs {
   Sink<mbrt_text_fn> messageSink;
   Sink<mbrt_text_fn> traceSink;
   Sink<mbrt_text_fn> gcodeSink; // the flattened program
+  // What a sink that writes on a thread of its own counted beyond the
+  // exact bytes, asked for when the count passes the output limit.
+  Sink<mbrt_settle_fn> outputSettle;
   /// "<DRILL>" for the number a call by name carries (mbrt_name_programs).
   std::map<int, std::string> programNames;
 

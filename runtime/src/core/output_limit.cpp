@@ -3,6 +3,8 @@
 // the disk long before the block limit would stop it.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "context.h"
 
 using namespace mbc::rt;
@@ -13,6 +15,12 @@ void countOutput(mbrt_ctx& ctx, std::uint64_t bytes) {
   OutputBudget& output = ctx.run.output;
   const bool within = !output.passed();
   output.written += bytes;
+  // A host that counted upper bounds says what they over-counted, and the
+  // limit is checked on the exact bytes.
+  const Sink<mbrt_settle_fn>& settle = ctx.host.outputSettle;
+  if (within && output.passed() && settle.fn != nullptr) {
+    output.written -= std::min(output.written, settle.fn(settle.user));
+  }
   if (!within || !output.passed()) {
     return;
   }
@@ -41,6 +49,10 @@ mbrt_status raiseOutputLimit(mbrt_ctx& ctx) {
 
 void mbrt_set_max_output(mbrt_ctx* ctx, uint64_t max_bytes) {
   ctx->run.output.limit = max_bytes != 0 ? max_bytes : kDefaultMaxOutput;
+}
+
+void mbrt_set_output_settle(mbrt_ctx* ctx, mbrt_settle_fn fn, void* user) {
+  ctx->host.outputSettle = {fn, user};
 }
 
 void mbrt_count_output(mbrt_ctx* ctx, uint64_t bytes) {
