@@ -137,10 +137,13 @@ void moveTo(mbrt_ctx& ctx, int kind, const AxisCounts& work,
     motion.machine[axis] =
         countsToUnits(ctx.shown(axis, machine[axis]), axisScale);
     motion.start[axis] = countsToUnits(ctx.shown(axis, start[axis]), axisScale);
-    const Counts programmed =
-        origin.programmed != nullptr ? (*origin.programmed)[axis] : work[axis];
+    // Without compensation the programmed point is the end: a division
+    // less per axis on every move.
     motion.programmed[axis] =
-        countsToUnits(ctx.shown(axis, programmed), axisScale);
+        origin.programmed != nullptr
+            ? countsToUnits(ctx.shown(axis, (*origin.programmed)[axis]),
+                            axisScale)
+            : motion.end[axis];
   }
   motion.feed = kind == MBRT_MOTION_RAPID ? 0.0 : origin.feed;
   motion.plane = ctx.machine.modal.plane;
