@@ -241,6 +241,103 @@ def end_to_end_table(rows):
     return lines
 
 
+RASTER_ROWS = (200, 1000)  # of 1000 points: 200 000 and 1 000 000 moves
+RASTER_LINE = "#21 = 1000"
+WRITER_RUNS = 11
+
+
+def raster_of(rows, work):
+    """bench's raster and its .ngc twin with `rows` rows of 1000 points."""
+    pair = []
+    for source in (HERE / "workloads" / "raster.nc",
+                   HERE / "ngc" / "raster.ngc"):
+        text = source.read_text()
+        if RASTER_LINE not in text:
+            sys.exit(f"bench: {source} does not set {RASTER_LINE}")
+        made = Path(work) / f"raster_{rows}{source.suffix}"
+        made.write_text(text.replace(RASTER_LINE, f"#21 = {rows}"))
+        pair.append(made)
+    return pair
+
+
+def writer_thread(mbc, runs, rs274_runs, work):
+    """Per raster size: whole-process s and run-phase ms of `mbc run` (code
+    in the cache) with no toolpath, the JSONL toolpath written by the run
+    and on the writer thread, and rs274's whole process."""
+    rows = {}
+    sink = str(Path(work) / "raster.jsonl")
+    # Runs of tens of ms, and a ratio of two of them: more runs than the
+    # others, or one noisy run of the null sink decides the ratio.
+    runs = max(runs, WRITER_RUNS)
+    for raster_rows in RASTER_ROWS:
+        workload, ngc = raster_of(raster_rows, work)
+        print(f"bench: writer thread, {workload.name}", file=sys.stderr)
+        base = [mbc, "run", str(workload), "--time", "--dprnt", "/dev/null"]
+        run_once(base)
+        modes = {mode: measure(base + extra, runs) for mode, extra in (
+            ("null", []),
+            ("inline", ["--toolpath", sink, "--writer-thread", "off"]),
+            ("thread", ["--toolpath", sink, "--writer-thread", "on"]))}
+        modes["rs274"] = statistics.median(
+            run_once(["rs274", "-g", str(ngc), "/dev/null"])[0]
+            for _ in range(rs274_runs)) if shutil.which("rs274") else None
+        rows[modes["null"]["moves"]] = modes
+    return rows
+
+
+def writer_thread_table(rows):
+    lines = ["| moves | rs274 ms | null sink ms (run) | JSONL on the run's"
+             " thread ms (run) | JSONL on the writer thread ms (run) |"
+             " run phase, thread / null | rs274 / JSONL on the thread |",
+             "|---|---|---|---|---|---|---|"]
+    for moves, r in rows.items():
+        def cell(mode):
+            return (f"{r[mode]['wall'] * 1000:.1f}"
+                    f" ({r[mode]['phases']['run']:.1f})")
+        lines.append(
+            f"| {moves} | {r['rs274'] * 1000 if r['rs274'] else 0:.0f} |"
+            f" {cell('null')} | {cell('inline')} | {cell('thread')} |"
+            f" {ratio(r['thread']['phases']['run'], r['null']['phases']['run'])}"
+            f" | {ratio(r['rs274'], r['thread']['wall'])} |")
+    return lines
+
+
+def writer_thread_bound(rows, operations):
+    """What keeps the run phase on the writer thread above the null sink's,
+    per move: the motion built for any sink (bench/micro), and the rest."""
+    if "LinearMoveToSink" not in operations or not rows:
+        return []
+    moves = max(rows)
+    r = rows[moves]
+    over = (r["thread"]["phases"]["run"] - r["null"]["phases"]["run"]) \
+        * 1e6 / moves
+    sink = operations["LinearMoveToSink"] - operations["LinearMove"]
+    return [f"At {moves} moves the run phase on the writer thread is"
+            f" {over:.0f} ns a move over the null sink's. {sink:.0f} ns of"
+            " it is the motion the C API gives any sink, which the null"
+            " sink never builds (its workpiece, machine, start and"
+            " programmed points in units; bench/micro's LinearMoveToSink"
+            f" less LinearMove); the other {over - sink:.0f} ns are handing"
+            " it over (copying what a record prints, counting its bound,"
+            " keeping its program's name) and the writer's traffic in the"
+            " caches and memory it shares with the run. Formatting and"
+            " writing are off the run's thread.", ""]
+
+
+def writer_thread_text(runs, rs274_runs):
+    return (f"bench's raster at 200 and 1000 rows of 1000 points, whole"
+            f" processes, median of {max(runs, WRITER_RUNS)} (rs274: of"
+            f" {rs274_runs}): `mbc"
+            " run` with its code in the cache, writing no toolpath (null"
+            " sink) or the JSONL toolpath to a file, formatted on the run's"
+            " thread (`--writer-thread off`) or on a thread of its own (`on`;"
+            " `auto`, the default, where a second core is free), and"
+            " LinuxCNC's rs274 on the .ngc twin, its start-up included. In"
+            " brackets the run phase (`--time`). The goal: the run phase"
+            " with the toolpath within 1.3x the null sink's, the whole"
+            " process at least 25x rs274.")
+
+
 BATCH_ROWS = 10000
 BATCH_SUMMARY = re.compile(r"mbc: batch: \d+ rows in ([0-9.]+) s")
 
@@ -477,8 +574,17 @@ def main():
     parser.add_argument("--compile-timeout", type=float, default=60.0)
     parser.add_argument("--micro", help="bench/micro's mbc_micro, when built")
     parser.add_argument("--out", help="also write the report here")
+    parser.add_argument("--writer-thread-only", action="store_true",
+                        help="print only the section of the writer thread")
     args = parser.parse_args()
     mbc = str(Path(args.mbc).resolve())
+    if args.writer_thread_only:
+        with tempfile.TemporaryDirectory() as work:
+            os.environ["MBC_CACHE_DIR"] = str(Path(work) / "cache")
+            rows = writer_thread(mbc, args.runs, args.rs274_runs, work)
+        print("\n".join([writer_thread_text(args.runs, args.rs274_runs), "",
+                         *writer_thread_table(rows)]))
+        return
     has_rs274 = shutil.which("rs274") is not None
     has_valgrind = shutil.which("valgrind") is not None
     results, rs274, counts, modes = {}, {}, {}, {}
@@ -512,6 +618,7 @@ def main():
         whole = end_to_end(mbc, [HERE / "workloads" / f"{name}.nc"
                                  for name in modes], args.runs,
                            work) if has_rs274 else {}
+        threaded = writer_thread(mbc, args.runs, args.rs274_runs, work)
         batch = batch_throughput(mbc, args.runs, work)
         embedded = embedded_calls(Path(mbc).parent, args.runs)
         python = python_batch(Path(mbc).parent, args.runs)
@@ -535,8 +642,10 @@ def main():
         " their start-up.", "",
         *(instruction_table(counts) if counts else ["valgrind missing."]), "",
         "## Output modes (jit)", "",
-        "Run-phase ms writing nothing, the JSONL toolpath, or the flattened"
-        " G-code: what formatting costs.", "",
+        "Run-phase ms writing nothing, the JSONL toolpath (on the writer"
+        " thread, as `--writer-thread auto` chooses on two cores), or the"
+        " flattened G-code (on the run's thread): what output costs the"
+        " run.", "",
         *mode_table(modes), "",
         "## Compile time and memory against program size", "",
         "`mbc compile -c` of programs from bench/gen_large.py (a main program"
@@ -552,6 +661,10 @@ def main():
         " twin, its start-up included.", "",
         *(end_to_end_table(whole) if whole else ["rs274 was not installed."]),
         "",
+        "## The toolpath on a writer thread", "",
+        writer_thread_text(args.runs, args.rs274_runs), "",
+        *writer_thread_table(threaded), "",
+        *writer_thread_bound(threaded, operations),
         "## Start-up for a small macro", "",
         "examples/bolt_circle.nc, whole process, median of"
         f" {max(args.runs, 15)}: the interpreter and the IR evaluator, the"
