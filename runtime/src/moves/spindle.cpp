@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "frames.h"
+
 namespace mbc::rt {
 
 namespace {
@@ -49,11 +51,12 @@ int surfaceSpeedAxis(const mbrt_ctx& ctx, const MoveOrigin& origin) {
 } // namespace
 
 double lineTurnMinutes(const mbrt_ctx& ctx, const MoveOrigin& origin,
-                       const AxisCounts& from, const AxisCounts& to) {
+                       const AxisCounts& to) {
   const int x = surfaceSpeedAxis(ctx, origin);
   if (x < 0) {
     return 0.0;
   }
+  const AxisCounts from = machineToWork(ctx, ctx.machine.position);
   const TurnTime time = turnTime(ctx, origin);
   const double r0 = radiusOf(ctx, from[x]);
   const double r1 = radiusOf(ctx, to[x]);

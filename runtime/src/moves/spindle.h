@@ -11,10 +11,11 @@
 namespace mbc::rt {
 
 /// Minutes per spindle revolution in G96, averaged over a straight move
-/// between two workpiece positions (counts); 0 outside G96, where the
-/// speed is S throughout.
+/// from the control point's workpiece position to `to` (counts); 0 outside
+/// G96, where the speed is S throughout. The position is found only in
+/// G96: every feed move of a mill asks.
 double lineTurnMinutes(const mbrt_ctx& ctx, const MoveOrigin& origin,
-                       const AxisCounts& from, const AxisCounts& to);
+                       const AxisCounts& to);
 
 /// The same over an arc (`start`: the control point's workpiece position).
 double arcTurnMinutes(const mbrt_ctx& ctx, const MoveOrigin& origin,

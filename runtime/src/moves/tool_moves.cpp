@@ -229,10 +229,7 @@ mbrt_status moveStraightTo(mbrt_ctx& ctx, const AxisCounts& work,
   }
   const Travel length = travel(ctx, machine, 0, 0.0);
   advanceClock(ctx, length, rapid, length.units, origin,
-               rapid ? 0.0
-                     : lineTurnMinutes(ctx, origin,
-                                       machineToWork(ctx, ctx.machine.position),
-                                       work));
+               rapid ? 0.0 : lineTurnMinutes(ctx, origin, work));
   moveTo(ctx, rapid ? MBRT_MOTION_RAPID : MBRT_MOTION_LINEAR, work, machine,
          {0, 0}, origin);
   return 0;
