@@ -140,8 +140,8 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
         ->group("Outputs");
     addValueOption(app, "--writer-thread", "auto|on|off",
                    "write the --toolpath file on a thread of its own while "
-                   "the run goes on (default: auto, when a second core is "
-                   "free)",
+                   "the run goes on (default: auto, when the process may "
+                   "run on a second core)",
                    error,
                    [&o](const std::string& v) -> std::string {
                      o.writerThreadGiven = true;

@@ -328,7 +328,8 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
     for (const auto& [phase, ms] : phases) {
       times += fmt::format(" {} {:.3f} ms,", phase, ms);
     }
-    std::fprintf(text, "%s run %.3f ms\n", times.c_str(), runMs);
+    std::fprintf(text, "%s run %.3f ms%s\n", times.c_str(), runMs,
+                 motions.writer ? " (the toolpath on a writer thread)" : "");
   }
   if (const int sig = InterruptScope::signal()) {
     return 128 + sig; // as the shell reports a process the signal ended

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <sched.h>
 
 namespace mbc::runner {
 
@@ -30,7 +31,17 @@ bool ToolpathThread::wanted(WriterThread choice, const OutputFile& out) {
     case WriterThread::Auto:
       break;
   }
-  return !out.direct() && std::thread::hardware_concurrency() > 1;
+  return !out.direct() && usableCores() > 1;
+}
+
+unsigned ToolpathThread::usableCores() {
+  // The cores this process may run on (taskset, a container's cpuset),
+  // which may be fewer than the machine's.
+  cpu_set_t cores;
+  if (sched_getaffinity(0, sizeof cores, &cores) == 0) {
+    return static_cast<unsigned>(CPU_COUNT(&cores));
+  }
+  return std::thread::hardware_concurrency();
 }
 
 const char* ToolpathThread::kept(const char* name) {

@@ -47,7 +47,8 @@ public:
 
   /// Whether `out` is written on a thread of its own, as `choice` asks:
   /// automatically for a file that is not standard output (DPRNT shares
-  /// it, in order) nor a terminal, when a second core is there.
+  /// it, in order) nor a terminal, when the process may run on a second
+  /// core.
   static bool wanted(WriterThread choice, const OutputFile& out);
 
 private:
@@ -72,6 +73,7 @@ private:
     std::array<Slot, kChunk> slots;
   };
 
+  static unsigned usableCores();
   /// Publishes the chunk being filled, if it holds any motion.
   void publish();
   /// Waits until the writer has written the chunks before `chunk`.

@@ -5,7 +5,8 @@
 # status, under output limits that fall on motions, on DPRNT lines and
 # nowhere, under the block limit and under an alarm of the program's. The
 # program makes more moves than the writer's ring holds, so that the run
-# waits for room. An option that cannot apply is refused.
+# waits for room. An option that cannot apply is refused. auto uses the
+# thread only with a second core the process may run on (taskset).
 #   writer_thread.sh MBC
 source "$(dirname "$0")/script_env.sh" "$1"
 cat >passes.nc <<'NC'
@@ -60,5 +61,36 @@ for refused in "--writer-thread on --toolpath -" "--writer-thread off" \
     status=1
   fi
 done
+# When it is used: --time says so. auto takes a second core the process
+# may run on, and never standard output.
+thread_used() { # expected, then mbc run's options
+  local expected=$1
+  shift
+  "$mbc" run passes.nc --engine interp --time --dprnt /dev/null "$@" \
+    >/dev/null 2>used.err
+  if grep -q "run [0-9.]* ms (the toolpath on a writer thread)" used.err; then
+    used=yes
+  else
+    used=no
+  fi
+  if [ "$used" != "$expected" ]; then
+    echo "FAIL: $*: writer thread $used: $(tail -1 used.err)"
+    status=1
+  fi
+}
+thread_used yes --toolpath used.jsonl --writer-thread on
+thread_used no --toolpath used.jsonl --writer-thread off
+thread_used no --toolpath -
+thread_used no --toolpath /dev/null --writer-thread off
+if command -v taskset >/dev/null; then
+  taskset -c 0 bash -c "$(declare -f thread_used); mbc=$mbc status=0; \
+    thread_used no --toolpath used.jsonl; \
+    thread_used yes --toolpath used.jsonl --writer-thread on; exit \$status" ||
+    status=1
+  if [ "$(nproc --all)" -gt 1 ]; then
+    taskset -c 0,1 bash -c "$(declare -f thread_used); mbc=$mbc status=0; \
+      thread_used yes --toolpath used.jsonl; exit \$status" || status=1
+  fi
+fi
 [ "$status" = 0 ] && echo "ok: the writer thread wrote what the run writes itself"
 exit $status
