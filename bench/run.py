@@ -260,6 +260,23 @@ def raster_of(rows, work):
     return pair
 
 
+def taking_turns(commands, runs):
+    """measure() of each command, their runs taking turns: the kernel
+    writes back what one run wrote while the next runs, on the cores the
+    writer thread needs, and a series of one mode after a series of
+    another would meet another's write-back."""
+    os.sync()
+    samples = {name: [] for name in commands}
+    for _ in range(runs):
+        for name, command in commands.items():
+            samples[name].append(measure(command, 1))
+    return {name: {"wall": statistics.median(m["wall"] for m in taken),
+                   "phases": {"run": statistics.median(
+                       m["phases"]["run"] for m in taken)},
+                   "moves": taken[0]["moves"]}
+            for name, taken in samples.items()}
+
+
 def writer_thread(mbc, runs, rs274_runs, work):
     """Per raster size: whole-process s and run-phase ms of `mbc run` (code
     in the cache) with no toolpath, the JSONL toolpath written by the run
@@ -274,10 +291,11 @@ def writer_thread(mbc, runs, rs274_runs, work):
         print(f"bench: writer thread, {workload.name}", file=sys.stderr)
         base = [mbc, "run", str(workload), "--time", "--dprnt", "/dev/null"]
         run_once(base)
-        modes = {mode: measure(base + extra, runs) for mode, extra in (
-            ("null", []),
-            ("inline", ["--toolpath", sink, "--writer-thread", "off"]),
-            ("thread", ["--toolpath", sink, "--writer-thread", "on"]))}
+        modes = taking_turns({
+            "null": base,
+            "inline": base + ["--toolpath", sink, "--writer-thread", "off"],
+            "thread": base + ["--toolpath", sink, "--writer-thread", "on"]},
+            runs)
         modes["rs274"] = statistics.median(
             run_once(["rs274", "-g", str(ngc), "/dev/null"])[0]
             for _ in range(rs274_runs)) if shutil.which("rs274") else None
@@ -326,8 +344,8 @@ def writer_thread_bound(rows, operations):
 
 def writer_thread_text(runs, rs274_runs):
     return (f"bench's raster at 200 and 1000 rows of 1000 points, whole"
-            f" processes, median of {max(runs, WRITER_RUNS)} (rs274: of"
-            f" {rs274_runs}): `mbc"
+            f" processes, median of {max(runs, WRITER_RUNS)}, the modes"
+            f" taking turns (rs274: of {rs274_runs}): `mbc"
             " run` with its code in the cache, writing no toolpath (null"
             " sink) or the JSONL toolpath to a file, formatted on the run's"
             " thread (`--writer-thread off`) or on a thread of its own (`on`;"
