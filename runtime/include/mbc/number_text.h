@@ -2,6 +2,7 @@
 // machine, whatever the C locale, appended without a string per number.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace mbc {
@@ -13,8 +14,13 @@ std::string trimmedFixed(double value, int decimals);
 /// trimmedFixed appended to `out`.
 void appendTrimmedFixed(std::string& out, double value, int decimals);
 
-/// trimmedFixed written at `out`, which has room for it (18 + decimals
-/// characters up to 1e15, 320 + decimals beyond); the end of what it wrote.
+/// The most characters trimmedFixed writes for `value`: the sign, 16
+/// digits, the point and the decimals up to 1e15; every digit of a double
+/// beyond.
+std::size_t trimmedFixedBound(double value, int decimals);
+
+/// trimmedFixed written at `out`, which has room for trimmedFixedBound
+/// characters; the end of what it wrote.
 char* writeTrimmedFixed(char* out, double value, int decimals);
 
 /// The decimal digits of `value`, with '-' when negative.

@@ -86,17 +86,25 @@ char* writeTrimmedFixed(char* out, double value, int decimals) {
   return end;
 }
 
+std::size_t trimmedFixedBound(double value, int decimals) {
+  constexpr std::size_t kLargestDouble = 309; // digits of DBL_MAX
+  // Up to 1e15 a number has at most 16 digits before the point, as
+  // increments or through fmt; beyond, fmt writes all of them.
+  const std::size_t places =
+      decimals > 0 ? static_cast<std::size_t>(decimals) : 0;
+  const bool counted = std::fabs(value) <= 1e15;
+  return (counted ? 17 : kLargestDouble + 1) + 1 + places;
+}
+
 void appendTrimmedFixed(std::string& out, double value, int decimals) {
-  // The most any number takes: DBL_MAX's digits, a sign, the point and
-  // the decimals.
-  constexpr int kLongest = 330;
-  if (decimals <= 16) {
-    char text[kLongest + 16];
+  const std::size_t most = trimmedFixedBound(value, decimals);
+  char text[64];
+  if (most <= sizeof text) {
     out.append(text, writeTrimmedFixed(text, value, decimals));
     return;
   }
   const std::size_t start = out.size();
-  out.resize(start + kLongest + static_cast<std::size_t>(decimals));
+  out.resize(start + most);
   const char* end = writeTrimmedFixed(out.data() + start, value, decimals);
   out.resize(static_cast<std::size_t>(end - out.data()));
 }

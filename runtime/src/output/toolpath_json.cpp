@@ -132,33 +132,17 @@ void appendToolpathJson(std::string& out, const mbrt_motion& m) {
   out.resize(static_cast<std::size_t>(end - out.data()));
 }
 
-namespace {
-
-/// The most characters appendTrimmedFixed writes for a number: the sign,
-/// 16 digits, the point and the decimals when it counts increments, the
-/// digits of any double otherwise.
-std::size_t numberBound(double value, int decimals) {
-  constexpr std::size_t kLargestDouble = 309; // digits of DBL_MAX
-  // Up to 1e15 a number has at most 16 digits before the point, as
-  // increments or through fmt; beyond, fmt writes all of them.
-  const std::size_t places =
-      decimals > 0 ? static_cast<std::size_t>(decimals) : 0;
-  const bool counted = std::fabs(value) <= 1e15;
-  return (counted ? 17 : kLargestDouble + 1) + 1 + places;
-}
-
-} // namespace
-
 std::size_t toolpathJsonBound(const mbrt_motion& m) {
   constexpr std::size_t kInteger = 20; // a long long's digits and sign
   std::size_t bytes = sizeof "{\"motion\":\"rapid\"" - 1;
   for (int axis = 0; axis < m.axis_count; ++axis) {
-    bytes += sizeof ",\"mx\":" - 1 + numberBound(m.end[axis], m.decimals);
-    bytes += sizeof ",\"mx\":" - 1 + numberBound(m.machine[axis], m.decimals);
+    bytes += sizeof ",\"mx\":" - 1 + trimmedFixedBound(m.end[axis], m.decimals);
+    bytes +=
+        sizeof ",\"mx\":" - 1 + trimmedFixedBound(m.machine[axis], m.decimals);
   }
   bytes += sizeof ",\"f\":" - 1 + 40; // fmt's shortest form: 25
   for (int i = 0; i < 2; ++i) {
-    bytes += sizeof ",\"cx\":" - 1 + numberBound(m.center[i], m.decimals);
+    bytes += sizeof ",\"cx\":" - 1 + trimmedFixedBound(m.center[i], m.decimals);
   }
   bytes += sizeof ",\"cycle\":\"G\"" - 1 + kInteger;
   bytes += sizeof ",\"line\":" - 1 + kInteger;
