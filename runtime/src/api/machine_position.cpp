@@ -37,7 +37,7 @@ int mbrt_set_machine_position(mbrt_ctx* ctx, int axis, double value) {
   }
   const int per = ctx->axisCountsPerIncrement(axis);
   const double counts =
-      roundToCounts(value, ctx->axisScale(axis, ctx->profile.inch) / per);
+      roundToCounts(value, ctx->axisIncrements(axis, ctx->profile.inch));
   if (!fitsAddress(counts)) {
     return 0;
   }

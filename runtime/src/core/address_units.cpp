@@ -12,7 +12,7 @@ double addressCountsPerUnit(const mbrt_ctx& ctx, char letter) {
     return 10.0;
   }
   if (const int axis = ctx.movedAxisOf(letter); axis >= 0) {
-    return ctx.axisScale(axis) / ctx.axisCountsPerIncrement(axis);
+    return ctx.axisIncrements(axis);
   }
   if (isArcCenterLetter(letter) || letter == 'Q' || letter == 'F' ||
       letter == commaWordLetter('C') || letter == commaWordLetter('R')) {

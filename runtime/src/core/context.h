@@ -539,14 +539,21 @@ struct mbrt_ctx {
   }
 
   double axisScale(int axis, bool inch) const {
-    if (isRotary(axis)) {
-      return mbc::rt::kCountsPerDegree;
-    }
-    return isDiameter(axis) ? inputScale(inch) : scale(inch);
+    return axisIncrements(axis, inch) * axisCountsPerIncrement(axis);
   }
 
-  /// Counts per least input increment of an axis (axisScale over the
-  /// increments per unit).
+  /// Least input increments per unit of an axis: 0.001 degree on a rotary
+  /// axis whatever G20/G21. A block's axis word is rounded to them; kept
+  /// apart from axisScale so that reading one costs no division.
+  double axisIncrements(int axis) const {
+    return axisIncrements(axis, machine.modal.inch);
+  }
+
+  double axisIncrements(int axis, bool inch) const {
+    return isRotary(axis) ? mbc::rt::kCountsPerDegree : inputScale(inch);
+  }
+
+  /// Counts per least input increment of an axis.
   int axisCountsPerIncrement(int axis) const {
     return isRotary(axis) || isDiameter(axis) ? 1 : countsPerIncrement();
   }
@@ -676,7 +683,7 @@ inline double roundToCounts(double value, double scale) {
 /// rounded to the least input increment first, as the control reads it.
 inline double roundToAxisCounts(const mbrt_ctx& ctx, int axis, double value) {
   const int per = ctx.axisCountsPerIncrement(axis);
-  return roundToCounts(value, ctx.axisScale(axis) / per) * per;
+  return roundToCounts(value, ctx.axisIncrements(axis)) * per;
 }
 
 /// A radius or length in input units to counts, rounded to the increment.

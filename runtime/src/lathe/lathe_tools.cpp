@@ -79,8 +79,7 @@ namespace {
 double wordUnits(const mbrt_ctx& ctx, const mbrt_word& word, char axis) {
   const int index = ctx.axisOf(axis);
   const double increments =
-      index >= 0 ? ctx.axisScale(index) / ctx.axisCountsPerIncrement(index)
-                 : ctx.inputScale();
+      index >= 0 ? ctx.axisIncrements(index) : ctx.inputScale();
   const double value = numeric(word.value);
   return word.kind == MBRT_WORD_INT_LITERAL && !ctx.profile.decimalPointInput
              ? value / increments
