@@ -28,15 +28,21 @@ AxisCounts toCounts(const AxisValues& values) {
   return counts;
 }
 
-/// The sum of the work offset, the external offset and the G92 shift.
-AxisCounts originOf(const mbrt_ctx& ctx) {
-  AxisCounts origin{};
-  for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    origin[axis] = workOffsetInForce(ctx, ctx.machine.modal.workOffset, axis) +
-                   workOffsetInForce(ctx, kExternalOffset, axis) +
-                   ctx.machine.frames.preset[axis];
-  }
-  return origin;
+/// The workpiece coordinate of a program coordinate when no frame
+/// transforms: the local origin added.
+Counts unframedWork(const mbrt_ctx& ctx, const AxisCounts& program, int axis) {
+  return program[axis] + ctx.machine.frames.local[axis];
+}
+
+/// What makes a workpiece coordinate of `axis` a machine coordinate: the
+/// work offset, the external offset, the G92 shift, and the tool's offsets
+/// (a lathe's geometry and wear, the tool length on its axis).
+Counts machineShift(const mbrt_ctx& ctx, int axis) {
+  const Frames& frames = ctx.machine.frames;
+  return workOffsetInForce(ctx, ctx.machine.modal.workOffset, axis) +
+         workOffsetInForce(ctx, kExternalOffset, axis) + frames.preset[axis] +
+         frames.toolGeometry[axis] + frames.toolWear[axis] +
+         (axis == frames.lengthAxis ? frames.length : 0);
 }
 
 /// Its own inverse.
@@ -118,7 +124,7 @@ AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
   if (!frames.transforms()) {
     AxisCounts work = program;
     for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-      work[axis] += frames.local[axis];
+      work[axis] = unframedWork(ctx, program, axis);
     }
     return work;
   }
@@ -132,27 +138,32 @@ AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program) {
 }
 
 AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work) {
-  AxisCounts machine = originOf(ctx);
+  AxisCounts machine{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    machine[axis] += work[axis] + ctx.machine.frames.toolGeometry[axis] +
-                     ctx.machine.frames.toolWear[axis];
-  }
-  if (ctx.machine.frames.lengthAxis >= 0) {
-    machine[ctx.machine.frames.lengthAxis] += ctx.machine.frames.length;
+    machine[axis] = work[axis] + machineShift(ctx, axis);
   }
   return machine;
 }
 
+void placeProgramPoint(const mbrt_ctx& ctx, const AxisCounts& program,
+                       AxisCounts& work, AxisCounts& machine) {
+  if (ctx.machine.frames.transforms()) {
+    work = programToWork(ctx, program);
+    machine = workToMachine(ctx, work);
+    return;
+  }
+  const int count = ctx.axisCount();
+  for (int axis = 0; axis < MBRT_MAX_AXES; ++axis) {
+    const bool used = axis < count;
+    work[axis] = used ? unframedWork(ctx, program, axis) : program[axis];
+    machine[axis] = used ? work[axis] + machineShift(ctx, axis) : 0;
+  }
+}
+
 AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine) {
-  const AxisCounts origin = originOf(ctx);
   AxisCounts work{};
   for (int axis = 0; axis < ctx.axisCount(); ++axis) {
-    work[axis] = machine[axis] - origin[axis] -
-                 ctx.machine.frames.toolGeometry[axis] -
-                 ctx.machine.frames.toolWear[axis];
-  }
-  if (ctx.machine.frames.lengthAxis >= 0) {
-    work[ctx.machine.frames.lengthAxis] -= ctx.machine.frames.length;
+    work[axis] = machine[axis] - machineShift(ctx, axis);
   }
   return work;
 }

@@ -22,6 +22,15 @@ AxisCounts programToWork(const mbrt_ctx& ctx, const AxisCounts& program);
 /// A workpiece-frame position as the control point's machine position.
 AxisCounts workToMachine(const mbrt_ctx& ctx, const AxisCounts& work);
 
+/// A program position in the workpiece frame (`work`) and as the control
+/// point's machine position (`machine`): programToWork, then
+/// workToMachine. Every straight move asks: without a frame it takes one
+/// pass over the axes, and it writes where the caller keeps the points. A
+/// result returned would be built aside and copied, and the copy's wide
+/// loads wait for the narrow stores before them (store forwarding).
+void placeProgramPoint(const mbrt_ctx& ctx, const AxisCounts& program,
+                       AxisCounts& work, AxisCounts& machine);
+
 /// The workpiece-frame position of a machine position.
 AxisCounts machineToWork(const mbrt_ctx& ctx, const AxisCounts& machine);
 

@@ -352,9 +352,11 @@ mbrt_status moveArc(mbrt_ctx& ctx, const MotionWords& words,
 
 mbrt_status moveStraight(mbrt_ctx& ctx, const AxisCounts& target, bool rapid,
                          int cycle) {
-  const AxisCounts work = programToWork(ctx, target);
+  AxisCounts work;
+  AxisCounts machine;
+  placeProgramPoint(ctx, target, work, machine);
   ctx.machine.program = target;
-  return moveToMachine(ctx, work, workToMachine(ctx, work), rapid, cycle);
+  return moveToMachine(ctx, work, machine, rapid, cycle);
 }
 
 mbrt_status moveToFrame(mbrt_ctx& ctx) {
@@ -362,8 +364,9 @@ mbrt_status moveToFrame(mbrt_ctx& ctx) {
     return compensateMove(ctx, straightTo(ctx, ctx.machine.program,
                                           ctx.machine.modal.motion == 0));
   }
-  const AxisCounts work = programToWork(ctx, ctx.machine.program);
-  const AxisCounts machine = workToMachine(ctx, work);
+  AxisCounts work;
+  AxisCounts machine;
+  placeProgramPoint(ctx, ctx.machine.program, work, machine);
   if (machine == ctx.machine.position) {
     return 0;
   }
