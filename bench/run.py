@@ -339,7 +339,13 @@ def writer_thread_bound(rows, operations):
             " it over (copying what a record prints, counting its bound,"
             " keeping its program's name) and the writer's traffic in the"
             " caches and memory it shares with the run. Formatting and"
-            " writing are off the run's thread.", ""]
+            " writing are off the run's thread.", "",
+            "The drawing (`--svg`) and the page (`--html`) are made on the"
+            " writer thread too, what a move may add to them counted ahead"
+            " as a record's bound is. The flattened G-code (`--gcode`) stays"
+            " on the run's thread: a flattened block's text is made by the"
+            " runtime from the block's words and the modal state at that"
+            " block, which a hand-over would have to copy whole.", ""]
 
 
 def writer_thread_text(runs, rs274_runs):

@@ -31,6 +31,11 @@ int arcPieces(const Arc& arc) {
                                                 kSegmentsPerTurn)));
 }
 
+// What the page counts against the output limit: about 8 bytes of it per
+// coordinate, 40 per move.
+constexpr std::size_t kBytesPerCoordinate = 8;
+constexpr std::size_t kBytesPerMove = 40;
+
 std::array<double, 3> xyz(const double* point, const mbrt_motion& m) {
   std::array<double, 3> out{};
   const char letters[] = {'X', 'Y', 'Z'};
@@ -155,8 +160,17 @@ std::size_t HtmlWriter::add(const mbrt_motion& motion) {
   } else {
     segmentTo(from, xyz(m.end, m));
   }
-  // About 8 bytes of the page per coordinate, 40 per move.
-  return (points_.size() + programmed_.size() - before) * 8 + 40;
+  return (points_.size() + programmed_.size() - before) * kBytesPerCoordinate +
+         kBytesPerMove;
+}
+
+std::size_t HtmlWriter::growthBound(const mbrt_motion& motion) {
+  const mbrt_motion m = motion.diameter_mask != 0 ? inRadii(motion) : motion;
+  const bool arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
+  const auto pieces = static_cast<std::size_t>(arc ? arcPieces(arcOf(m)) : 1);
+  // The tool's segments and as many of the programmed contour, each two
+  // points of three coordinates.
+  return 2 * pieces * 6 * kBytesPerCoordinate + kBytesPerMove;
 }
 
 std::string HtmlWriter::document(const std::string& title) const {

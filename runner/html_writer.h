@@ -19,6 +19,10 @@ public:
   /// Records one move; returns the bytes the page grew by.
   std::size_t add(const mbrt_motion& motion);
 
+  /// The most bytes add() may return for `motion`, whatever was added
+  /// before: a writer thread counts it ahead of the page (toolpath_thread.h).
+  static std::size_t growthBound(const mbrt_motion& motion);
+
   /// The whole page under a title, with the text of the source lines the
   /// moves came from (read from their files).
   std::string document(const std::string& title) const;

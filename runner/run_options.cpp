@@ -71,9 +71,10 @@ std::string runOptionsProblem(const RunOptions& o) {
   if (o.svgViewGiven && o.svgPath.empty()) {
     return "--view chooses the view of --svg, which is not given";
   }
-  if (o.writerThreadGiven && o.toolpathPath.empty()) {
-    return "--writer-thread chooses how --toolpath is written, which is not "
-           "given";
+  if (o.writerThreadGiven && o.toolpathPath.empty() && o.svgPath.empty() &&
+      o.htmlPath.empty()) {
+    return "--writer-thread chooses how --toolpath, --svg and --html are "
+           "made, and none is given";
   }
   if (o.writerThread == WriterThread::On && o.toolpathPath == "-") {
     return "--writer-thread on needs --toolpath FILE: the toolpath on "
@@ -139,9 +140,10 @@ void addRunOptions(CLI::App& app, RunOptions& o, std::string& error,
                    })
         ->group("Outputs");
     addValueOption(app, "--writer-thread", "auto|on|off",
-                   "write the --toolpath file on a thread of its own while "
-                   "the run goes on (default: auto, when the process may "
-                   "run on a second core)",
+                   "make the --toolpath file, the --svg drawing and the "
+                   "--html page on a thread of their own while the run goes "
+                   "on (default: auto, when the process may run on a "
+                   "second core)",
                    error,
                    [&o](const std::string& v) -> std::string {
                      o.writerThreadGiven = true;

@@ -97,28 +97,22 @@ bool openGcode(const RunOptions& o, mbrt_ctx* ctx, OutputFile& gcode) {
   return true;
 }
 
-/// Where the motions go: the toolpath file and the drawing, either or both.
-/// Both count against the output limit: the drawing grows in memory.
+/// Where the motions go: the toolpath file, the drawing and the page, any
+/// of them. All count against the output limit: the pictures grow in
+/// memory.
 struct MotionOutputs {
   mbrt_ctx* ctx = nullptr;
   OutputFile toolpath;
-  std::optional<ToolpathThread> writer; // the toolpath's, when worthwhile
   std::optional<SvgWriter> svg;
   std::optional<HtmlWriter> html;
+  std::optional<ToolpathThread> writer; // when worthwhile
+  MotionTargets here;                   // made on the run's thread
 
   static void write(void* self, const mbrt_motion* motion) {
     auto* outputs = static_cast<MotionOutputs*>(self);
-    std::size_t bytes = 0;
+    std::size_t bytes = outputs->here.take(*motion);
     if (outputs->writer) {
       bytes += outputs->writer->push(*motion);
-    } else if (outputs->toolpath.get() != nullptr) {
-      bytes += outputs->toolpath.write(*motion);
-    }
-    if (outputs->svg) {
-      bytes += outputs->svg->add(*motion);
-    }
-    if (outputs->html) {
-      bytes += outputs->html->add(*motion);
     }
     mbrt_count_output(outputs->ctx, bytes);
   }
@@ -163,11 +157,21 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
       motions.html.emplace();
     }
   }
-  if (!capture && ToolpathThread::wanted(o.writerThread, motions.toolpath)) {
-    motions.writer.emplace(motions.toolpath);
+  const MotionTargets all{motions.toolpath.get() != nullptr ? &motions.toolpath
+                                                            : nullptr,
+                          motions.svg ? &*motions.svg : nullptr,
+                          motions.html ? &*motions.html : nullptr};
+  const MotionTargets threaded =
+      capture ? MotionTargets{} : ToolpathThread::wanted(o.writerThread, all);
+  motions.here = all;
+  if (threaded.any()) {
+    motions.writer.emplace(threaded);
     mbrt_set_output_settle(ctx, &MotionOutputs::settle, &motions);
+    motions.here = {threaded.toolpath != nullptr ? nullptr : all.toolpath,
+                    threaded.svg != nullptr ? nullptr : all.svg,
+                    threaded.html != nullptr ? nullptr : all.html};
   }
-  if (motions.toolpath.get() != nullptr || motions.svg || motions.html) {
+  if (all.any()) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);
   }
   mbrt_set_print_sink(ctx, &OutputFile::writeText, &dprnt);
@@ -328,8 +332,12 @@ int runSession(const RunOptions& o, mbrt_ctx* ctx, const std::string& mainName,
     for (const auto& [phase, ms] : phases) {
       times += fmt::format(" {} {:.3f} ms,", phase, ms);
     }
+    const std::string threaded = motions.writer
+                                     ? fmt::format(" ({} on a writer thread)",
+                                                   motions.writer->madeText())
+                                     : "";
     std::fprintf(text, "%s run %.3f ms%s\n", times.c_str(), runMs,
-                 motions.writer ? " (the toolpath on a writer thread)" : "");
+                 threaded.c_str());
   }
   if (const int sig = InterruptScope::signal()) {
     return 128 + sig; // as the shell reports a process the signal ended

@@ -211,6 +211,26 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
          holes_.size() * sizeof(Hole) + grown - before;
 }
 
+std::size_t SvgWriter::growthBound(const mbrt_motion& motion) {
+  // Every number drawn is a coordinate of the move or of its arc's centre,
+  // a point of the arc, a radius, or one of these projected (isometric) or
+  // mirrored about the centre: within 16 times the largest coordinate.
+  double largest =
+      std::max(std::fabs(motion.center[0]), std::fabs(motion.center[1]));
+  for (int axis = 0; axis < motion.axis_count; ++axis) {
+    for (const double* point : {motion.start, motion.end, motion.programmed}) {
+      largest = std::max(largest, std::fabs(point[axis]));
+    }
+  }
+  // The tokens of the paths a move adds to, each a number or a flag after
+  // its letter or space: the programmed contour's (a move to its start, a
+  // full circle as two arcs of seven), a rapid's four, and a feed's (a move
+  // to its start, then a line, two arcs, or the samples of an arc).
+  constexpr std::size_t kTokens = 2 + 2 * 7 + 4 + 2 + 2 * kArcSamples;
+  return kTokens * (trimmedFixedBound(16.0 * largest, 4) + 1) + sizeof(Piece) +
+         sizeof(Hole);
+}
+
 /// A rapid is a subpath of its own from its lower end, so that its dashes
 /// start there: a retract and the plunge back share their dashes, and a
 /// rapid drawn before is not drawn again.

@@ -33,6 +33,11 @@ public:
   /// Records one move; returns the bytes the drawing grew by.
   std::size_t add(const mbrt_motion& motion);
 
+  /// The most bytes add() may return for `motion`, whatever was added
+  /// before: a writer thread counts it ahead of the drawing
+  /// (toolpath_thread.h).
+  static std::size_t growthBound(const mbrt_motion& motion);
+
   /// The whole drawing under a title line; it fits the moves, the holes
   /// and the origin with a margin.
   std::string document(const std::string& title = "") const;

@@ -9,29 +9,65 @@
 
 namespace mbc::runner {
 
-ToolpathThread::ToolpathThread(OutputFile& out)
+std::size_t MotionTargets::take(const mbrt_motion& motion) const {
+  std::size_t bytes = toolpath != nullptr ? toolpath->write(motion) : 0;
+  if (svg != nullptr) {
+    bytes += svg->add(motion);
+  }
+  if (html != nullptr) {
+    bytes += html->add(motion);
+  }
+  return bytes;
+}
+
+std::size_t MotionTargets::bound(const mbrt_motion& motion) const {
+  std::size_t bytes = toolpath != nullptr ? toolpathJsonBound(motion) : 0;
+  if (svg != nullptr) {
+    bytes += SvgWriter::growthBound(motion);
+  }
+  if (html != nullptr) {
+    bytes += HtmlWriter::growthBound(motion);
+  }
+  return bytes;
+}
+
+ToolpathThread::ToolpathThread(const MotionTargets& targets)
     // Default-initialised: the slots are not cleared, a page is touched
     // when a chunk first fills it.
-    : out_(out), ring_(new Chunk[kRing]), writer_([this] { write(); }) {
+    : targets_(targets),
+      drawing_(targets.svg != nullptr || targets.html != nullptr),
+      ring_(new Chunk[kRing]), writer_([this] { write(); }) {
 }
 
 ToolpathThread::~ToolpathThread() {
   finish();
 }
 
-bool ToolpathThread::wanted(WriterThread choice, const OutputFile& out) {
-  if (out.get() == nullptr) {
-    return false;
+MotionTargets ToolpathThread::wanted(WriterThread choice,
+                                     const MotionTargets& outputs) {
+  if (choice == WriterThread::Off ||
+      (choice == WriterThread::Auto && usableCores() < 2)) {
+    return {};
   }
-  switch (choice) {
-    case WriterThread::On:
-      return true;
-    case WriterThread::Off:
-      return false;
-    case WriterThread::Auto:
-      break;
+  MotionTargets threaded = outputs;
+  if (choice == WriterThread::Auto && outputs.toolpath != nullptr &&
+      outputs.toolpath->direct()) {
+    threaded.toolpath = nullptr;
   }
-  return !out.direct() && usableCores() > 1;
+  return threaded;
+}
+
+std::string ToolpathThread::madeText() const {
+  std::string made;
+  for (const auto& [there, name] :
+       {std::pair{targets_.toolpath != nullptr, "the toolpath"},
+        std::pair{targets_.svg != nullptr, "the SVG"},
+        std::pair{targets_.html != nullptr, "the HTML page"}}) {
+    if (there) {
+      made += made.empty() ? name : std::string(", ") + name;
+    }
+  }
+  return made;
 }
 
 unsigned ToolpathThread::usableCores() {
@@ -44,15 +80,15 @@ unsigned ToolpathThread::usableCores() {
   return std::thread::hardware_concurrency();
 }
 
-const char* ToolpathThread::kept(const char* name) {
+const char* ToolpathThread::kept(const char* name, const char*& last) {
   if (name == nullptr) {
     return nullptr;
   }
-  if (lastName_ == nullptr || std::strcmp(lastName_, name) != 0) {
+  if (last == nullptr || std::strcmp(last, name) != 0) {
     // A set's strings stay where they are while others are added.
-    lastName_ = names_.insert(name).first->c_str();
+    last = names_.insert(name).first->c_str();
   }
-  return lastName_;
+  return last;
 }
 
 std::size_t ToolpathThread::push(const mbrt_motion& motion) {
@@ -79,12 +115,18 @@ std::size_t ToolpathThread::push(const mbrt_motion& motion) {
   to.center[1] = motion.center[1];
   to.decimals = motion.decimals;
   to.line = motion.line;
-  to.program = kept(motion.program);
+  to.program = kept(motion.program, lastProgram_);
   to.cycle = motion.cycle;
+  if (drawing_) {
+    to.diameter_mask = motion.diameter_mask;
+    std::copy_n(motion.start, MBRT_MAX_AXES, to.start);
+    std::copy_n(motion.programmed, MBRT_MAX_AXES, to.programmed);
+    to.file = kept(motion.file, lastFile_);
+  }
   if (count_ == kChunk) {
     publish();
   }
-  const std::size_t bound = toolpathJsonBound(motion);
+  const std::size_t bound = targets_.bound(motion);
   bounded_ += bound;
   return bound;
 }
@@ -154,7 +196,7 @@ void ToolpathThread::write() {
       const Chunk& chunk = ring_[next % kRing];
       std::uint64_t bytes = 0;
       for (std::size_t i = 0; i < chunk.size; ++i) {
-        bytes += out_.write(chunk.slots[i].motion);
+        bytes += targets_.take(chunk.slots[i].motion);
       }
       exact_.fetch_add(bytes, std::memory_order_relaxed);
       written_.store(++next, std::memory_order_seq_cst);

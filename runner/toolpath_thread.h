@@ -1,10 +1,11 @@
-// The JSONL toolpath written on a thread of its own while the run goes on
-// (`mbc run --toolpath FILE` where a second core is free): the run's
-// thread copies motions into chunks of a ring, the writer formats and
-// writes them in order. The run counts an upper bound of each record
+// The motions' outputs made on a thread of their own while the run goes on
+// (`mbc run --toolpath FILE`, `--svg`, `--html` where a second core is
+// free): the run's thread copies motions into chunks of a ring, the writer
+// formats the JSONL records and writes them, and draws the drawing and the
+// page, in order. The run counts an upper bound of what each motion adds
 // against the output limit; when the bounds pass the limit the runtime asks
 // for the exact count (settle), so --max-output stops the run at the same
-// block as when the run formats the records itself.
+// block as when the run makes the outputs itself.
 #pragma once
 
 #include <mbc/runtime.h>
@@ -20,15 +21,35 @@
 #include <string>
 #include <thread>
 
+#include "runner/html_writer.h"
 #include "runner/output_files.h"
 #include "runner/run_options.h"
+#include "runner/svg_writer.h"
 
 namespace mbc::runner {
 
+/// Where a motion goes: the JSONL toolpath file, the drawing, the page
+/// (each may be absent).
+struct MotionTargets {
+  OutputFile* toolpath = nullptr;
+  SvgWriter* svg = nullptr;
+  HtmlWriter* html = nullptr;
+
+  bool any() const {
+    return toolpath != nullptr || svg != nullptr || html != nullptr;
+  }
+
+  /// Writes the motion to each target; the bytes they grew by.
+  std::size_t take(const mbrt_motion& motion) const;
+
+  /// The most bytes take() may return for `motion`.
+  std::size_t bound(const mbrt_motion& motion) const;
+};
+
 class ToolpathThread {
 public:
-  /// Starts the writer on `out`, which only it touches until finish().
-  explicit ToolpathThread(OutputFile& out);
+  /// Starts the writer on `targets`, which only it touches until finish().
+  explicit ToolpathThread(const MotionTargets& targets);
   ~ToolpathThread();
 
   ToolpathThread(const ToolpathThread&) = delete;
@@ -45,11 +66,15 @@ public:
   /// Writes what is left and stops the writer (once; the destructor too).
   void finish();
 
-  /// Whether `out` is written on a thread of its own, as `choice` asks:
-  /// automatically for a file that is not standard output (DPRNT shares
-  /// it, in order) nor a terminal, when the process may run on a second
-  /// core.
-  static bool wanted(WriterThread choice, const OutputFile& out);
+  /// Which of `outputs` are made on a thread of their own, as `choice`
+  /// asks; automatically, when the process may run on a second core: the
+  /// drawings, and the toolpath when it is a file that is not standard
+  /// output (DPRNT shares it, in order) nor a terminal.
+  static MotionTargets wanted(WriterThread choice,
+                              const MotionTargets& outputs);
+
+  /// What `--time` says the thread made: "the toolpath", "the SVG"...
+  std::string madeText() const;
 
 private:
   // Motions go over a chunk at a time, and the writer is woken (a system
@@ -60,8 +85,9 @@ private:
   static constexpr std::uint64_t kWakeBatch = 8;   // chunks
   static constexpr std::uint64_t kRoomToWake = 16; // chunks free
 
-  /// A motion as the writer needs it: the fields a record prints, copied
-  /// (a slot is not cleared first; the rest is never read).
+  /// A motion as the writer needs it: the fields a record prints, and the
+  /// drawings' when there are any, copied (a slot is not cleared first;
+  /// the rest is never read).
   struct Slot {
     mbrt_motion motion;
 
@@ -80,11 +106,13 @@ private:
   void waitForWriter(std::uint64_t chunk);
   void wakeWriter();
   void write();
-  /// The motion's program name, kept: the runtime's text changes from
-  /// block to block, and the writer reads it later.
-  const char* kept(const char* name);
+  /// A motion's program or file name, kept (`last`: the last one kept for
+  /// that field): the runtime's text changes from block to block, and the
+  /// writer reads it later.
+  const char* kept(const char* name, const char*& last);
 
-  OutputFile& out_;
+  const MotionTargets targets_;
+  const bool drawing_; // the slots carry what the drawings read
   std::unique_ptr<Chunk[]> ring_;
 
   // The run's thread only.
@@ -92,7 +120,8 @@ private:
   std::size_t count_ = 0;     // motions in it
   std::uint64_t bounded_ = 0;
   std::set<std::string> names_; // the writer reads the strings only
-  const char* lastName_ = nullptr;
+  const char* lastProgram_ = nullptr;
+  const char* lastFile_ = nullptr;
   std::uint64_t settledBounds_ = 0;
   std::uint64_t settledExact_ = 0;
 
