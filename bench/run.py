@@ -742,6 +742,18 @@ def main():
         " block).", "",
         *(block_split_table(operations) if operations
           else ["bench/micro was not built (MBC_MICRO_BENCH)."]), "",
+        "The goal was 30 ns for the whole block. What stops the move near"
+        " 30 ns on its own is the simulated clock (#3001, #3002 and the"
+        " summary's cycle time): the move's length is a square root, and"
+        " its time divisions by the counts per unit, the feed and 3600, one"
+        " after another, each rounded as the goldens pin them, so none"
+        " becomes a multiplication. Under perf, with the coordinates in"
+        " one pass (frames.h placeProgramPoint), the length and the clock"
+        " take half the move's samples, waiting on those results. The"
+        " reading has no one hot spot: its largest share, the block's own"
+        " function (its state cleared, its words handed to their readers),"
+        " is a third of it, and rounding the axis word to counts a sixth.",
+        "",
         "## Runtime operations", "",
         "In-process CPU time of one operation of the runtime that every"
         " engine calls (bench/micro, Google Benchmark), median of"
