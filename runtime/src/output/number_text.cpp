@@ -86,16 +86,6 @@ char* writeTrimmedFixed(char* out, double value, int decimals) {
   return end;
 }
 
-std::size_t trimmedFixedBound(double value, int decimals) {
-  constexpr std::size_t kLargestDouble = 309; // digits of DBL_MAX
-  // Up to 1e15 a number has at most 16 digits before the point, as
-  // increments or through fmt; beyond, fmt writes all of them.
-  const std::size_t places =
-      decimals > 0 ? static_cast<std::size_t>(decimals) : 0;
-  const bool counted = std::fabs(value) <= 1e15;
-  return (counted ? 17 : kLargestDouble + 1) + 1 + places;
-}
-
 void appendTrimmedFixed(std::string& out, double value, int decimals) {
   const std::size_t most = trimmedFixedBound(value, decimals);
   char text[64];
