@@ -28,6 +28,16 @@ std::string number(double value) {
   return trimmedFixed(value, 4);
 }
 
+/// A path command to a point appended to path data ("L1.5 -2"), its
+/// numbers as number() writes them: no string per number, as every move
+/// draws one or two.
+void appendPoint(std::string& d, char command, double u, double v) {
+  d += command;
+  appendTrimmedFixed(d, u, 4);
+  d += ' ';
+  appendTrimmedFixed(d, v, 4);
+}
+
 /// 1, 2 or 5 times a power of ten, at most `limit`.
 double niceLength(double limit) {
   const double power = std::pow(10.0, std::floor(std::log10(limit)));
@@ -194,11 +204,11 @@ std::size_t SvgWriter::add(const mbrt_motion& motion) {
     piece.depth =
         deep >= 0 ? std::min(motion.start[deep], motion.end[deep]) : 0.0;
     piece.arc = m.kind == MBRT_MOTION_CW || m.kind == MBRT_MOTION_CCW;
-    piece.d = fmt::format("M{} {}", number(start.u), number(-start.v));
+    appendPoint(piece.d, 'M', start.u, -start.v);
     if (piece.arc) {
       drawArc(m, piece.d);
     } else {
-      piece.d += fmt::format("L{} {}", number(end.u), number(-end.v));
+      appendPoint(piece.d, 'L', end.u, -end.v);
       // A lathe turns along Z: no move of it is a hole.
       if (motion.diameter_mask == 0) {
         recordHole(m);
@@ -249,8 +259,8 @@ void SvgWriter::drawRapid(Point start, Point end) {
   if (!rapidSegments_.insert({a.first, a.second, b.first, b.second}).second) {
     return;
   }
-  rapids_ += fmt::format("M{} {}L{} {}", number(start.u), number(-start.v),
-                         number(end.u), number(-end.v));
+  appendPoint(rapids_, 'M', start.u, -start.v);
+  appendPoint(rapids_, 'L', end.u, -end.v);
 }
 
 void SvgWriter::drawArc(const mbrt_motion& m, std::string& d) {
@@ -270,7 +280,7 @@ void SvgWriter::drawArc(const mbrt_motion& m, std::string& d) {
         arcPoint(m, arc, static_cast<double>(i) / kArcSamples).data(), m);
     include(p);
     if (!flat) {
-      d += fmt::format("L{} {}", number(p.u), number(-p.v));
+      appendPoint(d, 'L', p.u, -p.v);
     }
   }
   if (!flat) {
@@ -335,8 +345,7 @@ void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
   const double px = m.programmed[x];
   const double py = m.programmed[y];
   if (!programmedPen_.open) {
-    programmed_ +=
-        fmt::format("M{} {}", number(m.start[x]), number(-m.start[y]));
+    appendPoint(programmed_, 'M', m.start[x], -m.start[y]);
   }
   compensated_ = compensated_ || px != m.end[x] || py != m.end[y];
   // Under a pocket's tool path lies its outline: the box takes it too.
@@ -368,9 +377,7 @@ void SvgWriter::drawProgrammed(const mbrt_motion& m, int x, int y) {
                     sweepFlag, number(px), number(-py));
   } else if (moves) {
     // Rapids are no part of the contour: the pen lifts.
-    programmed_ +=
-        fmt::format("{}{} {}", m.kind == MBRT_MOTION_RAPID ? 'M' : 'L',
-                    number(px), number(-py));
+    appendPoint(programmed_, m.kind == MBRT_MOTION_RAPID ? 'M' : 'L', px, -py);
   }
   programmedPen_ = {true, px, py};
 }
