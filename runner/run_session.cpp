@@ -163,13 +163,10 @@ bool openOutputs(const RunOptions& o, mbrt_ctx* ctx, MotionOutputs& motions,
                           motions.html ? &*motions.html : nullptr};
   const MotionTargets threaded =
       capture ? MotionTargets{} : ToolpathThread::wanted(o.writerThread, all);
-  motions.here = all;
+  motions.here = all.except(threaded);
   if (threaded.any()) {
     motions.writer.emplace(threaded);
     mbrt_set_output_settle(ctx, &MotionOutputs::settle, &motions);
-    motions.here = {threaded.toolpath != nullptr ? nullptr : all.toolpath,
-                    threaded.svg != nullptr ? nullptr : all.svg,
-                    threaded.html != nullptr ? nullptr : all.html};
   }
   if (all.any()) {
     mbrt_set_motion_sink(ctx, &MotionOutputs::write, &motions);

@@ -24,8 +24,11 @@ namespace {
 
 constexpr int kArcSamples = 64;
 
+// The decimals of every number the drawing writes.
+constexpr int kDecimals = 4;
+
 std::string number(double value) {
-  return trimmedFixed(value, 4);
+  return trimmedFixed(value, kDecimals);
 }
 
 /// A path command to a point appended to path data ("L1.5 -2"), its
@@ -33,9 +36,9 @@ std::string number(double value) {
 /// draws one or two.
 void appendPoint(std::string& d, char command, double u, double v) {
   d += command;
-  appendTrimmedFixed(d, u, 4);
+  appendTrimmedFixed(d, u, kDecimals);
   d += ' ';
-  appendTrimmedFixed(d, v, 4);
+  appendTrimmedFixed(d, v, kDecimals);
 }
 
 /// 1, 2 or 5 times a power of ten, at most `limit`.
@@ -237,8 +240,8 @@ std::size_t SvgWriter::growthBound(const mbrt_motion& motion) {
   // full circle as two arcs of seven), a rapid's four, and a feed's (a move
   // to its start, then a line, two arcs, or the samples of an arc).
   constexpr std::size_t kTokens = 2 + 2 * 7 + 4 + 2 + 2 * kArcSamples;
-  return kTokens * (trimmedFixedBound(16.0 * largest, 4) + 1) + sizeof(Piece) +
-         sizeof(Hole);
+  return kTokens * (trimmedFixedBound(16.0 * largest, kDecimals) + 1) +
+         sizeof(Piece) + sizeof(Hole);
 }
 
 /// A rapid is a subpath of its own from its lower end, so that its dashes

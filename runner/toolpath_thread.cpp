@@ -31,6 +31,12 @@ std::size_t MotionTargets::bound(const mbrt_motion& motion) const {
   return bytes;
 }
 
+MotionTargets MotionTargets::except(const MotionTargets& taken) const {
+  return {taken.toolpath != nullptr ? nullptr : toolpath,
+          taken.svg != nullptr ? nullptr : svg,
+          taken.html != nullptr ? nullptr : html};
+}
+
 ToolpathThread::ToolpathThread(const MotionTargets& targets)
     // Default-initialised: the slots are not cleared, a page is touched
     // when a chunk first fills it.

@@ -44,6 +44,9 @@ struct MotionTargets {
 
   /// The most bytes take() may return for `motion`.
   std::size_t bound(const mbrt_motion& motion) const;
+
+  /// These targets without those `taken` has.
+  MotionTargets except(const MotionTargets& taken) const;
 };
 
 class ToolpathThread {
